@@ -1,0 +1,132 @@
+// mcdyna command line: `check`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k ncpu=2`).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/check_command.hpp"
+#include "cli/keyword_docs.hpp"
+#include "deck/registry.hpp"
+#include "deck/text_util.hpp"
+
+namespace {
+
+constexpr int kExitUsage = 2;
+
+// Rewrites LS-DYNA style "key=value" arguments (i=, ncpu=, memory=) into subcommand form.
+// Returns false with a message for an unknown key.
+bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& error) {
+  std::vector<std::string> out;
+  std::string deck;
+  bool lsdyna_style = false;
+  for (const std::string& a : args) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || a.rfind("--", 0) == 0 || a.rfind('-', 0) == 0) {
+      out.push_back(a);
+      continue;
+    }
+    lsdyna_style = true;
+    const std::string key = mcdyna::deck::upper(a.substr(0, eq));
+    const std::string value = a.substr(eq + 1);
+    if (key == "I") {
+      deck = value;
+    } else if (key == "NCPU" || key == "MEMORY" || key == "MEMORY2") {
+      // Threads and memory are chosen by mcdyna; accepted for LS-DYNA command lines.
+    } else {
+      error = fmt::format("unknown LS-DYNA style argument '{}' (mcdyna knows i=, ncpu=, memory=)", a);
+      return false;
+    }
+  }
+  if (lsdyna_style) {
+    if (deck.empty()) {
+      error = "LS-DYNA style command line needs i=DECK";
+      return false;
+    }
+    // Until the solver exists, i=deck.k checks the deck (it will behave as `run`).
+    out.insert(out.begin(), {"check", deck});
+  }
+  args = out;
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string error;
+  if (!translate_lsdyna_arguments(args, error)) {
+    std::cerr << "mcdyna: " << error << "\n";
+    return kExitUsage;
+  }
+  CLI::App app{"mcdyna - LS-DYNA-style keyword decks, explicit dynamics with MC-SPG particles"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "mcdyna 0.1");
+
+  mcdyna::cli::CheckOptions check;
+  auto* check_cmd = app.add_subcommand("check", "read and cross-check a deck; print the model "
+                                       "summary and the migration report");
+  check_cmd->add_option("deck", check.deck, "keyword deck (.k, .key, .dyn)")->required();
+  check_cmd->add_flag("--allow-unsupported", check.allow_unsupported,
+                      "do not fail on unsupported keywords that change the physics");
+  check_cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
+  check_cmd->add_option("--max-messages", check.max_messages,
+                        "diagnostics printed (0: all)")->capture_default_str();
+
+  std::string keyword_name;
+  std::string markdown_dir;
+  bool raw = false;
+  auto* kw_cmd = app.add_subcommand("keywords", "list supported keywords or print one's card layout");
+  kw_cmd->add_option("name", keyword_name, "keyword (with or without '*'), e.g. MAT_JOHNSON_COOK");
+  kw_cmd->add_option("--markdown", markdown_dir, "write the keyword reference pages into DIR");
+  kw_cmd->add_flag("--raw", raw, "print the schema file as embedded");
+
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitUsage;
+  }
+
+  try {
+    if (*check_cmd) return mcdyna::cli::run_check(check, std::cout, std::cerr);
+    const mcdyna::deck::Registry registry;
+    if (!markdown_dir.empty()) {
+      if (!mcdyna::cli::write_keyword_pages(markdown_dir, registry)) {
+        std::cerr << "mcdyna: cannot write keyword pages into " << markdown_dir << "\n";
+        return 1;
+      }
+      return 0;
+    }
+    if (keyword_name.empty()) {
+      mcdyna::cli::print_keyword_list(std::cout, registry);
+      return 0;
+    }
+    std::string name = mcdyna::deck::upper(keyword_name);
+    if (!name.empty() && name.front() == '*') name.erase(0, 1);
+    const auto c = registry.classify(name);
+    if (c.schema == nullptr) {
+      std::cerr << fmt::format("mcdyna: *{} is not a supported keyword ({}{})\n", name,
+                               mcdyna::deck::support_name(c.support),
+                               c.reason.empty() ? "" : ": " + c.reason);
+      return 1;
+    }
+    if (raw) {
+      std::cout << registry.schema_text(c.schema->name);
+    } else {
+      mcdyna::cli::print_keyword_layout(std::cout, *c.schema, false);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "mcdyna: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

@@ -1,0 +1,59 @@
+#pragma once
+/// Collected deck problems. Readers and checks report here and carry on; nothing aborts.
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "core/source.hpp"
+
+namespace mcdyna::core {
+
+enum class Severity { note, warning, error };
+
+struct Diagnostic {
+  Severity severity = Severity::error;
+  SourceLoc loc;
+  std::string message;
+};
+
+/// Error sink. Keeps every diagnostic in report order; caps the number printed per message kind
+/// is left to the printer so that the count stays exact.
+class Diagnostics {
+ public:
+  void report(Severity severity, SourceLoc loc, std::string message);
+
+  template <typename... Args>
+  void error(SourceLoc loc, fmt::format_string<Args...> f, Args&&... args) {
+    report(Severity::error, loc, fmt::format(f, std::forward<Args>(args)...));
+  }
+  template <typename... Args>
+  void warning(SourceLoc loc, fmt::format_string<Args...> f, Args&&... args) {
+    report(Severity::warning, loc, fmt::format(f, std::forward<Args>(args)...));
+  }
+  template <typename... Args>
+  void note(SourceLoc loc, fmt::format_string<Args...> f, Args&&... args) {
+    report(Severity::note, loc, fmt::format(f, std::forward<Args>(args)...));
+  }
+
+  [[nodiscard]] std::size_t error_count() const { return errors_; }
+  [[nodiscard]] std::size_t warning_count() const { return warnings_; }
+  [[nodiscard]] bool has_errors() const { return errors_ > 0; }
+  [[nodiscard]] const std::vector<Diagnostic>& all() const { return items_; }
+
+ private:
+  std::vector<Diagnostic> items_;
+  std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
+};
+
+/// "file:line:cols: severity: message" followed by the echoed line and a caret marker.
+std::string format_diagnostic(const Diagnostic& d, const SourceFiles& files);
+
+/// Prints diagnostics in report order; at most `limit` (0 = all), then a count of the rest.
+void print_diagnostics(std::ostream& out, const Diagnostics& diags, const SourceFiles& files,
+                       std::size_t limit = 0);
+
+}  // namespace mcdyna::core

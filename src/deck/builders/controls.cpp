@@ -1,0 +1,105 @@
+// *CONTROL_TERMINATION, _TIMESTEP, _HOURGLASS, _CONTACT, _SOLID, _ENERGY, _BULK_VISCOSITY.
+#include "deck/builders/builders.hpp"
+
+namespace mcdyna::deck::builders {
+
+void control_termination(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::Termination t;
+  t.end_time = c.real("ENDTIM");
+  t.end_cycle = static_cast<int>(c.integer("ENDCYC"));
+  t.min_step_factor = c.real("DTMIN");
+  t.energy_change_percent = c.real("ENDENG");
+  t.mass_change_percent = c.real("ENDMAS");
+  t.no_solution = static_cast<int>(c.integer("NOSOL"));
+  t.loc = c.loc();
+  set_once(m.controls.termination, t, r);
+}
+
+void control_timestep(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::TimeStepControl t;
+  t.initial_step = c.real("DTINIT");
+  t.scale_factor = c.real("TSSFAC");
+  t.shell_length_option = static_cast<int>(c.integer("ISDO"));
+  t.shell_min_step = c.real("TSLIMT");
+  t.mass_scaling_step = c.real("DT2MS");
+  t.max_step_curve = c.integer("LCTM");
+  t.erode = static_cast<int>(c.integer("ERODE"));
+  t.mass_scaling_first_step = static_cast<int>(c.integer("MS1ST"));
+  t.loc = c.loc();
+  if (t.scale_factor < 0.0) {
+    r.diags().error(c.loc("TSSFAC"), "*CONTROL_TIMESTEP: TSSFAC < 0 (scale factor from a curve) "
+                    "is not supported");
+  } else if (t.scale_factor > 1.0) {
+    r.diags().warning(c.loc("TSSFAC"), "*CONTROL_TIMESTEP: TSSFAC = {} exceeds 1; the explicit "
+                      "step will exceed the stable step", t.scale_factor);
+  }
+  set_once(m.controls.time_step, t, r);
+}
+
+void control_hourglass(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  set_once(m.controls.hourglass,
+           model::HourglassControl{static_cast<int>(c.integer("IHQ")), c.real("QH"), c.loc()}, r);
+}
+
+void control_contact(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  const Row& c2 = r.card("2");
+  const Row& c3 = r.card("3");
+  const Row& c4 = r.card("4");
+  model::ContactControl c;
+  c.penalty_scale = c1.real("SLSFAC");
+  c.rigid_wall_penalty = c1.real("RWPNAL");
+  c.initial_penetration_check = static_cast<int>(c1.integer("ISLCHK"));
+  c.shell_thickness = static_cast<int>(c1.integer("SHLTHK"));
+  c.penalty_option = static_cast<int>(c1.integer("PENOPT"));
+  c.thickness_change = static_cast<int>(c1.integer("THKCHG"));
+  c.orientation = static_cast<int>(c1.integer("ORIEN"));
+  c.eroding_mass = static_cast<int>(c1.integer("ENMASS"));
+  c.bucket_interval = static_cast<int>(c2.integer("NSBCS"));
+  c.max_penetration_factor = c2.real("XPENE");
+  c.default_static_friction = c3.real("SFRIC");
+  c.default_dynamic_friction = c3.real("DFRIC");
+  c.ignore_penetration = static_cast<int>(c4.integer("IGNORE"));
+  c.friction_energy = static_cast<int>(c4.integer("FRCENG"));
+  c.loc = c1.loc();
+  set_once(m.controls.contact, c, r);
+}
+
+void control_solid(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  set_once(m.controls.solid,
+           model::SolidControl{static_cast<int>(c.integer("ESORT")),
+                               static_cast<int>(c.integer("FMATRX")),
+                               static_cast<int>(c.integer("NIPTETS")), c.loc()},
+           r);
+}
+
+void control_energy(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::EnergyControl e;
+  e.hourglass = static_cast<int>(c.integer("HGEN"));
+  e.rigid_wall = static_cast<int>(c.integer("RWEN"));
+  e.sliding = static_cast<int>(c.integer("SLNTEN"));
+  e.rayleigh = static_cast<int>(c.integer("RYLEN"));
+  e.initial_reference_geometry = static_cast<int>(c.integer("IRGEN"));
+  e.material_split = static_cast<int>(c.integer("MATEN"));
+  e.loc = c.loc();
+  set_once(m.controls.energy, e, r);
+}
+
+void control_bulk_viscosity(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::BulkViscosityControl b;
+  b.quadratic = c.real("Q1");
+  b.linear = c.real("Q2");
+  b.type = static_cast<int>(c.integer("TYPE"));
+  b.beam_type = static_cast<int>(c.integer("BTYPE"));
+  b.time_step_type = static_cast<int>(c.integer("TSTYPE"));
+  b.loc = c.loc();
+  set_once(m.controls.bulk_viscosity, b, r);
+}
+
+}  // namespace mcdyna::deck::builders

@@ -1,0 +1,112 @@
+// *TITLE, *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL, *PART. These run over the largest tables of a
+// deck, so field indices are resolved once per block and rows are read by index.
+#include "deck/builders/builders.hpp"
+
+namespace mcdyna::deck::builders {
+
+std::string title_of(const KeywordRecord& r) {
+  if (!r.has_option("TITLE")) return {};
+  return std::string(r.card("title").text("TITLE"));
+}
+
+void title(KeywordRecord& r, model::ModelDatabase& m) {
+  m.title = std::string(r.card("title").text("TITLE"));
+}
+
+void node(KeywordRecord& r, model::ModelDatabase& m) {
+  m.nodes.reserve(m.nodes.size() + r.block().line_count());
+  Group g;
+  int nid = -1, x = -1, y = -1, z = -1, tc = -1, rc = -1;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    if (nid < 0) {
+      nid = row.index("NID"), x = row.index("X"), y = row.index("Y"), z = row.index("Z");
+      tc = row.index("TC"), rc = row.index("RC");
+    }
+    m.nodes.push_back(model::Node{row.integer(nid),
+                                  {row.real(x), row.real(y), row.real(z)},
+                                  static_cast<std::uint8_t>(row.integer(tc)),
+                                  static_cast<std::uint8_t>(row.integer(rc)),
+                                  row.loc()});
+  }
+}
+
+void element_solid(KeywordRecord& r, model::ModelDatabase& m) {
+  const bool one_line = r.form().name == "one_line";
+  m.solids.reserve(m.solids.size() + (one_line ? r.block().line_count()
+                                               : r.block().line_count() / 2));
+  Group g;
+  int eid = -1, pid = -1, n1 = -1, n9 = -1;
+  while (r.next_group(g)) {
+    const Row& head = g.rows.front();
+    const Row* nodes = one_line ? &head : g.card("nodes");
+    if (nodes == nullptr) break;  // incomplete pair, already reported
+    if (eid < 0) {
+      eid = head.index("EID"), pid = head.index("PID"), n1 = nodes->index("N1");
+      n9 = one_line ? -1 : nodes->index("N9");
+    }
+    model::SolidElement e;
+    e.id = head.integer(eid);
+    e.part = head.integer(pid);
+    e.loc = nodes->loc();
+    for (int k = 0; k < 8; ++k) e.nodes[k] = nodes->integer(n1 + k);
+    if (n9 >= 0 && (nodes->integer(n9) != 0 || nodes->integer(n9 + 1) != 0)) {
+      r.diags().error(nodes->loc(n9), "{}: element {} has nodes 9-10 (10-node tetrahedron); only "
+                      "8-node solids and degenerate hexahedra are supported",
+                      r.display_name(), e.id);
+    }
+    m.solids.push_back(e);
+  }
+}
+
+void element_shell(KeywordRecord& r, model::ModelDatabase& m) {
+  Group g;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    model::ShellElement s;
+    s.id = row.integer("EID");
+    s.part = row.integer("PID");
+    s.loc = row.loc();
+    const int n1 = row.index("N1");
+    for (int k = 0; k < 4; ++k) s.nodes[k] = row.integer(n1 + k);
+    if (s.nodes[3] == 0) s.nodes[3] = s.nodes[2];
+    if (row.integer("N5") != 0) {
+      r.diags().error(row.loc("N5"), "{}: element {} has mid-side nodes; 8-node shells are not "
+                      "supported", r.display_name(), s.id);
+    }
+    if (const Row* t = g.card("thickness")) {
+      const int t1 = t->index("THIC1");
+      for (int k = 0; k < 4; ++k) s.thickness[k] = t->real(t1 + k);
+    }
+    m.shells.push_back(s);
+  }
+}
+
+void part(KeywordRecord& r, model::ModelDatabase& m) {
+  Group g;
+  while (r.next_group(g)) {
+    const Row* heading = g.card("heading");
+    const Row* card = g.card("1");
+    if (card == nullptr) break;
+    model::Part p;
+    p.heading = std::string(heading->text("HEADING"));
+    p.id = card->integer("PID");
+    p.section = card->integer("SECID");
+    p.material = card->integer("MID");
+    p.eos = card->integer("EOSID");
+    p.hourglass = card->integer("HGID");
+    p.thermal_material = card->integer("TMID");
+    p.loc = card->loc();
+    p.section_loc = card->loc("SECID");
+    p.material_loc = card->loc("MID");
+    p.eos_loc = card->loc("EOSID");
+    p.hourglass_loc = card->loc("HGID");
+    if (p.thermal_material != 0) {
+      r.diags().warning(card->loc("TMID"), "*PART {}: thermal material TMID is ignored (no thermal "
+                        "solver; Johnson-Cook heating uses CP)", p.id);
+    }
+    m.parts.push_back(std::move(p));
+  }
+}
+
+}  // namespace mcdyna::deck::builders

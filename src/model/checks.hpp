@@ -1,0 +1,19 @@
+#pragma once
+/// Cross-checks of a built model: ID indices and duplicates, every reference resolved, physical
+/// and geometric sanity, and whether mcdyna can run what the deck asks for. Reports every problem
+/// at its deck location; builds ModelDatabase::index as a side effect.
+#include "core/diagnostics.hpp"
+#include "model/model_database.hpp"
+
+namespace mcdyna::model {
+
+/// Runs all checks. Returns the number of errors it added.
+std::size_t check(ModelDatabase& model, core::Diagnostics& diags);
+
+namespace detail {
+void build_indices(ModelDatabase& m, core::Diagnostics& diags);
+void check_references(const ModelDatabase& m, core::Diagnostics& diags);
+void check_sanity(const ModelDatabase& m, core::Diagnostics& diags);
+}  // namespace detail
+
+}  // namespace mcdyna::model

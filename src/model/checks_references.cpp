@@ -1,0 +1,258 @@
+// ID indices, duplicate IDs and dangling references.
+#include <fmt/format.h>
+
+#include "model/checks.hpp"
+
+namespace mcdyna::model {
+
+std::size_t check(ModelDatabase& model, core::Diagnostics& diags) {
+  const std::size_t before = diags.error_count();
+  detail::build_indices(model, diags);
+  detail::check_references(model, diags);
+  detail::check_sanity(model, diags);
+  return diags.error_count() - before;
+}
+
+namespace detail {
+
+namespace {
+
+template <typename Entity>
+void index_one(IdIndex& index, const std::vector<Entity>& v, const char* what,
+               core::Diagnostics& diags) {
+  for (const auto& [first, again] : index.build(v)) {
+    diags.error(v[again].loc, "{} {} is defined twice (first at line {})", what, v[again].id,
+                v[first].loc.line);
+  }
+}
+
+}  // namespace
+
+void build_indices(ModelDatabase& m, core::Diagnostics& diags) {
+  auto& ix = m.index;
+  index_one(ix.nodes, m.nodes, "node", diags);
+  index_one(ix.solids, m.solids, "solid element", diags);
+  index_one(ix.shells, m.shells, "shell element", diags);
+  index_one(ix.parts, m.parts, "part", diags);
+  index_one(ix.sections, m.sections, "section", diags);
+  index_one(ix.materials, m.materials, "material", diags);
+  index_one(ix.equations_of_state, m.equations_of_state, "equation of state", diags);
+  index_one(ix.hourglasses, m.hourglasses, "hourglass", diags);
+  index_one(ix.curves, m.curves, "curve", diags);
+  index_one(ix.vectors, m.vectors, "vector", diags);
+  index_one(ix.boxes, m.boxes, "box", diags);
+  index_one(ix.node_sets, m.node_sets, "node set", diags);
+  index_one(ix.part_sets, m.part_sets, "part set", diags);
+  index_one(ix.segment_sets, m.segment_sets, "segment set", diags);
+}
+
+namespace {
+
+// Reports `id` at `loc` if it is not in `index` (0 allowed when `zero_ok`).
+bool need(const IdIndex& index, Id id, core::SourceLoc loc, std::string_view what,
+          std::string_view user, core::Diagnostics& diags, bool zero_ok = false) {
+  if (zero_ok && id == 0) return true;
+  if (index.contains(id)) return true;
+  diags.error(loc, "{} refers to {} {}, which is not defined", user, what, id);
+  return false;
+}
+
+void check_parts(const ModelDatabase& m, core::Diagnostics& diags) {
+  const auto& ix = m.index;
+  for (const Part& p : m.parts) {
+    const std::string user = fmt::format("part {}", p.id);
+    need(ix.sections, p.section, p.section_loc, "section", user, diags);
+    need(ix.materials, p.material, p.material_loc, "material", user, diags);
+    need(ix.equations_of_state, p.eos, p.eos_loc, "equation of state", user, diags, true);
+    need(ix.hourglasses, p.hourglass, p.hourglass_loc, "*HOURGLASS", user, diags, true);
+  }
+  for (const Erosion& e : m.erosions) {
+    need(ix.materials, e.material, e.loc, "material", "*MAT_ADD_EROSION", diags);
+  }
+  for (const Material& mat : m.materials) {
+    if (mat.kind == MaterialKind::piecewise_linear) {
+      need(ix.curves, mat.piecewise_linear.stress_strain_curve, mat.loc, "curve (LCSS)",
+           fmt::format("material {}", mat.id), diags, true);
+      need(ix.curves, mat.piecewise_linear.strain_rate_curve, mat.loc, "curve (LCSR)",
+           fmt::format("material {}", mat.id), diags, true);
+    }
+    if (mat.kind == MaterialKind::rigid && std::abs(mat.rigid.constraint_option) == 2) {
+      need(ix.nodes, mat.rigid.constraint_node, mat.loc, "node (SPCNID)",
+           fmt::format("material {}", mat.id), diags, true);
+    }
+  }
+  for (const Section& s : m.sections) {
+    if (s.kind == SectionKind::solid_spg) {
+      need(ix.boxes, s.spg.box, s.loc, "box (BOXID)", fmt::format("section {}", s.id), diags, true);
+    }
+  }
+}
+
+// Element connectivity: part and nodes. Messages are capped per kind so that a deck with a
+// missing include does not print a million lines; the count stays exact.
+template <typename Element>
+void check_elements(const std::vector<Element>& elements, const ModelDatabase& m,
+                    const char* what, core::Diagnostics& diags) {
+  std::size_t missing_nodes = 0, shown = 0;
+  core::SourceLoc first_loc;
+  for (const Element& e : elements) {
+    if (!m.index.parts.contains(e.part)) {
+      if (shown++ < 20) {
+        diags.error(e.loc, "{} {} refers to part {}, which is not defined", what, e.id, e.part);
+      }
+    }
+    for (Id n : e.nodes) {
+      if (m.index.nodes.contains(n)) continue;
+      if (missing_nodes == 0) first_loc = e.loc;
+      if (missing_nodes++ < 20) {
+        if (n == 0) {
+          diags.error(e.loc, "{} {} has a blank node (node 0)", what, e.id);
+        } else {
+          diags.error(e.loc, "{} {} refers to node {}, which is not defined", what, e.id, n);
+        }
+      }
+    }
+  }
+  if (missing_nodes > 20) {
+    diags.error(first_loc, "{} references to undefined nodes in {}s in all (first 20 shown)",
+                missing_nodes, what);
+  }
+  if (shown > 20) {
+    diags.error(elements.front().loc, "{} {}s refer to undefined parts in all (first 20 shown)",
+                shown, what);
+  }
+}
+
+void check_sets(const ModelDatabase& m, core::Diagnostics& diags) {
+  for (const NodeSet& s : m.node_sets) {
+    int shown = 0;
+    for (Id n : s.nodes) {
+      if (!m.index.nodes.contains(n) && shown++ < 10) {
+        diags.error(s.loc, "node set {} contains node {}, which is not defined", s.id, n);
+      }
+    }
+  }
+  for (const PartSet& s : m.part_sets) {
+    for (Id p : s.parts) need(m.index.parts, p, s.loc, "part", fmt::format("part set {}", s.id), diags);
+  }
+  for (const SegmentSet& s : m.segment_sets) {
+    int shown = 0;
+    for (const auto& seg : s.segments) {
+      for (Id n : seg) {
+        if (!m.index.nodes.contains(n) && shown++ < 10) {
+          diags.error(s.loc, "segment set {} uses node {}, which is not defined", s.id, n);
+        }
+      }
+    }
+  }
+}
+
+void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactSide& side,
+                        char name, core::Diagnostics& diags) {
+  const std::string user = fmt::format("contact {} side {}", c.id, name);
+  const auto& ix = m.index;
+  switch (side.type) {
+    case 0: need(ix.segment_sets, side.id, c.loc, "segment set", user, diags); break;
+    case 1:
+      diags.error(c.loc, "{}: type 1 (shell element set) is not supported; use a part or part set",
+                  user);
+      break;
+    case 2: need(ix.part_sets, side.id, c.loc, "part set", user, diags); break;
+    case 3: need(ix.parts, side.id, c.loc, "part", user, diags); break;
+    case 4: need(ix.node_sets, side.id, c.loc, "node set", user, diags); break;
+    case 6: need(ix.part_sets, side.id, c.loc, "part set", user, diags); break;
+    default: break;  // 5 = all
+  }
+  need(ix.boxes, side.box, c.loc, "box", user, diags, true);
+}
+
+void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
+  const auto& ix = m.index;
+  for (const Contact& c : m.contacts) {
+    const bool single = c.kind == ContactKind::automatic_single_surface;
+    if (!(single && c.a.id == 0)) check_contact_side(m, c, c.a, 'A', diags);
+    if (!single) check_contact_side(m, c, c.b, 'B', diags);
+  }
+  for (const SpcConstraint& s : m.spcs) {
+    need(s.is_set ? ix.node_sets : ix.nodes, s.target, s.loc, s.is_set ? "node set" : "node",
+         "*BOUNDARY_SPC", diags);
+  }
+  for (const PrescribedMotion& p : m.prescribed_motions) {
+    const std::string user = "*BOUNDARY_PRESCRIBED_MOTION";
+    switch (p.target_kind) {
+      case MotionTarget::node: need(ix.nodes, p.target, p.loc, "node", user, diags); break;
+      case MotionTarget::node_set: need(ix.node_sets, p.target, p.loc, "node set", user, diags); break;
+      case MotionTarget::rigid_part:
+        if (need(ix.parts, p.target, p.loc, "part", user, diags)) {
+          const Material* mat = m.material(m.part(p.target)->material);
+          if (mat != nullptr && mat->kind != MaterialKind::rigid) {
+            diags.error(p.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not rigid "
+                        "(its material {} is not *MAT_RIGID)", p.target, mat->id);
+          }
+        }
+        break;
+    }
+    need(ix.curves, p.curve, p.curve_loc, "curve", user, diags);
+    need(ix.vectors, p.vector, p.vector_loc, "vector", user, diags, true);
+  }
+  for (const InitialVelocity& v : m.initial_velocities) {
+    const std::string user = "*INITIAL_VELOCITY";
+    switch (v.kind) {
+      case InitialVelocityKind::by_set:
+        need(ix.node_sets, v.target, v.loc, "node set", user, diags, true);
+        need(ix.node_sets, v.exempted_set, v.loc, "node set", user, diags, true);
+        need(ix.boxes, v.box, v.loc, "box", user, diags, true);
+        break;
+      case InitialVelocityKind::per_node: need(ix.nodes, v.target, v.loc, "node", user, diags); break;
+      case InitialVelocityKind::generation:
+        if (v.target == 0) break;
+        if (v.target_type == 1) need(ix.part_sets, v.target, v.loc, "part set", user, diags);
+        if (v.target_type == 2) need(ix.parts, v.target, v.loc, "part", user, diags);
+        if (v.target_type == 3) need(ix.node_sets, v.target, v.loc, "node set", user, diags);
+        break;
+    }
+  }
+  for (const RigidWall& w : m.rigid_walls) {
+    need(ix.node_sets, w.node_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);
+    need(ix.node_sets, w.exempted_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);
+    need(ix.boxes, w.box, w.loc, "box", "*RIGIDWALL_PLANAR", diags, true);
+  }
+}
+
+void check_outputs(const ModelDatabase& m, core::Diagnostics& diags) {
+  const auto& ix = m.index;
+  for (const HistoryNodes& h : m.outputs.history_nodes) {
+    for (Id id : h.ids) {
+      need(h.is_set ? ix.node_sets : ix.nodes, id, h.loc, h.is_set ? "node set" : "node",
+           "*DATABASE_HISTORY_NODE", diags);
+    }
+  }
+  for (const AsciiRequest& a : m.outputs.ascii) {
+    need(ix.curves, a.interval_curve, a.loc, "curve (LCUR)", "*DATABASE_", diags, true);
+  }
+  if (m.outputs.d3plot) {
+    const D3plotRequest& d = *m.outputs.d3plot;
+    need(ix.curves, d.interval_curve, d.loc, "curve (LCDT)", "*DATABASE_BINARY_D3PLOT", diags, true);
+    need(ix.part_sets, d.excluded_parts, d.loc, "part set (PSETID)", "*DATABASE_BINARY_D3PLOT",
+         diags, true);
+  }
+  if (m.controls.time_step) {
+    need(ix.curves, m.controls.time_step->max_step_curve, m.controls.time_step->loc,
+         "curve (LCTM)", "*CONTROL_TIMESTEP", diags, true);
+  }
+}
+
+}  // namespace
+
+void check_references(const ModelDatabase& m, core::Diagnostics& diags) {
+  check_parts(m, diags);
+  if (!m.solids.empty()) check_elements(m.solids, m, "solid element", diags);
+  if (!m.shells.empty()) check_elements(m.shells, m, "shell element", diags);
+  check_sets(m, diags);
+  check_conditions(m, diags);
+  check_outputs(m, diags);
+}
+
+}  // namespace detail
+
+}  // namespace mcdyna::model

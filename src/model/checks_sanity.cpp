@@ -1,0 +1,157 @@
+// Physical and geometric sanity, and whether mcdyna can run what the deck asks for.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "model/checks.hpp"
+
+namespace mcdyna::model::detail {
+
+namespace {
+
+struct PartUse {
+  std::size_t solids = 0, shells = 0;
+};
+
+void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_elements) {
+  if (!has_elements) return;
+  if (!m.controls.termination) {
+    diags.error(core::SourceLoc{}, "the deck has no *CONTROL_TERMINATION: the end time is not "
+                "defined");
+    return;
+  }
+  const Termination& t = *m.controls.termination;
+  if (t.end_time <= 0.0 && t.end_cycle <= 0) {
+    diags.error(t.loc, "*CONTROL_TERMINATION: ENDTIM = {} and no ENDCYC; the run would not advance",
+                t.end_time);
+  }
+}
+
+void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
+                core::Diagnostics& diags) {
+  const Section* s = m.section(p.section);
+  const Material* mat = m.material(p.material);
+  if (use.solids == 0 && use.shells == 0) {
+    diags.warning(p.loc, "part {} has no elements", p.id);
+  }
+  if (s == nullptr || mat == nullptr) return;  // reported as dangling references
+  const bool rigid = mat->kind == MaterialKind::rigid;
+  if (use.solids > 0 && s->kind == SectionKind::shell) {
+    diags.error(p.section_loc, "part {} has solid elements but section {} is a shell section", p.id,
+                s->id);
+  }
+  if (use.shells > 0 && s->kind != SectionKind::shell) {
+    diags.error(p.section_loc, "part {} has shell elements but section {} is a solid section",
+                p.id, s->id);
+  }
+  if (use.shells > 0 && !rigid) {
+    diags.error(p.material_loc, "part {}: deformable shells are not supported; shell parts must "
+                "be *MAT_RIGID (rigid bodies, contact surfaces)", p.id);
+  }
+  if (s->kind == SectionKind::solid && !rigid && s->element_formulation != 1 &&
+      s->element_formulation != 2) {
+    diags.error(p.section_loc, "part {}: solid ELFORM {} of section {} is not supported (1 "
+                "one-point hexahedron, 2 selectively reduced, 47 SPG)", p.id,
+                s->element_formulation, s->id);
+  }
+  if (s->kind == SectionKind::solid_spg && rigid) {
+    diags.error(p.material_loc, "part {}: an SPG section cannot be rigid", p.id);
+  }
+  const bool solid = s->kind != SectionKind::shell;
+  if (mat->kind == MaterialKind::johnson_cook && solid && p.eos == 0) {
+    diags.error(p.eos_loc, "part {}: *MAT_JOHNSON_COOK solids need an equation of state (EOSID), "
+                "as in LS-DYNA", p.id);
+  }
+  if (p.eos != 0 && (rigid || mat->kind == MaterialKind::elastic)) {
+    diags.warning(p.eos_loc, "part {}: EOSID {} is not used by material type of material {}", p.id,
+                  p.eos, mat->id);
+  }
+  if (p.hourglass != 0 && solid && !rigid) {
+    const Hourglass* h = ModelDatabase::lookup(m.hourglasses, m.index.hourglasses, p.hourglass);
+    if (h != nullptr && h->type > 5) {
+      diags.error(p.hourglass_loc, "part {}: hourglass type IHQ = {} is not supported (1-5)", p.id,
+                  h->type);
+    }
+  }
+}
+
+void check_spg_section(const Section& s, core::Diagnostics& diags) {
+  const SpgSettings& spg = s.spg;
+  if (spg.stabilization != 3) {
+    diags.note(s.loc, "section {}: ITB = {} runs with the momentum-consistent smoothing of MC-SPG "
+               "(ITB = 3)", s.id, spg.stabilization);
+  }
+  if (spg.kernel_update == 2) {
+    diags.note(s.loc, "section {}: KERNEL = 2 (pseudo-Lagrangian) runs as KERNEL = 0 (updated "
+               "Lagrangian)", s.id);
+  }
+  const bool failure = spg.failure_strain < 1.0e10;
+  if (failure && spg.damage_criterion != 1) {
+    diags.error(s.loc, "section {}: bond failure IDAM = {} is not supported (IDAM = 1: effective "
+                "plastic strain with STRETCH)", s.id, spg.damage_criterion);
+  }
+}
+
+// Determinant of the (unscaled) centre Jacobian, 64 x the volume of a parallelepiped; <= 0 means an
+// inverted or collapsed element. Degenerate tets and pentas keep a positive centre Jacobian.
+double centre_jacobian(const ModelDatabase& m, const SolidElement& e, bool& ok) {
+  constexpr int xi[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+  constexpr int eta[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+  constexpr int zeta[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  double j[3][3] = {};
+  for (int a = 0; a < 8; ++a) {
+    const auto i = m.index.nodes.find(e.nodes[a]);
+    if (i == IdIndex::kNone) {
+      ok = false;
+      return 0.0;
+    }
+    const Vec3& x = m.nodes[static_cast<std::size_t>(i)].position;
+    for (int d = 0; d < 3; ++d) {
+      j[0][d] += xi[a] * x[d];
+      j[1][d] += eta[a] * x[d];
+      j[2][d] += zeta[a] * x[d];
+    }
+  }
+  ok = true;
+  return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+         j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+         j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+}
+
+void check_solid_geometry(const ModelDatabase& m, core::Diagnostics& diags) {
+  std::size_t bad = 0;
+  core::SourceLoc first;
+  for (const SolidElement& e : m.solids) {
+    bool ok = false;
+    const double det = centre_jacobian(m, e, ok);
+    if (!ok || det > 0.0) continue;
+    if (bad == 0) first = e.loc;
+    if (bad++ < 20) {
+      diags.error(e.loc, "solid element {} is {} (centre-Jacobian volume {:.3g}); check its node order",
+                  e.id, det < 0.0 ? "inverted" : "collapsed to zero volume", det / 64.0);
+    }
+  }
+  if (bad > 20) diags.error(first, "{} inverted or collapsed solid elements in all", bad);
+}
+
+}  // namespace
+
+void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
+  check_controls(m, diags, !m.solids.empty() || !m.shells.empty());
+  std::vector<PartUse> use(m.parts.size());
+  for (const SolidElement& e : m.solids) {
+    const auto i = m.index.parts.find(e.part);
+    if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].solids;
+  }
+  for (const ShellElement& e : m.shells) {
+    const auto i = m.index.parts.find(e.part);
+    if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].shells;
+  }
+  for (std::size_t i = 0; i < m.parts.size(); ++i) check_part(m, m.parts[i], use[i], diags);
+  for (const Section& s : m.sections) {
+    if (s.kind == SectionKind::solid_spg) check_spg_section(s, diags);
+  }
+  check_solid_geometry(m, diags);
+}
+
+}  // namespace mcdyna::model::detail

@@ -1,0 +1,110 @@
+#pragma once
+/// Contacts, boundary conditions, initial conditions and rigid walls.
+#include <array>
+#include <string>
+
+#include "model/entities.hpp"
+
+namespace mcdyna::model {
+
+enum class ContactKind {
+  automatic_nodes_to_surface,
+  automatic_surface_to_surface,
+  automatic_single_surface,
+  nodes_to_surface,
+  surface_to_surface
+};
+
+/// Side of a contact: SURFA/SURFB with its type code (keywords.md §2.15).
+struct ContactSide {
+  Id id = 0;
+  int type = 0;  ///< 0 segment set, 1 shell set, 2 part set, 3 part, 4 node set, 5 all, 6 exempted
+  Id box = 0;
+};
+
+struct Contact {
+  Id id = 0;  ///< from the _ID card; 0 = numbered in deck order
+  std::string heading;
+  ContactKind kind = ContactKind::automatic_nodes_to_surface;
+  ContactSide a, b;  ///< A = slave, B = master
+  double static_friction = 0.0, dynamic_friction = 0.0, decay = 0.0;  ///< FS, FD, DC
+  double viscous_friction = 0.0, viscous_damping = 0.0;  ///< VC, VDC (% of critical)
+  double birth = 0.0, death = 1.0e20;
+  double penalty_scale_a = 1.0, penalty_scale_b = 1.0;  ///< SFSA, SFSB
+  double thickness_a = 0.0, thickness_b = 0.0;  ///< SAST, SBST
+  double friction_scale = 1.0, viscous_friction_scale = 1.0;
+  int soft = 0;  ///< card A SOFT
+  double soft_scale = 0.1;
+  double depth = 2;
+  int ignore_penetration = 0;  ///< card C IGNORE
+  core::SourceLoc loc;
+};
+
+/// *BOUNDARY_SPC_NODE / _SET: one line.
+struct SpcConstraint {
+  Id id = 0;
+  bool is_set = false;
+  Id target = 0;  ///< node or node set
+  Id coordinate_system = 0;
+  std::array<bool, 6> fixed{};  ///< x, y, z, rx, ry, rz
+  double birth = 0.0, death = 1.0e20;
+  core::SourceLoc loc;
+};
+
+enum class MotionTarget { node, node_set, rigid_part };
+
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: one line (+ card 2).
+struct PrescribedMotion {
+  Id id = 0;
+  std::string heading;
+  MotionTarget target_kind = MotionTarget::node;
+  Id target = 0;
+  int dof = 0;   ///< 1-3 translation, 4 along VID, 5-7 rotation, 8 about VID, 9-11 about axis
+  int kind = 0;  ///< VAD: 0 velocity, 1 acceleration, 2 displacement, 3, 4
+  Id curve = 0;
+  double scale = 1.0;
+  Id vector = 0;
+  double death = 1.0e28, birth = 0.0;
+  double offset1 = 0.0, offset2 = 0.0;
+  Id lead_rigid_body = 0, node1 = 0, node2 = 0;
+  core::SourceLoc loc;
+  core::SourceLoc curve_loc, vector_loc;
+};
+
+enum class InitialVelocityKind { by_set, per_node, generation };
+
+struct InitialVelocity {
+  InitialVelocityKind kind = InitialVelocityKind::by_set;
+  Id target = 0;  ///< node set (0 = all) / node / part set, part or node set (generation)
+  Id exempted_set = 0;  ///< NSIDEX
+  Id box = 0;
+  int target_type = 1;  ///< generation STYP: 1 part set, 2 part, 3 node set
+  Vec3 velocity{};      ///< length/time
+  Vec3 angular_velocity{};  ///< VXR.. (nodal rotations)
+  Vec3 exempted_velocity{};
+  double omega = 0.0;       ///< generation: angular velocity about the axis (rad/time)
+  Vec3 axis_point{}, axis_direction{};
+  int irigid = 0;
+  core::SourceLoc loc;
+};
+
+struct RigidWall {
+  Id id = 0;
+  std::string heading;
+  Id node_set = 0;  ///< 0 = all nodes
+  Id exempted_set = 0;
+  Id box = 0;
+  double offset = 0.0, birth = 0.0, death = 1.0e20;
+  double penalty_scale = 1.0;
+  Vec3 tail{}, head{};  ///< wall point and normal head (normal into the allowed side)
+  double friction = 0.0;
+  double weld_velocity = 0.0;
+  bool finite = false;
+  Vec3 edge_head{};
+  double length_l = 0.0, length_m = 0.0;
+  bool moving = false;
+  double mass = 0.0, initial_velocity = 0.0;
+  core::SourceLoc loc;
+};
+
+}  // namespace mcdyna::model
