@@ -184,8 +184,8 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   if (spec.is_text_line()) {
     const int w = block_.format == CardFormat::long_format ? 2 * spec.fields[0].width
                                                            : spec.fields[0].width;
-    parse_field(spec.fields[0], text.substr(0, std::min<std::size_t>(w, text.size())), 1, row, 0,
-                quiet);
+    parse_field(spec.fields[0], text.substr(0, std::min<std::size_t>(w, text.size())), 1, w, row,
+                0, quiet);
     return;
   }
   if (text.find(',') != std::string_view::npos) {
@@ -197,7 +197,7 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
       const std::size_t end = comma == std::string_view::npos ? text.size() : comma;
       const std::string_view raw = text.substr(start, end - start);
       if (field < n) {
-        parse_field(spec.fields[field], raw, static_cast<int>(start) + 1, row, field, quiet);
+        parse_field(spec.fields[field], raw, static_cast<int>(start) + 1, 0, row, field, quiet);
       } else if (!trim(raw).empty() && !quiet) {
         diags_.error(line->loc().with_columns(static_cast<int>(start) + 1, static_cast<int>(end)),
                      "{} card {}: more values than its {} fields", display_, spec.name, n);
@@ -219,7 +219,7 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   for (int i = 0; i < n; ++i) {
     const int w = widened(block_.format, spec.fields[i].width);
     if (offset >= text.size()) break;
-    parse_field(spec.fields[i], text.substr(offset, w), static_cast<int>(offset) + 1, row, i,
+    parse_field(spec.fields[i], text.substr(offset, w), static_cast<int>(offset) + 1, w, row, i,
                 quiet);
     offset += static_cast<std::size_t>(w);
   }
@@ -233,11 +233,12 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   }
 }
 
-bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int col, Row& row,
-                                int index, bool quiet) const {
+bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int col, int width,
+                                Row& row, int index, bool quiet) const {
   FieldValue& v = row.values_[index];
+  const std::size_t span = width > 0 ? static_cast<std::size_t>(width) : std::max<std::size_t>(raw.size(), 1);
   v.col_begin = static_cast<std::uint16_t>(std::min(col, 65535));
-  v.col_end = static_cast<std::uint16_t>(std::min<std::size_t>(col + raw.size() - 1, 65535));
+  v.col_end = static_cast<std::uint16_t>(std::min<std::size_t>(col + span - 1, 65535));
   const core::SourceLoc at = row.loc_.with_columns(v.col_begin, v.col_end);
   std::string_view s = trim(raw);
   auto report = [&](std::string message) {

@@ -94,8 +94,9 @@ class KeywordRecord {
  private:
   void parse_row(const CardSpec& spec, const DataLine* line, Row& row, bool quiet) const;
   void fill_defaults(const CardSpec& spec, Row& row) const;
-  bool parse_field(const FieldSpec& f, std::string_view raw, int col, Row& row, int index,
-                   bool quiet) const;
+  /// `width`: the field's columns in fixed format (the reported range), 0 in free format.
+  bool parse_field(const FieldSpec& f, std::string_view raw, int col, int width, Row& row,
+                   int index, bool quiet) const;
   [[nodiscard]] bool condition_holds(const Condition& c, const Group* group,
                                      const DataLine* candidate) const;
   [[nodiscard]] double field_number(const std::string& name, const Group* group) const;
