@@ -1,0 +1,90 @@
+// The command line as users run it: exit codes 0 / 1 / 2, LS-DYNA style i=, reports.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+#include "test_support.hpp"
+
+namespace {
+
+struct Run {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Run run_mcdyna(const std::string& args) {
+  Run r;
+  const std::string cmd = std::string(MCDYNA_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+const std::string kDataDir = std::string(MCDYNA_SOURCE_DIR) + "/tests/data/";
+
+}  // namespace
+
+TEST_CASE("check: a clean deck exits 0 with summary and migration report") {
+  const Run r = run_mcdyna("check " + kDataDir + "all_keywords.k");
+  CHECK(r.exit_code == 0);
+  CHECK(r.output.find("nodes            12") != std::string::npos);
+  CHECK(r.output.find("Migration report: 63 keywords") != std::string::npos);
+  CHECK(r.output.find("ready to run") != std::string::npos);
+}
+
+TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 checks the deck") {
+  const Run r = run_mcdyna("i=" + kDataDir + "all_keywords.k ncpu=2 memory=200m");
+  CHECK(r.exit_code == 0);
+  CHECK(r.output.find("ready to run") != std::string::npos);
+}
+
+TEST_CASE("deck errors exit 1; usage errors exit 2") {
+  mcdyna::test::TempDir d;
+  const auto bad = d.write("bad.k", "*NODE\n       1   garbage\n");
+  const Run r = run_mcdyna("check " + bad.string());
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("bad.k:2:9-24: error: *NODE card node field X: expected a real number, got "
+                      "\"garbage\"") != std::string::npos);
+  CHECK(run_mcdyna("check").exit_code == 2);
+  CHECK(run_mcdyna("frobnicate x.k").exit_code == 2);
+  CHECK(run_mcdyna("check " + kDataDir + "all_keywords.k --no-such-flag").exit_code == 2);
+  CHECK(run_mcdyna("x=1").exit_code == 2);
+  CHECK(run_mcdyna("check /nonexistent/deck.k").exit_code == 1);
+}
+
+TEST_CASE("unsupported physics fails check unless --allow-unsupported; no-effect keywords pass") {
+  mcdyna::test::TempDir d;
+  const std::string body =
+                           "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
+  const auto deck = d.write("deck.k", "*KEYWORD\n*CONTROL_MPP_IO_NODUMP\n*DATABASE_ELOUT\n0.1\n"
+                                      "*LOAD_BODY_Z\n1\n" + body);
+  const Run strict = run_mcdyna("check " + deck.string());
+  CHECK(strict.exit_code == 1);
+  CHECK(strict.output.find("UNSUPPORTED        *LOAD_BODY_Z (deck.k: 5)") != std::string::npos);
+  CHECK(strict.output.find("read, no effect    *CONTROL_MPP_IO_NODUMP (deck.k: 2): MPP") !=
+        std::string::npos);
+  CHECK(strict.output.find("unsupported output *DATABASE_ELOUT") != std::string::npos);
+  CHECK(strict.output.find("1 unsupported keyword changes the physics") != std::string::npos);
+  CHECK(run_mcdyna("check --allow-unsupported " + deck.string()).exit_code == 0);
+}
+
+TEST_CASE("keywords: list and card layout") {
+  const Run list = run_mcdyna("keywords");
+  CHECK(list.exit_code == 0);
+  CHECK(list.output.find("*MAT_JOHNSON_COOK *MAT_015") != std::string::npos);
+  const Run jc = run_mcdyna("keywords MAT_015");
+  CHECK(jc.exit_code == 0);
+  CHECK(jc.output.find("51-60     TM") != std::string::npos);
+  CHECK(run_mcdyna("keywords AIRBAG_SIMPLE_AIRBAG_MODEL").exit_code == 1);
+  mcdyna::test::TempDir d;
+  CHECK(run_mcdyna("keywords --markdown " + d.path().string()).exit_code == 0);
+  CHECK(std::filesystem::exists(d.path() / "MAT_JOHNSON_COOK.md"));
+  CHECK(std::filesystem::exists(d.path() / "README.md"));
+}

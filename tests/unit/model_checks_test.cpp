@@ -1,0 +1,90 @@
+// Cross-checks: duplicates, dangling references, physical and geometric sanity, all at once.
+#include <doctest/doctest.h>
+
+#include "test_support.hpp"
+
+using mcdyna::test::load_text;
+
+namespace {
+const char* kCube =
+    "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+    "*CONTROL_TERMINATION\n1.0\n";
+}
+
+TEST_CASE("duplicates and dangling references are all reported at their deck location") {
+  auto l = load_text(std::string(kCube) +
+                         "*NODE\n3,5,5,5\n"
+                         "*PART\np\n1,10,20,30,40\n"
+                         "*ELEMENT_SOLID\n1,1\n1,2,3,4,5,6,7,99\n"
+                         "*ELEMENT_SOLID\n2,7\n1,2,3,4,5,6,7,8\n"
+                         "*SET_NODE_LIST\n4\n1,77\n"
+                         "*BOUNDARY_SPC_SET\n5,0,1\n"
+                         "*BOUNDARY_PRESCRIBED_MOTION_NODE\n1,1,0,66\n",
+                     true);
+  CHECK(l->has_message("node 3 is defined twice (first at line 4)"));
+  CHECK(l->has_message("part 1 refers to section 10, which is not defined"));
+  CHECK(l->has_message("part 1 refers to material 20, which is not defined"));
+  CHECK(l->has_message("part 1 refers to equation of state 30, which is not defined"));
+  CHECK(l->has_message("part 1 refers to *HOURGLASS 40, which is not defined"));
+  CHECK(l->has_message("solid element 1 refers to node 99, which is not defined"));
+  CHECK(l->has_message("solid element 2 refers to part 7, which is not defined"));
+  CHECK(l->has_message("node set 4 contains node 77, which is not defined"));
+  CHECK(l->has_message("*BOUNDARY_SPC refers to node set 5, which is not defined"));
+  CHECK(l->has_message("*BOUNDARY_PRESCRIBED_MOTION refers to curve 66, which is not defined"));
+  const std::string text = l->messages();
+  CHECK(text.find("main.k:16:3-4: error: part 1 refers to section 10") != std::string::npos);
+  CHECK(l->diags.error_count() == 10);
+}
+
+TEST_CASE("physical sanity: density, moduli, TM > TR, EPSO with C, DX >= 1, EOS for JC solids") {
+  auto l = load_text(std::string(kCube) +
+                         "*MAT_ELASTIC\n1,0.0,-5.0,0.7\n"
+                         "*MAT_JOHNSON_COOK\n2,2.7e-9,26000\n324,114,0.42,0.01,1.34,250,293\n"
+                         "*SECTION_SOLID_SPG\n1,47\n0.8\n"
+                         "*SECTION_SOLID\n2,1\n"
+                         "*PART\np\n1,2,2\n"
+                         "*ELEMENT_SOLID\n1,1\n1,2,3,4,5,6,7,8\n",
+                     true);
+  CHECK(l->has_message("*MAT_ELASTIC card 1 field RO: value 0.0 is not allowed (must be > 0)"));
+  CHECK(l->has_message("*MAT_ELASTIC 1: E < 0 (modulus from a curve) is not supported"));
+  CHECK(l->has_message("Poisson's ratio PR = 0.7 must lie in (-1, 0.5)"));
+  CHECK(l->has_message("melt temperature TM = 250 must exceed room temperature TR = 293"));
+  CHECK(l->has_message("C = 0.01 needs a reference strain rate EPSO > 0"));
+  CHECK(l->has_message("DX = 0.8 is below 1"));
+  CHECK(l->has_message("*MAT_JOHNSON_COOK solids need an equation of state"));
+}
+
+TEST_CASE("inverted and collapsed hexahedra are reported; a degenerate tetrahedron is accepted") {
+  auto l = load_text(std::string(kCube) +
+                         "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SOLID\n1,1\n*PART\np\n1,1,1\n"
+                         "*ELEMENT_SOLID\n"
+                         "1,1\n5,6,7,8,1,2,3,4\n"
+                         "2,1\n1,2,3,4,1,2,3,4\n"
+                         "3,1\n1,2,4,5,5,5,5,5\n"
+                         "4,1\n1,2,3,4,5,6,7,8\n",
+                     true);
+  CHECK(l->has_message("solid element 1 is inverted"));
+  CHECK(l->has_message("solid element 2 is collapsed to zero volume"));
+  CHECK_FALSE(l->has_message("solid element 3"));
+  CHECK_FALSE(l->has_message("solid element 4"));
+  CHECK(l->diags.error_count() == 2);
+}
+
+TEST_CASE("what mcdyna cannot run is named: deformable shells, ELFORM, unsupported options") {
+  auto l = load_text(std::string(kCube) +
+                         "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SHELL\n1\n1.0\n*SECTION_SOLID\n2,16\n"
+                         "*PART\ns\n1,1,1\n*PART\nt\n2,2,1\n"
+                         "*ELEMENT_SHELL\n1,1,1,2,3,4\n*ELEMENT_SOLID\n2,2\n1,2,3,4,5,6,7,8\n",
+                     true);
+  CHECK(l->has_message("part 1: deformable shells are not supported"));
+  CHECK(l->has_message("solid ELFORM 16 of section 2 is not supported"));
+}
+
+TEST_CASE("no *CONTROL_TERMINATION in a deck with elements is an error") {
+  auto l = load_text("*NODE\n1\n2,1\n3,1,1\n4,0,1\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+                     "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SOLID\n1\n*PART\np\n1,1,1\n"
+                     "*ELEMENT_SOLID\n1,1\n1,2,3,4,5,6,7,8\n",
+                     true);
+  CHECK(l->has_message("the deck has no *CONTROL_TERMINATION"));
+  CHECK(l->diags.error_count() == 1);
+}
