@@ -104,7 +104,7 @@ void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
   s.id = c1.integer("SID");
   s.loc = c1.loc();
   Group g;
-  constexpr model::Id kMaxGenerated = 100'000'000;
+  constexpr model::Id kMaxGenerated = 10'000'000;  // no real deck generates more
   while (r.next_group(g)) {
     const Row& row = g.rows.front();
     const int b1 = row.index("B1BEG");
