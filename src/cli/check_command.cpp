@@ -4,8 +4,8 @@
 #include <fmt/ostream.h>
 
 #include <chrono>
-#include <sstream>
 #include <ostream>
+#include <sstream>
 
 #include "cli/report.hpp"
 #include "core/diagnostics.hpp"
@@ -38,14 +38,13 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
     physics = print_migration_report(report, deck, built.keywords);
     if (!options.quiet) out << report.str();
   }
-  auto ms = [](auto a, auto b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-  };
+  auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   fmt::print(out, "\nTiming: read {:.0f} ms, build {:.0f} ms, checks {:.0f} ms\n", ms(t0, t_read),
              ms(t_read, t_build), ms(t_build, t_check));
   const bool blocked = physics > 0 && !options.allow_unsupported;
   if (blocked) {
-    fmt::print(err, "mcdyna: error: {} unsupported keyword{} change{} the physics (see the "
+    fmt::print(err,
+               "mcdyna: error: {} unsupported keyword{} change{} the physics (see the "
                "migration report); --allow-unsupported runs without them\n",
                physics, physics == 1 ? "" : "s", physics == 1 ? "s" : "");
   }

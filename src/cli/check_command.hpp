@@ -8,7 +8,7 @@ namespace mcdyna::cli {
 struct CheckOptions {
   std::filesystem::path deck;
   bool allow_unsupported = false;
-  bool quiet = false;          ///< no summary, only diagnostics and the verdict
+  bool quiet = false;             ///< no summary, only diagnostics and the verdict
   std::size_t max_messages = 50;  ///< 0: all
 };
 

@@ -15,20 +15,25 @@ namespace {
 
 std::string type_name(deck::FieldType t) {
   switch (t) {
-    case deck::FieldType::integer: return "I";
-    case deck::FieldType::real: return "F";
-    case deck::FieldType::text: return "A";
+    case deck::FieldType::integer:
+      return "I";
+    case deck::FieldType::real:
+      return "F";
+    case deck::FieldType::text:
+      return "A";
   }
   return "?";
 }
 
 std::string default_text(const deck::FieldSpec& f) {
   switch (f.default_kind) {
-    case deck::DefaultKind::required: return "required";
-    case deck::DefaultKind::blank: return "blank";
+    case deck::DefaultKind::required:
+      return "required";
+    case deck::DefaultKind::blank:
+      return "blank";
     case deck::DefaultKind::value: {
-      std::string v = f.type == deck::FieldType::text ? f.default_text
-                                                      : fmt::format("{:g}", f.default_number);
+      std::string v =
+          f.type == deck::FieldType::text ? f.default_text : fmt::format("{:g}", f.default_number);
       return f.zero_means_default ? v + " (0 too)" : v;
     }
   }
@@ -37,7 +42,8 @@ std::string default_text(const deck::FieldSpec& f) {
 
 std::vector<const deck::KeywordSchema*> sorted(const deck::Registry& registry) {
   std::vector<const deck::KeywordSchema*> v;
-  for (const auto& s : registry.schemas()) v.push_back(&s);
+  for (const auto& s : registry.schemas())
+    v.push_back(&s);
   std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->name < b->name; });
   return v;
 }
@@ -46,11 +52,13 @@ std::string names_line(const deck::KeywordSchema& s) {
   std::string line;
   if (!s.aliases.empty()) {
     line += "aliases:";
-    for (const auto& a : s.aliases) line += " *" + a;
+    for (const auto& a : s.aliases)
+      line += " *" + a;
   }
   if (!s.options.empty()) {
     line += line.empty() ? "options:" : "; options:";
-    for (const auto& o : s.options) line += " _" + o;
+    for (const auto& o : s.options)
+      line += " _" + o;
   }
   return line;
 }
@@ -61,8 +69,10 @@ void print_card(std::ostream& out, const deck::CardSpec& card, bool repeated, bo
   if (card.optional) head += " (optional)";
   if (!card.condition.always()) head += fmt::format(" (if {})", card.condition.text());
   if (markdown) {
-    fmt::print(out, "\n**{}**\n\n| columns | field | type | default | allowed | dimension | "
-               "description |\n|---|---|---|---|---|---|---|\n", head);
+    fmt::print(out,
+               "\n**{}**\n\n| columns | field | type | default | allowed | dimension | "
+               "description |\n|---|---|---|---|---|---|---|\n",
+               head);
   } else {
     fmt::print(out, "\n  {}\n  {:<9} {:<10} {:<4} {:<16} {:<18} {:<13} {}\n", head, "columns",
                "field", "type", "default", "allowed", "dimension", "description");
@@ -74,8 +84,8 @@ void print_card(std::ostream& out, const deck::CardSpec& card, bool repeated, bo
     const std::string allowed = f.constraint.describe();
     if (markdown) {
       fmt::print(out, "| {} | {} | {} | {} | {} | {} | {} |\n", cols, f.name, type_name(f.type),
-                 default_text(f), allowed.empty() ? "" : allowed, f.dimension == "-" ? "" : f.dimension,
-                 f.description);
+                 default_text(f), allowed.empty() ? "" : allowed,
+                 f.dimension == "-" ? "" : f.dimension, f.description);
     } else {
       fmt::print(out, "  {:<9} {:<10} {:<4} {:<16} {:<18} {:<13} {}\n", cols, f.name,
                  type_name(f.type), default_text(f), allowed.empty() ? "-" : allowed, f.dimension,
@@ -89,7 +99,8 @@ void print_card(std::ostream& out, const deck::CardSpec& card, bool repeated, bo
 void print_keyword_list(std::ostream& out, const deck::Registry& registry) {
   for (const deck::KeywordSchema* s : sorted(registry)) {
     std::string name = "*" + s->name;
-    for (const auto& a : s->aliases) name += " *" + a;
+    for (const auto& a : s->aliases)
+      name += " *" + a;
     fmt::print(out, "{:<48} {:<18} {}\n", name, s->group, s->summary);
   }
 }
@@ -113,8 +124,10 @@ void print_keyword_layout(std::ostream& out, const deck::KeywordSchema& s, bool 
       fmt::print(out, fmt::runtime(markdown ? "\n## Layout {} ({})\n" : "\n  Layout {} ({})\n"),
                  form.name, when);
     }
-    for (const auto& card : form.head) print_card(out, card, false, markdown);
-    for (const auto& card : form.repeat) print_card(out, card, true, markdown);
+    for (const auto& card : form.head)
+      print_card(out, card, false, markdown);
+    for (const auto& card : form.repeat)
+      print_card(out, card, true, markdown);
   }
 }
 
@@ -123,9 +136,11 @@ bool write_keyword_pages(const std::filesystem::path& dir, const deck::Registry&
   std::filesystem::create_directories(dir, ec);
   std::ofstream index(dir / "README.md");
   if (!index) return false;
-  fmt::print(index, "# Keyword reference\n\nGenerated from `keywords/*.kw` by `mcdyna keywords "
-             "--markdown`; do not edit. Keywords not listed here are classified in "
-             "[classification](classification.md).\n\n| keyword | group | summary |\n|---|---|---|\n");
+  fmt::print(
+      index,
+      "# Keyword reference\n\nGenerated from `keywords/*.kw` by `mcdyna keywords "
+      "--markdown`; do not edit. Keywords not listed here are classified in "
+      "[classification](classification.md).\n\n| keyword | group | summary |\n|---|---|---|\n");
   for (const deck::KeywordSchema* s : sorted(registry)) {
     const std::string file = deck::upper(s->name) + ".md";
     fmt::print(index, "| [*{}]({}) | {} | {} |\n", s->name, file, s->group, s->summary);
@@ -135,7 +150,8 @@ bool write_keyword_pages(const std::filesystem::path& dir, const deck::Registry&
   }
   std::ofstream cls(dir / "classification.md");
   if (!cls) return false;
-  fmt::print(cls, "# Keywords read without effect or not supported\n\nFrom "
+  fmt::print(cls,
+             "# Keywords read without effect or not supported\n\nFrom "
              "`keywords/classification.txt`. Any keyword neither here nor in the reference is "
              "unsupported and assumed to change the physics.\n\n```\n{}```\n",
              registry.classification_text());

@@ -1,6 +1,6 @@
 // mcdyna command line: `check`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k ncpu=2`).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <string>
@@ -35,7 +35,8 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
     } else if (key == "NCPU" || key == "MEMORY" || key == "MEMORY2") {
       // Threads and memory are chosen by mcdyna; accepted for LS-DYNA command lines.
     } else {
-      error = fmt::format("unknown LS-DYNA style argument '{}' (mcdyna knows i=, ncpu=, memory=)", a);
+      error =
+          fmt::format("unknown LS-DYNA style argument '{}' (mcdyna knows i=, ncpu=, memory=)", a);
       return false;
     }
   }
@@ -65,19 +66,21 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mcdyna 0.1");
 
   mcdyna::cli::CheckOptions check;
-  auto* check_cmd = app.add_subcommand("check", "read and cross-check a deck; print the model "
+  auto* check_cmd = app.add_subcommand("check",
+                                       "read and cross-check a deck; print the model "
                                        "summary and the migration report");
   check_cmd->add_option("deck", check.deck, "keyword deck (.k, .key, .dyn)")->required();
   check_cmd->add_flag("--allow-unsupported", check.allow_unsupported,
                       "do not fail on unsupported keywords that change the physics");
   check_cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
-  check_cmd->add_option("--max-messages", check.max_messages,
-                        "diagnostics printed (0: all)")->capture_default_str();
+  check_cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
+      ->capture_default_str();
 
   std::string keyword_name;
   std::string markdown_dir;
   bool raw = false;
-  auto* kw_cmd = app.add_subcommand("keywords", "list supported keywords or print one's card layout");
+  auto* kw_cmd =
+      app.add_subcommand("keywords", "list supported keywords or print one's card layout");
   kw_cmd->add_option("name", keyword_name, "keyword (with or without '*'), e.g. MAT_JOHNSON_COOK");
   kw_cmd->add_option("--markdown", markdown_dir, "write the keyword reference pages into DIR");
   kw_cmd->add_flag("--raw", raw, "print the schema file as embedded");

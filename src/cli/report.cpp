@@ -12,36 +12,54 @@ namespace {
 
 const char* material_name(model::MaterialKind k) {
   switch (k) {
-    case model::MaterialKind::elastic: return "ELASTIC";
-    case model::MaterialKind::plastic_kinematic: return "PLASTIC_KINEMATIC";
-    case model::MaterialKind::johnson_cook: return "JOHNSON_COOK";
-    case model::MaterialKind::rigid: return "RIGID";
-    case model::MaterialKind::piecewise_linear: return "PIECEWISE_LINEAR_PLASTICITY";
+    case model::MaterialKind::elastic:
+      return "ELASTIC";
+    case model::MaterialKind::plastic_kinematic:
+      return "PLASTIC_KINEMATIC";
+    case model::MaterialKind::johnson_cook:
+      return "JOHNSON_COOK";
+    case model::MaterialKind::rigid:
+      return "RIGID";
+    case model::MaterialKind::piecewise_linear:
+      return "PIECEWISE_LINEAR_PLASTICITY";
   }
   return "?";
 }
 
 const char* contact_name(model::ContactKind k) {
   switch (k) {
-    case model::ContactKind::automatic_nodes_to_surface: return "AUTOMATIC_NODES_TO_SURFACE";
-    case model::ContactKind::automatic_surface_to_surface: return "AUTOMATIC_SURFACE_TO_SURFACE";
-    case model::ContactKind::automatic_single_surface: return "AUTOMATIC_SINGLE_SURFACE";
-    case model::ContactKind::nodes_to_surface: return "NODES_TO_SURFACE";
-    case model::ContactKind::surface_to_surface: return "SURFACE_TO_SURFACE";
+    case model::ContactKind::automatic_nodes_to_surface:
+      return "AUTOMATIC_NODES_TO_SURFACE";
+    case model::ContactKind::automatic_surface_to_surface:
+      return "AUTOMATIC_SURFACE_TO_SURFACE";
+    case model::ContactKind::automatic_single_surface:
+      return "AUTOMATIC_SINGLE_SURFACE";
+    case model::ContactKind::nodes_to_surface:
+      return "NODES_TO_SURFACE";
+    case model::ContactKind::surface_to_surface:
+      return "SURFACE_TO_SURFACE";
   }
   return "?";
 }
 
 const char* side_type_name(int t) {
   switch (t) {
-    case 0: return "segment set";
-    case 1: return "shell set";
-    case 2: return "part set";
-    case 3: return "part";
-    case 4: return "node set";
-    case 5: return "all";
-    case 6: return "all but part set";
-    default: return "?";
+    case 0:
+      return "segment set";
+    case 1:
+      return "shell set";
+    case 2:
+      return "part set";
+    case 3:
+      return "part";
+    case 4:
+      return "node set";
+    case 5:
+      return "all";
+    case 6:
+      return "all but part set";
+    default:
+      return "?";
   }
 }
 
@@ -49,10 +67,12 @@ std::string section_label(const model::ModelDatabase& m, model::Id id) {
   const model::Section* s = m.section(id);
   if (s == nullptr) return fmt::format("{} (undefined)", id);
   switch (s->kind) {
-    case model::SectionKind::solid: return fmt::format("{} solid ELFORM {}", id, s->element_formulation);
+    case model::SectionKind::solid:
+      return fmt::format("{} solid ELFORM {}", id, s->element_formulation);
     case model::SectionKind::solid_spg:
       return fmt::format("{} SPG ITB {} KERNEL {}", id, s->spg.stabilization, s->spg.kernel_update);
-    case model::SectionKind::shell: return fmt::format("{} shell ELFORM {}", id, s->element_formulation);
+    case model::SectionKind::shell:
+      return fmt::format("{} shell ELFORM {}", id, s->element_formulation);
   }
   return "?";
 }
@@ -122,9 +142,8 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
     for (std::size_t i = 0; i < m.parts.size(); ++i) {
       const model::Part& p = m.parts[i];
       const model::Material* mat = m.material(p.material);
-      const std::string mat_label =
-          mat ? fmt::format("{} {}", p.material, material_name(mat->kind))
-              : fmt::format("{} (undefined)", p.material);
+      const std::string mat_label = mat ? fmt::format("{} {}", p.material, material_name(mat->kind))
+                                        : fmt::format("{} (undefined)", p.material);
       fmt::print(out, "  {:>8} {:>10}  {:<26} {:<36} {:<10} {}\n", p.id,
                  i < counts.elements_per_part.size() ? counts.elements_per_part[i] : 0,
                  section_label(m, p.section), mat_label, p.eos == 0 ? "-" : std::to_string(p.eos),
@@ -133,8 +152,10 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
   }
   fmt::print(out, "\nMaterials        {}", m.materials.size());
   std::map<std::string, int> by_kind;
-  for (const auto& mat : m.materials) ++by_kind[material_name(mat.kind)];
-  for (const auto& [k, n] : by_kind) fmt::print(out, "  {} x{}", k, n);
+  for (const auto& mat : m.materials)
+    ++by_kind[material_name(mat.kind)];
+  for (const auto& [k, n] : by_kind)
+    fmt::print(out, "  {} x{}", k, n);
   fmt::print(out, "\nEOS              {}   hourglass sets {}   erosion criteria {}\n",
              m.equations_of_state.size(), m.hourglasses.size(), m.erosions.size());
   fmt::print(out, "\nContacts         {}\n", m.contacts.size());
@@ -144,7 +165,8 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
                c.static_friction, c.dynamic_friction);
   }
   std::size_t spc_nodes = 0, spc_sets = 0;
-  for (const auto& s : m.spcs) (s.is_set ? spc_sets : spc_nodes)++;
+  for (const auto& s : m.spcs)
+    (s.is_set ? spc_sets : spc_nodes)++;
   fmt::print(out, "\nBoundary conditions\n  SPC nodes {}  SPC node sets {}  node TC/RC codes {}\n",
              spc_nodes, spc_sets,
              std::count_if(m.nodes.begin(), m.nodes.end(), [](const model::Node& n) {
@@ -157,20 +179,23 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
     fmt::print(out, "  prescribed motion: {} {} DOF {} VAD {} curve {} x {}\n", target, p.target,
                p.dof, p.kind, p.curve, p.scale);
   }
-  fmt::print(out, "  initial velocity definitions {}  rigid walls {}\n", m.initial_velocities.size(),
-             m.rigid_walls.size());
-  fmt::print(out, "\nCurves {}  vectors {}  boxes {}  node sets {}  part sets {}  segment sets {}\n",
+  fmt::print(out, "  initial velocity definitions {}  rigid walls {}\n",
+             m.initial_velocities.size(), m.rigid_walls.size());
+  fmt::print(out,
+             "\nCurves {}  vectors {}  boxes {}  node sets {}  part sets {}  segment sets {}\n",
              m.curves.size(), m.vectors.size(), m.boxes.size(), m.node_sets.size(),
              m.part_sets.size(), m.segment_sets.size());
   fmt::print(out, "\nOutputs\n");
   if (m.outputs.d3plot) {
-    fmt::print(out, "  d3plot states every {} (VTK series d3plot.pvd)\n", m.outputs.d3plot->interval);
+    fmt::print(out, "  d3plot states every {} (VTK series d3plot.pvd)\n",
+               m.outputs.d3plot->interval);
   }
   for (const auto& a : m.outputs.ascii) {
     fmt::print(out, "  {:<8} every {}\n", model::ascii_database_name(a.database), a.interval);
   }
   std::size_t history = 0;
-  for (const auto& h : m.outputs.history_nodes) history += h.ids.size();
+  for (const auto& h : m.outputs.history_nodes)
+    history += h.ids.size();
   if (history > 0) fmt::print(out, "  history nodes/sets {}\n", history);
   if (m.controls.termination) {
     fmt::print(out, "\nTermination      ENDTIM {}", m.controls.termination->end_time);
@@ -199,8 +224,10 @@ std::size_t print_migration_report(std::ostream& out, const deck::Deck& deck,
     it->second.places.push_back(u.loc);
   }
   std::size_t counts[4] = {};
-  for (const auto& [name, e] : by_name) ++counts[static_cast<int>(e.support)];
-  fmt::print(out, "\nMigration report: {} keywords ({} distinct): {} supported, {} read without "
+  for (const auto& [name, e] : by_name)
+    ++counts[static_cast<int>(e.support)];
+  fmt::print(out,
+             "\nMigration report: {} keywords ({} distinct): {} supported, {} read without "
              "effect, {} unsupported output, {} unsupported\n",
              uses.size(), by_name.size(), counts[0], counts[1], counts[2], counts[3]);
   std::string supported;
@@ -211,8 +238,8 @@ std::size_t print_migration_report(std::ostream& out, const deck::Deck& deck,
   }
   if (!supported.empty()) fmt::print(out, "  supported: {}\n", supported);
   std::size_t physics = 0;
-  for (deck::Support s : {deck::Support::no_effect, deck::Support::output_only,
-                          deck::Support::unsupported}) {
+  for (deck::Support s :
+       {deck::Support::no_effect, deck::Support::output_only, deck::Support::unsupported}) {
     for (const auto& [name, e] : by_name) {
       if (e.support != s) continue;
       const char* tag = s == deck::Support::no_effect     ? "read, no effect   "

@@ -11,7 +11,7 @@ namespace mcdyna::cli {
 
 /// Counts a summary needs that take a pass over the mesh.
 struct ModelCounts {
-  std::size_t spg_particles = 0;  ///< distinct nodes of elements in SPG parts
+  std::size_t spg_particles = 0;               ///< distinct nodes of elements in SPG parts
   std::vector<std::size_t> elements_per_part;  ///< parallel to model.parts
 };
 

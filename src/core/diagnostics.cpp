@@ -15,9 +15,12 @@ namespace {
 
 const char* severity_name(Severity s) {
   switch (s) {
-    case Severity::note: return "note";
-    case Severity::warning: return "warning";
-    case Severity::error: return "error";
+    case Severity::note:
+      return "note";
+    case Severity::warning:
+      return "warning";
+    case Severity::error:
+      return "error";
   }
   return "error";
 }
@@ -26,7 +29,8 @@ const char* severity_name(Severity s) {
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
-  for (unsigned char c : text) out.push_back(c >= 0x20 && c < 0x7f ? static_cast<char>(c) : '?');
+  for (unsigned char c : text)
+    out.push_back(c >= 0x20 && c < 0x7f ? static_cast<char>(c) : '?');
   return out;
 }
 
@@ -52,7 +56,8 @@ std::string format_diagnostic(const Diagnostic& d, const SourceFiles& files) {
     if (d.loc.col_begin != 0) {
       const int begin = d.loc.col_begin;
       const int end = std::max<int>(d.loc.col_end, begin);
-      out += fmt::format("  {}{}\n", std::string(begin - 1, ' '), std::string(end - begin + 1, '^'));
+      out +=
+          fmt::format("  {}{}\n", std::string(begin - 1, ' '), std::string(end - begin + 1, '^'));
     }
   }
   return out;

@@ -23,8 +23,8 @@ struct SourceLoc {
 
 /// One file's text, kept for the whole run so diagnostics can echo lines.
 struct SourceFile {
-  std::filesystem::path path;     ///< as given or resolved; printed in diagnostics
-  std::string text;               ///< whole file content
+  std::filesystem::path path;              ///< as given or resolved; printed in diagnostics
+  std::string text;                        ///< whole file content
   std::vector<std::uint32_t> line_starts;  ///< byte offset of each line's first character
 };
 

@@ -11,7 +11,8 @@ namespace mcdyna::deck {
 BuildResult build_model(const Deck& deck, const Registry& registry, core::Diagnostics& diags) {
   BuildResult result;
   std::unordered_map<std::string_view, BuilderFn> builders;
-  for (const BuilderEntry& e : builder_table()) builders.emplace(e.keyword, e.build);
+  for (const BuilderEntry& e : builder_table())
+    builders.emplace(e.keyword, e.build);
   for (const KeywordBlock& block : deck.blocks) {
     if (block.name.empty()) continue;  // already reported by the lexer
     Classification c = registry.classify(block.name);

@@ -26,10 +26,10 @@ struct DataLine {
 
 /// One keyword occurrence: "*NAME ..." and the data lines up to the next keyword.
 struct KeywordBlock {
-  std::string name;  ///< upper case, without '*' and without a format suffix
+  std::string name;     ///< upper case, without '*' and without a format suffix
   core::SourceLoc loc;  ///< the keyword line
   CardFormat format = CardFormat::standard;
-  std::uint32_t scope = 0;  ///< parameter scope of the file it is in
+  std::uint32_t scope = 0;       ///< parameter scope of the file it is in
   std::uint32_t first_line = 0;  ///< index into Deck::lines
   std::uint32_t end_line = 0;
   [[nodiscard]] std::uint32_t line_count() const { return end_line - first_line; }

@@ -42,7 +42,8 @@ class ExpressionParser {
     if (error_.empty()) error_ = what + " at position " + std::to_string(pos_ + 1);
   }
   void skip_blanks() {
-    while (pos_ < text_.size() && is_blank_char(text_[pos_])) ++pos_;
+    while (pos_ < text_.size() && is_blank_char(text_[pos_]))
+      ++pos_;
   }
   bool accept(std::string_view token) {
     skip_blanks();
@@ -126,14 +127,16 @@ class ExpressionParser {
     auto digit = [&](std::size_t i) {
       return i < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i]));
     };
-    while (digit(end) || (end < text_.size() && text_[end] == '.')) ++end;
-    if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E' || text_[end] == 'd' ||
-                               text_[end] == 'D')) {
+    while (digit(end) || (end < text_.size() && text_[end] == '.'))
+      ++end;
+    if (end < text_.size() &&
+        (text_[end] == 'e' || text_[end] == 'E' || text_[end] == 'd' || text_[end] == 'D')) {
       std::size_t e = end + 1;
       if (e < text_.size() && (text_[e] == '+' || text_[e] == '-')) ++e;
       if (digit(e)) {
         end = e;
-        while (digit(end)) ++end;
+        while (digit(end))
+          ++end;
       }
     }
     const auto v = parse_real(text_.substr(pos_, end - pos_));
@@ -228,7 +231,8 @@ class ExpressionParser {
         return 0.0;
       }
       double v = a[0];
-      for (double x : a) v = fn == "MIN" ? std::min(v, x) : std::max(v, x);
+      for (double x : a)
+        v = fn == "MIN" ? std::min(v, x) : std::max(v, x);
       return v;
     }
     fail("unknown function '" + fn + "'");

@@ -27,7 +27,8 @@ KeywordLine parse_keyword_line(std::string_view text) {
   KeywordLine k;
   std::string_view rest = text.substr(1);
   std::size_t end = 0;
-  while (end < rest.size() && !is_blank_char(rest[end])) ++end;
+  while (end < rest.size() && !is_blank_char(rest[end]))
+    ++end;
   std::string_view name = rest.substr(0, end);
   k.arguments = trim(rest.substr(end));
   if (!name.empty() && (name.back() == '+' || name.back() == '-' || name.back() == '%')) {
@@ -141,8 +142,9 @@ void Lexer::lex(const fs::path& path, std::string text, std::optional<std::uint3
       in_comment = k.name == "COMMENT";
       KeywordBlock b;
       b.name = k.name;
-      b.loc = core::SourceLoc{st.file, line_no, 1, static_cast<std::uint16_t>(std::min<std::size_t>(
-                                                      line.size(), 65535))};
+      b.loc =
+          core::SourceLoc{st.file, line_no, 1,
+                          static_cast<std::uint16_t>(std::min<std::size_t>(line.size(), 65535))};
       b.format = k.format_suffix == '+'   ? CardFormat::long_format
                  : k.format_suffix == '-' ? CardFormat::standard
                  : k.format_suffix == '%' ? CardFormat::i10
@@ -208,7 +210,8 @@ void Lexer::handle_keyword_arguments(FileState& st, const KeywordBlock& b, std::
     const std::string key = a.substr(0, eq);
     const std::string value = eq == std::string::npos ? "" : a.substr(eq + 1);
     const int col = static_cast<int>(arg.data() - deck_.files.file(b.loc.file).text.data() -
-                                      deck_.files.file(b.loc.file).line_starts[b.loc.line - 1]) + 1;
+                                     deck_.files.file(b.loc.file).line_starts[b.loc.line - 1]) +
+                    1;
     const core::SourceLoc at = b.loc.with_columns(col, col + static_cast<int>(arg.size()) - 1);
     if (key == "LONG") {
       if (value == "Y") {
@@ -243,7 +246,8 @@ void Lexer::handle_include(FileState& st, const KeywordBlock& b) {
     std::string_view piece = trim(dl.text);
     if (name.empty()) name_loc = dl.loc();
     if (piece.empty()) continue;
-    const bool continues = piece.size() >= 2 && piece.back() == '+' && piece[piece.size() - 2] == ' ';
+    const bool continues =
+        piece.size() >= 2 && piece.back() == '+' && piece[piece.size() - 2] == ' ';
     if (continues) piece = trim(piece.substr(0, piece.size() - 1));
     name += piece;
     if (continues) continue;
@@ -264,7 +268,8 @@ void Lexer::handle_include(FileState& st, const KeywordBlock& b) {
     const fs::path canonical = fs::weakly_canonical(*path, ec);
     if (std::find(open_files_.begin(), open_files_.end(), canonical) != open_files_.end()) {
       std::string chain;
-      for (const auto& f : open_files_) chain += f.filename().string() + " -> ";
+      for (const auto& f : open_files_)
+        chain += f.filename().string() + " -> ";
       diags_.error(name_loc, "include cycle: {}{}", chain, canonical.filename().string());
       name.clear();
       continue;
@@ -279,7 +284,8 @@ void Lexer::handle_include(FileState& st, const KeywordBlock& b) {
     lex(*path, std::move(*text), st.scope, st.depth + 1, st.format);
     name.clear();
   }
-  if (!name.empty()) diags_.error(name_loc, "include file name continues with ' +' but no line follows");
+  if (!name.empty())
+    diags_.error(name_loc, "include file name continues with ' +' but no line follows");
 }
 
 std::optional<fs::path> Lexer::resolve_include(std::string_view raw, const fs::path& including_dir,
@@ -294,7 +300,8 @@ std::optional<fs::path> Lexer::resolve_include(std::string_view raw, const fs::p
     return ok(p) ? std::optional<fs::path>(p) : std::nullopt;
   }
   std::vector<fs::path> dirs{including_dir, main_dir_};
-  for (const auto& d : include_paths_) dirs.push_back(d);
+  for (const auto& d : include_paths_)
+    dirs.push_back(d);
   dirs.push_back(fs::current_path(ec));
   for (const auto& d : dirs) {
     if (!searched.empty()) searched += ", ";
@@ -339,7 +346,8 @@ void Lexer::handle_parameter(const KeywordBlock& b, bool expression, bool local)
     } else if (free_format) {
       const auto items = split(dl.text, ',');
       for (std::size_t k = 0; k + 1 < items.size(); k += 2) {
-        pairs.push_back({items[k], items[k + 1], static_cast<int>(items[k].data() - dl.text.data()) + 1});
+        pairs.push_back(
+            {items[k], items[k + 1], static_cast<int>(items[k].data() - dl.text.data()) + 1});
       }
     } else {
       for (int k = 0; k < 4; ++k) {
@@ -372,10 +380,9 @@ void Lexer::handle_parameter(const KeywordBlock& b, bool expression, bool local)
         diags_.error(at, "{} {} has no value", kind, name);
         continue;
       }
-      deck_.parameters.define(
-          Parameters::Definition{name, type, std::string(trim(pr.value)), expression, local,
-                                 b.scope, at},
-          duplication_flag_, diags_);
+      deck_.parameters.define(Parameters::Definition{name, type, std::string(trim(pr.value)),
+                                                     expression, local, b.scope, at},
+                              duplication_flag_, diags_);
     }
   }
 }
@@ -388,8 +395,8 @@ void Lexer::handle_duplication(const KeywordBlock& b) {
   if (f.size() == 1 && f[0] >= '1' && f[0] <= '5') {
     duplication_flag_ = f[0] - '0';
   } else {
-    diags_.error(dl.loc().with_columns(1, 10), "*PARAMETER_DUPLICATION DFLAG must be 1..5, got \"{}\"",
-                 f);
+    diags_.error(dl.loc().with_columns(1, 10),
+                 "*PARAMETER_DUPLICATION DFLAG must be 1..5, got \"{}\"", f);
   }
 }
 

@@ -28,7 +28,8 @@ void Parameters::define(Definition def, int duplication_flag, core::Diagnostics&
   const auto& first_file_line = first.line;
   switch (duplication_flag) {
     case 2:
-      diags.warning(def.loc, "parameter {} redefined (first defined at line {}); the new value is used",
+      diags.warning(def.loc,
+                    "parameter {} redefined (first defined at line {}); the new value is used",
                     def.name, first_file_line);
       [[fallthrough]];
     case 4:
@@ -39,7 +40,8 @@ void Parameters::define(Definition def, int duplication_flag, core::Diagnostics&
       diags.error(def.loc, "parameter {} is defined twice (first at line {})", def.name,
                   first_file_line);
       return;
-    case 5: return;
+    case 5:
+      return;
     default:
       diags.warning(def.loc,
                     "parameter {} redefined (first defined at line {}); the first value is kept "
@@ -110,7 +112,8 @@ bool Parameters::evaluate(int index, core::Diagnostics& diags) {
 }
 
 void Parameters::evaluate_all(core::Diagnostics& diags) {
-  for (int i = 0; i < static_cast<int>(defs_.size()); ++i) evaluate(i, diags);
+  for (int i = 0; i < static_cast<int>(defs_.size()); ++i)
+    evaluate(i, diags);
 }
 
 const ParameterValue* Parameters::lookup(std::string_view name, std::uint32_t scope) const {

@@ -21,9 +21,12 @@ int widened(CardFormat format, int width) {
 
 std::string_view type_name(FieldType t) {
   switch (t) {
-    case FieldType::integer: return "an integer";
-    case FieldType::real: return "a real number";
-    case FieldType::text: return "text";
+    case FieldType::integer:
+      return "an integer";
+    case FieldType::real:
+      return "a real number";
+    case FieldType::text:
+      return "text";
   }
   return "a value";
 }
@@ -152,9 +155,8 @@ void KeywordRecord::finish() {
   while (next_group(g)) {
   }
   if (pos_ < content_end_) {
-    diags_.warning(deck_.lines[pos_].loc(),
-                   "{}: {} more line(s) than the keyword's cards; ignored", display_,
-                   content_end_ - pos_);
+    diags_.warning(deck_.lines[pos_].loc(), "{}: {} more line(s) than the keyword's cards; ignored",
+                   display_, content_end_ - pos_);
   }
   pos_ = block_.end_line;
 }
@@ -182,10 +184,10 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   const std::string_view text = line->text;
   const int n = row.count_;
   if (spec.is_text_line()) {
-    const int w = block_.format == CardFormat::long_format ? 2 * spec.fields[0].width
-                                                           : spec.fields[0].width;
-    parse_field(spec.fields[0], text.substr(0, std::min<std::size_t>(w, text.size())), 1, w, row,
-                0, quiet);
+    const int w =
+        block_.format == CardFormat::long_format ? 2 * spec.fields[0].width : spec.fields[0].width;
+    parse_field(spec.fields[0], text.substr(0, std::min<std::size_t>(w, text.size())), 1, w, row, 0,
+                quiet);
     return;
   }
   if (text.find(',') != std::string_view::npos) {
@@ -211,8 +213,8 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   }
   if (!quiet && text.find('\t') != std::string_view::npos) {
     diags_.error(line->loc(),
-                 "{} card {}: tab character in a fixed-column card; use spaces or commas",
-                 display_, spec.name);
+                 "{} card {}: tab character in a fixed-column card; use spaces or commas", display_,
+                 spec.name);
     return;
   }
   std::size_t offset = 0;
@@ -225,24 +227,25 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   }
   if (!quiet && offset < text.size() && !trim(text.substr(offset)).empty() && !warned_wide_) {
     warned_wide_ = true;
-    diags_.warning(line->loc().with_columns(static_cast<int>(offset) + 1,
-                                            static_cast<int>(text.size())),
-                   "{} card {}: text beyond column {} is ignored{}", display_, spec.name, offset,
-                   block_.format == CardFormat::standard ? " (long format needs *KEYWORD LONG=Y)"
-                                                         : "");
+    diags_.warning(
+        line->loc().with_columns(static_cast<int>(offset) + 1, static_cast<int>(text.size())),
+        "{} card {}: text beyond column {} is ignored{}", display_, spec.name, offset,
+        block_.format == CardFormat::standard ? " (long format needs *KEYWORD LONG=Y)" : "");
   }
 }
 
 bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int col, int width,
                                 Row& row, int index, bool quiet) const {
   FieldValue& v = row.values_[index];
-  const std::size_t span = width > 0 ? static_cast<std::size_t>(width) : std::max<std::size_t>(raw.size(), 1);
+  const std::size_t span =
+      width > 0 ? static_cast<std::size_t>(width) : std::max<std::size_t>(raw.size(), 1);
   v.col_begin = static_cast<std::uint16_t>(std::min(col, 65535));
   v.col_end = static_cast<std::uint16_t>(std::min<std::size_t>(col + span - 1, 65535));
   const core::SourceLoc at = row.loc_.with_columns(v.col_begin, v.col_end);
   std::string_view s = trim(raw);
   auto report = [&](std::string message) {
-    if (!quiet) diags_.error(at, "{} card {} field {}: {}", display_, row.spec_->name, f.name, message);
+    if (!quiet)
+      diags_.error(at, "{} card {} field {}: {}", display_, row.spec_->name, f.name, message);
     return false;
   };
   if (s.empty()) {
@@ -321,8 +324,12 @@ bool KeywordRecord::condition_holds(const Condition& c, const Group* group,
     bool ok = true;
     for (const ConditionTerm& t : all_of) {
       switch (t.kind) {
-        case ConditionTerm::Kind::option: ok = has_option(t.name); break;
-        case ConditionTerm::Kind::no_option: ok = !has_option(t.name); break;
+        case ConditionTerm::Kind::option:
+          ok = has_option(t.name);
+          break;
+        case ConditionTerm::Kind::no_option:
+          ok = !has_option(t.name);
+          break;
         case ConditionTerm::Kind::first_char: {
           const std::string_view s = candidate != nullptr ? trim(candidate->text) : "";
           ok = !s.empty() && s[0] == t.character;

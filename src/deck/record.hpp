@@ -38,7 +38,9 @@ class Row {
   [[nodiscard]] std::int64_t integer(int field) const { return values_[field].integer; }
   [[nodiscard]] double real(int field) const { return values_[field].real; }
   [[nodiscard]] std::string_view text(int field) const { return values_[field].text; }
-  [[nodiscard]] bool blank(int field) const { return values_[field].kind == FieldValue::Kind::blank; }
+  [[nodiscard]] bool blank(int field) const {
+    return values_[field].kind == FieldValue::Kind::blank;
+  }
   [[nodiscard]] const FieldValue& value(int field) const { return values_[field]; }
 
   /// Field index by LS-DYNA name; throws std::logic_error if the card has no such field (a

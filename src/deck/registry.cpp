@@ -10,17 +10,23 @@ namespace mcdyna::deck {
 
 const char* support_name(Support s) {
   switch (s) {
-    case Support::supported: return "supported";
-    case Support::no_effect: return "read, no effect";
-    case Support::output_only: return "unsupported output";
-    case Support::unsupported: return "unsupported";
+    case Support::supported:
+      return "supported";
+    case Support::no_effect:
+      return "read, no effect";
+    case Support::output_only:
+      return "unsupported output";
+    case Support::unsupported:
+      return "unsupported";
   }
   return "unsupported";
 }
 
 Registry::Registry() : Registry(embedded_keyword_files()) {}
 
-Registry::Registry(const std::vector<EmbeddedFile>& files) { load(files); }
+Registry::Registry(const std::vector<EmbeddedFile>& files) {
+  load(files);
+}
 
 void Registry::load(const std::vector<EmbeddedFile>& files) {
   for (const EmbeddedFile& f : files) {
@@ -34,7 +40,8 @@ void Registry::load(const std::vector<EmbeddedFile>& files) {
         if (body.empty() || body.front() == '#') continue;
         const auto tok = split_whitespace(body, 2);
         if (tok.size() < 3) {
-          throw SchemaError(fmt::format("keywords/{}:{}: expected PATTERN CLASS REASON", name, line_no));
+          throw SchemaError(
+              fmt::format("keywords/{}:{}: expected PATTERN CLASS REASON", name, line_no));
         }
         Support s = Support::unsupported;
         if (tok[1] == "no-effect") {
@@ -42,7 +49,8 @@ void Registry::load(const std::vector<EmbeddedFile>& files) {
         } else if (tok[1] == "output-only") {
           s = Support::output_only;
         } else if (tok[1] != "physics") {
-          throw SchemaError(fmt::format("keywords/{}:{}: unknown class '{}'", name, line_no, tok[1]));
+          throw SchemaError(
+              fmt::format("keywords/{}:{}: unknown class '{}'", name, line_no, tok[1]));
         }
         rules_.push_back(Rule{upper(tok[0]), s, std::string(tok[2])});
       }
@@ -110,8 +118,8 @@ bool split_options(std::string_view suffix, const KeywordSchema& schema,
   while (!suffix.empty()) {
     std::string_view best;
     for (const std::string& o : schema.options) {
-      const bool fits = suffix == o || (suffix.size() > o.size() && suffix.substr(0, o.size()) == o &&
-                                        suffix[o.size()] == '_');
+      const bool fits = suffix == o || (suffix.size() > o.size() &&
+                                        suffix.substr(0, o.size()) == o && suffix[o.size()] == '_');
       if (fits && o.size() > best.size()) best = o;
     }
     if (best.empty()) {
@@ -170,10 +178,9 @@ Classification Registry::classify(std::string_view name) const {
     }
   }
   c.support = Support::unsupported;
-  c.reason = base_with_bad_option != nullptr
-                 ? fmt::format("option _{} of *{} is not supported", bad_option,
-                               base_with_bad_option->name)
-                 : "keyword not supported by mcdyna";
+  c.reason = base_with_bad_option != nullptr ? fmt::format("option _{} of *{} is not supported",
+                                                           bad_option, base_with_bad_option->name)
+                                             : "keyword not supported by mcdyna";
   return c;
 }
 

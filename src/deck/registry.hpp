@@ -21,8 +21,8 @@ const char* support_name(Support s);
 struct Classification {
   Support support = Support::unsupported;
   const KeywordSchema* schema = nullptr;  ///< for supported keywords
-  std::vector<std::string> options;        ///< recognised option suffixes
-  std::string reason;                      ///< why (no_effect, output_only, unsupported)
+  std::vector<std::string> options;       ///< recognised option suffixes
+  std::string reason;                     ///< why (no_effect, output_only, unsupported)
 };
 
 struct EmbeddedFile {

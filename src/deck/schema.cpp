@@ -14,11 +14,25 @@ namespace mcdyna::deck {
 
 namespace {
 
-constexpr std::array kDimensions{
-    "-",        "length",   "time",     "mass",      "density",        "stress",
-    "velocity", "acceleration", "force", "energy",   "temperature",    "specific_heat",
-    "strain_rate", "angular_velocity", "angle",  "area",       "energy_per_volume",
-    "stiffness_per_length", "strain"};
+constexpr std::array kDimensions{"-",
+                                 "length",
+                                 "time",
+                                 "mass",
+                                 "density",
+                                 "stress",
+                                 "velocity",
+                                 "acceleration",
+                                 "force",
+                                 "energy",
+                                 "temperature",
+                                 "specific_heat",
+                                 "strain_rate",
+                                 "angular_velocity",
+                                 "angle",
+                                 "area",
+                                 "energy_per_volume",
+                                 "stiffness_per_length",
+                                 "strain"};
 
 struct LineCursor {
   std::string_view file;
@@ -66,8 +80,8 @@ Constraint parse_constraint(const LineCursor& at, std::string_view token) {
   };
   constexpr std::array ops{Op{">=", Constraint::Kind::greater_equal},
                            Op{"<=", Constraint::Kind::less_equal},
-                           Op{"!=", Constraint::Kind::not_equal}, Op{">", Constraint::Kind::greater},
-                           Op{"<", Constraint::Kind::less}};
+                           Op{"!=", Constraint::Kind::not_equal},
+                           Op{">", Constraint::Kind::greater}, Op{"<", Constraint::Kind::less}};
   for (const Op& op : ops) {
     if (token.substr(0, op.text.size()) == op.text) {
       c.kind = op.kind;
@@ -198,12 +212,18 @@ bool is_known_dimension(std::string_view dimension) {
 
 bool Constraint::allows(double v) const {
   switch (kind) {
-    case Kind::none: return true;
-    case Kind::greater: return v > bound;
-    case Kind::greater_equal: return v >= bound;
-    case Kind::less: return v < bound;
-    case Kind::less_equal: return v <= bound;
-    case Kind::not_equal: return v != bound;
+    case Kind::none:
+      return true;
+    case Kind::greater:
+      return v > bound;
+    case Kind::greater_equal:
+      return v >= bound;
+    case Kind::less:
+      return v < bound;
+    case Kind::less_equal:
+      return v <= bound;
+    case Kind::not_equal:
+      return v != bound;
     case Kind::one_of:
       return std::any_of(ranges.begin(), ranges.end(),
                          [v](const auto& r) { return v >= r.first && v <= r.second; });
@@ -213,12 +233,18 @@ bool Constraint::allows(double v) const {
 
 std::string Constraint::describe() const {
   switch (kind) {
-    case Kind::none: return "";
-    case Kind::greater: return fmt::format("> {:g}", bound);
-    case Kind::greater_equal: return fmt::format(">= {:g}", bound);
-    case Kind::less: return fmt::format("< {:g}", bound);
-    case Kind::less_equal: return fmt::format("<= {:g}", bound);
-    case Kind::not_equal: return fmt::format("!= {:g}", bound);
+    case Kind::none:
+      return "";
+    case Kind::greater:
+      return fmt::format("> {:g}", bound);
+    case Kind::greater_equal:
+      return fmt::format(">= {:g}", bound);
+    case Kind::less:
+      return fmt::format("< {:g}", bound);
+    case Kind::less_equal:
+      return fmt::format("<= {:g}", bound);
+    case Kind::not_equal:
+      return fmt::format("!= {:g}", bound);
     case Kind::one_of: {
       std::string s = "one of {";
       for (std::size_t i = 0; i < ranges.size(); ++i) {
@@ -233,7 +259,9 @@ std::string Constraint::describe() const {
   return "";
 }
 
-std::string Condition::text() const { return source_text; }
+std::string Condition::text() const {
+  return source_text;
+}
 
 bool CardSpec::is_text_line() const {
   return fields.size() == 1 && fields[0].type == FieldType::text && fields[0].width > 20;
@@ -288,9 +316,11 @@ KeywordSchema parse_schema(std::string_view file_name, std::string_view text) {
     if (key == "keyword") {
       s.name = upper(rest);
     } else if (key == "alias") {
-      for (auto a : split_whitespace(rest)) s.aliases.push_back(upper(a));
+      for (auto a : split_whitespace(rest))
+        s.aliases.push_back(upper(a));
     } else if (key == "options") {
-      for (auto o : split_whitespace(rest)) s.options.push_back(upper(o));
+      for (auto o : split_whitespace(rest))
+        s.options.push_back(upper(o));
     } else if (key == "group") {
       s.group = std::string(rest);
     } else if (key == "summary") {
@@ -306,7 +336,8 @@ KeywordSchema parse_schema(std::string_view file_name, std::string_view text) {
       if (tok.size() != 2 && !(tok.size() == 4 && tok[2] == "when")) {
         at.fail("form NAME [when FIELD]");
       }
-      s.forms.push_back(FormSpec{std::string(tok[1]), tok.size() == 4 ? upper(tok[3]) : "", {}, {}});
+      s.forms.push_back(
+          FormSpec{std::string(tok[1]), tok.size() == 4 ? upper(tok[3]) : "", {}, {}});
       in_repeat = false;
       card = nullptr;
     } else if (key == "repeat") {

@@ -44,11 +44,11 @@ struct FieldSpec {
 struct ConditionTerm {
   enum class Kind { option, no_option, compare, in_set, first_char };
   Kind kind = Kind::option;
-  std::string name;  ///< option name or field name
+  std::string name;       ///< option name or field name
   bool absolute = false;  ///< abs(FIELD)
-  std::string op;  ///< <, <=, >, >=, ==, !=
+  std::string op;         ///< <, <=, >, >=, ==, !=
   double value = 0.0;
-  Constraint set;  ///< in_set
+  Constraint set;      ///< in_set
   char character = 0;  ///< first_char: first non-blank character of the candidate line
 };
 
@@ -83,13 +83,13 @@ struct KeywordSchema {
   std::string name;  ///< canonical name without '*'
   std::vector<std::string> aliases;
   std::vector<std::string> options;  ///< accepted suffixes (TITLE, ID, MPP …)
-  std::string group;    ///< section of the keyword reference (material, control, …)
-  std::string summary;  ///< one line
-  std::string source;   ///< where the layout comes from
-  std::string handler = "builder";  ///< "builder" (model builder) or "reader" (lexer handles it)
+  std::string group;                 ///< section of the keyword reference (material, control, …)
+  std::string summary;               ///< one line
+  std::string source;                ///< where the layout comes from
+  std::string handler = "builder";   ///< "builder" (model builder) or "reader" (lexer handles it)
   std::vector<FormSpec> forms;
   std::string cards_from;  ///< "cards-from NAME": forms copied from that schema by the registry
-  std::string file;  ///< schema file name, for messages
+  std::string file;        ///< schema file name, for messages
 
   [[nodiscard]] bool has_option(std::string_view option) const;
   /// Finds a field spec by name in any card of any form; nullptr if absent.

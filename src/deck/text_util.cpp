@@ -6,7 +6,8 @@ namespace mcdyna::deck {
 
 std::string upper(std::string_view s) {
   std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (char& c : out)
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return out;
 }
 
@@ -28,14 +29,16 @@ std::vector<std::string_view> split_whitespace(std::string_view s, std::size_t m
   std::vector<std::string_view> out;
   std::size_t i = 0;
   while (i < s.size()) {
-    while (i < s.size() && is_blank_char(s[i])) ++i;
+    while (i < s.size() && is_blank_char(s[i]))
+      ++i;
     if (i == s.size()) break;
     if (max_tokens != 0 && out.size() == max_tokens) {
       out.push_back(s.substr(i));
       break;
     }
     std::size_t j = i;
-    while (j < s.size() && !is_blank_char(s[j])) ++j;
+    while (j < s.size() && !is_blank_char(s[j]))
+      ++j;
     out.push_back(s.substr(i, j - i));
     i = j;
   }

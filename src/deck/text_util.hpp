@@ -6,16 +6,21 @@
 
 namespace mcdyna::deck {
 
-[[nodiscard]] inline bool is_blank_char(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+[[nodiscard]] inline bool is_blank_char(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 [[nodiscard]] inline std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank_char(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank_char(s.back())) s.remove_suffix(1);
+  while (!s.empty() && is_blank_char(s.front()))
+    s.remove_prefix(1);
+  while (!s.empty() && is_blank_char(s.back()))
+    s.remove_suffix(1);
   return s;
 }
 
 [[nodiscard]] inline std::string_view trim_right(std::string_view s) {
-  while (!s.empty() && (is_blank_char(s.back()) || s.back() == '\n')) s.remove_suffix(1);
+  while (!s.empty() && (is_blank_char(s.back()) || s.back() == '\n'))
+    s.remove_suffix(1);
   return s;
 }
 

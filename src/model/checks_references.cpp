@@ -91,8 +91,8 @@ void check_parts(const ModelDatabase& m, core::Diagnostics& diags) {
 // Element connectivity: part and nodes. Messages are capped per kind so that a deck with a
 // missing include does not print a million lines; the count stays exact.
 template <typename Element>
-void check_elements(const std::vector<Element>& elements, const ModelDatabase& m,
-                    const char* what, core::Diagnostics& diags) {
+void check_elements(const std::vector<Element>& elements, const ModelDatabase& m, const char* what,
+                    core::Diagnostics& diags) {
   std::size_t missing_nodes = 0, shown = 0;
   core::SourceLoc first_loc;
   for (const Element& e : elements) {
@@ -133,7 +133,8 @@ void check_sets(const ModelDatabase& m, core::Diagnostics& diags) {
     }
   }
   for (const PartSet& s : m.part_sets) {
-    for (Id p : s.parts) need(m.index.parts, p, s.loc, "part", fmt::format("part set {}", s.id), diags);
+    for (Id p : s.parts)
+      need(m.index.parts, p, s.loc, "part", fmt::format("part set {}", s.id), diags);
   }
   for (const SegmentSet& s : m.segment_sets) {
     int shown = 0;
@@ -152,16 +153,27 @@ void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactS
   const std::string user = fmt::format("contact {} side {}", c.id, name);
   const auto& ix = m.index;
   switch (side.type) {
-    case 0: need(ix.segment_sets, side.id, c.loc, "segment set", user, diags); break;
+    case 0:
+      need(ix.segment_sets, side.id, c.loc, "segment set", user, diags);
+      break;
     case 1:
       diags.error(c.loc, "{}: type 1 (shell element set) is not supported; use a part or part set",
                   user);
       break;
-    case 2: need(ix.part_sets, side.id, c.loc, "part set", user, diags); break;
-    case 3: need(ix.parts, side.id, c.loc, "part", user, diags); break;
-    case 4: need(ix.node_sets, side.id, c.loc, "node set", user, diags); break;
-    case 6: need(ix.part_sets, side.id, c.loc, "part set", user, diags); break;
-    default: break;  // 5 = all
+    case 2:
+      need(ix.part_sets, side.id, c.loc, "part set", user, diags);
+      break;
+    case 3:
+      need(ix.parts, side.id, c.loc, "part", user, diags);
+      break;
+    case 4:
+      need(ix.node_sets, side.id, c.loc, "node set", user, diags);
+      break;
+    case 6:
+      need(ix.part_sets, side.id, c.loc, "part set", user, diags);
+      break;
+    default:
+      break;  // 5 = all
   }
   need(ix.boxes, side.box, c.loc, "box", user, diags, true);
 }
@@ -180,14 +192,20 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const PrescribedMotion& p : m.prescribed_motions) {
     const std::string user = "*BOUNDARY_PRESCRIBED_MOTION";
     switch (p.target_kind) {
-      case MotionTarget::node: need(ix.nodes, p.target, p.loc, "node", user, diags); break;
-      case MotionTarget::node_set: need(ix.node_sets, p.target, p.loc, "node set", user, diags); break;
+      case MotionTarget::node:
+        need(ix.nodes, p.target, p.loc, "node", user, diags);
+        break;
+      case MotionTarget::node_set:
+        need(ix.node_sets, p.target, p.loc, "node set", user, diags);
+        break;
       case MotionTarget::rigid_part:
         if (need(ix.parts, p.target, p.loc, "part", user, diags)) {
           const Material* mat = m.material(m.part(p.target)->material);
           if (mat != nullptr && mat->kind != MaterialKind::rigid) {
-            diags.error(p.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not rigid "
-                        "(its material {} is not *MAT_RIGID)", p.target, mat->id);
+            diags.error(p.loc,
+                        "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not rigid "
+                        "(its material {} is not *MAT_RIGID)",
+                        p.target, mat->id);
           }
         }
         break;
@@ -203,7 +221,9 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
         need(ix.node_sets, v.exempted_set, v.loc, "node set", user, diags, true);
         need(ix.boxes, v.box, v.loc, "box", user, diags, true);
         break;
-      case InitialVelocityKind::per_node: need(ix.nodes, v.target, v.loc, "node", user, diags); break;
+      case InitialVelocityKind::per_node:
+        need(ix.nodes, v.target, v.loc, "node", user, diags);
+        break;
       case InitialVelocityKind::generation:
         if (v.target == 0) break;
         if (v.target_type == 1) need(ix.part_sets, v.target, v.loc, "part set", user, diags);
@@ -232,13 +252,14 @@ void check_outputs(const ModelDatabase& m, core::Diagnostics& diags) {
   }
   if (m.outputs.d3plot) {
     const D3plotRequest& d = *m.outputs.d3plot;
-    need(ix.curves, d.interval_curve, d.loc, "curve (LCDT)", "*DATABASE_BINARY_D3PLOT", diags, true);
+    need(ix.curves, d.interval_curve, d.loc, "curve (LCDT)", "*DATABASE_BINARY_D3PLOT", diags,
+         true);
     need(ix.part_sets, d.excluded_parts, d.loc, "part set (PSETID)", "*DATABASE_BINARY_D3PLOT",
          diags, true);
   }
   if (m.controls.time_step) {
-    need(ix.curves, m.controls.time_step->max_step_curve, m.controls.time_step->loc,
-         "curve (LCTM)", "*CONTROL_TIMESTEP", diags, true);
+    need(ix.curves, m.controls.time_step->max_step_curve, m.controls.time_step->loc, "curve (LCTM)",
+         "*CONTROL_TIMESTEP", diags, true);
   }
 }
 

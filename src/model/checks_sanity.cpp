@@ -16,7 +16,8 @@ struct PartUse {
 void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_elements) {
   if (!has_elements) return;
   if (!m.controls.termination) {
-    diags.error(core::SourceLoc{}, "the deck has no *CONTROL_TERMINATION: the end time is not "
+    diags.error(core::SourceLoc{},
+                "the deck has no *CONTROL_TERMINATION: the end time is not "
                 "defined");
     return;
   }
@@ -41,26 +42,31 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
                 s->id);
   }
   if (use.shells > 0 && s->kind != SectionKind::shell) {
-    diags.error(p.section_loc, "part {} has shell elements but section {} is a solid section",
-                p.id, s->id);
+    diags.error(p.section_loc, "part {} has shell elements but section {} is a solid section", p.id,
+                s->id);
   }
   if (use.shells > 0 && !rigid) {
-    diags.error(p.material_loc, "part {}: deformable shells are not supported; shell parts must "
-                "be *MAT_RIGID (rigid bodies, contact surfaces)", p.id);
+    diags.error(p.material_loc,
+                "part {}: deformable shells are not supported; shell parts must "
+                "be *MAT_RIGID (rigid bodies, contact surfaces)",
+                p.id);
   }
   if (s->kind == SectionKind::solid && !rigid && s->element_formulation != 1 &&
       s->element_formulation != 2) {
-    diags.error(p.section_loc, "part {}: solid ELFORM {} of section {} is not supported (1 "
-                "one-point hexahedron, 2 selectively reduced, 47 SPG)", p.id,
-                s->element_formulation, s->id);
+    diags.error(p.section_loc,
+                "part {}: solid ELFORM {} of section {} is not supported (1 "
+                "one-point hexahedron, 2 selectively reduced, 47 SPG)",
+                p.id, s->element_formulation, s->id);
   }
   if (s->kind == SectionKind::solid_spg && rigid) {
     diags.error(p.material_loc, "part {}: an SPG section cannot be rigid", p.id);
   }
   const bool solid = s->kind != SectionKind::shell;
   if (mat->kind == MaterialKind::johnson_cook && solid && p.eos == 0) {
-    diags.error(p.eos_loc, "part {}: *MAT_JOHNSON_COOK solids need an equation of state (EOSID), "
-                "as in LS-DYNA", p.id);
+    diags.error(p.eos_loc,
+                "part {}: *MAT_JOHNSON_COOK solids need an equation of state (EOSID), "
+                "as in LS-DYNA",
+                p.id);
   }
   if (p.eos != 0 && (rigid || mat->kind == MaterialKind::elastic)) {
     diags.warning(p.eos_loc, "part {}: EOSID {} is not used by material type of material {}", p.id,
@@ -78,17 +84,23 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
 void check_spg_section(const Section& s, core::Diagnostics& diags) {
   const SpgSettings& spg = s.spg;
   if (spg.stabilization != 3) {
-    diags.note(s.loc, "section {}: ITB = {} runs with the momentum-consistent smoothing of MC-SPG "
-               "(ITB = 3)", s.id, spg.stabilization);
+    diags.note(s.loc,
+               "section {}: ITB = {} runs with the momentum-consistent smoothing of MC-SPG "
+               "(ITB = 3)",
+               s.id, spg.stabilization);
   }
   if (spg.kernel_update == 2) {
-    diags.note(s.loc, "section {}: KERNEL = 2 (pseudo-Lagrangian) runs as KERNEL = 0 (updated "
-               "Lagrangian)", s.id);
+    diags.note(s.loc,
+               "section {}: KERNEL = 2 (pseudo-Lagrangian) runs as KERNEL = 0 (updated "
+               "Lagrangian)",
+               s.id);
   }
   const bool failure = spg.failure_strain < 1.0e10;
   if (failure && spg.damage_criterion != 1) {
-    diags.error(s.loc, "section {}: bond failure IDAM = {} is not supported (IDAM = 1: effective "
-                "plastic strain with STRETCH)", s.id, spg.damage_criterion);
+    diags.error(s.loc,
+                "section {}: bond failure IDAM = {} is not supported (IDAM = 1: effective "
+                "plastic strain with STRETCH)",
+                s.id, spg.damage_criterion);
   }
 }
 
@@ -127,7 +139,8 @@ void check_solid_geometry(const ModelDatabase& m, core::Diagnostics& diags) {
     if (!ok || det > 0.0) continue;
     if (bad == 0) first = e.loc;
     if (bad++ < 20) {
-      diags.error(e.loc, "solid element {} is {} (centre-Jacobian volume {:.3g}); check its node order",
+      diags.error(e.loc,
+                  "solid element {} is {} (centre-Jacobian volume {:.3g}); check its node order",
                   e.id, det < 0.0 ? "inverted" : "collapsed to zero volume", det / 64.0);
     }
   }
@@ -147,7 +160,8 @@ void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
     const auto i = m.index.parts.find(e.part);
     if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].shells;
   }
-  for (std::size_t i = 0; i < m.parts.size(); ++i) check_part(m, m.parts[i], use[i], diags);
+  for (std::size_t i = 0; i < m.parts.size(); ++i)
+    check_part(m, m.parts[i], use[i], diags);
   for (const Section& s : m.sections) {
     if (s.kind == SectionKind::solid_spg) check_spg_section(s, diags);
   }

@@ -26,12 +26,12 @@ struct Contact {
   Id id = 0;  ///< from the _ID card; 0 = numbered in deck order
   std::string heading;
   ContactKind kind = ContactKind::automatic_nodes_to_surface;
-  ContactSide a, b;  ///< A = slave, B = master
+  ContactSide a, b;                                                   ///< A = slave, B = master
   double static_friction = 0.0, dynamic_friction = 0.0, decay = 0.0;  ///< FS, FD, DC
-  double viscous_friction = 0.0, viscous_damping = 0.0;  ///< VC, VDC (% of critical)
+  double viscous_friction = 0.0, viscous_damping = 0.0;               ///< VC, VDC (% of critical)
   double birth = 0.0, death = 1.0e20;
   double penalty_scale_a = 1.0, penalty_scale_b = 1.0;  ///< SFSA, SFSB
-  double thickness_a = 0.0, thickness_b = 0.0;  ///< SAST, SBST
+  double thickness_a = 0.0, thickness_b = 0.0;          ///< SAST, SBST
   double friction_scale = 1.0, viscous_friction_scale = 1.0;
   int soft = 0;  ///< card A SOFT
   double soft_scale = 0.1;
@@ -75,14 +75,14 @@ enum class InitialVelocityKind { by_set, per_node, generation };
 
 struct InitialVelocity {
   InitialVelocityKind kind = InitialVelocityKind::by_set;
-  Id target = 0;  ///< node set (0 = all) / node / part set, part or node set (generation)
+  Id target = 0;        ///< node set (0 = all) / node / part set, part or node set (generation)
   Id exempted_set = 0;  ///< NSIDEX
   Id box = 0;
-  int target_type = 1;  ///< generation STYP: 1 part set, 2 part, 3 node set
-  Vec3 velocity{};      ///< length/time
+  int target_type = 1;      ///< generation STYP: 1 part set, 2 part, 3 node set
+  Vec3 velocity{};          ///< length/time
   Vec3 angular_velocity{};  ///< VXR.. (nodal rotations)
   Vec3 exempted_velocity{};
-  double omega = 0.0;       ///< generation: angular velocity about the axis (rad/time)
+  double omega = 0.0;  ///< generation: angular velocity about the axis (rad/time)
   Vec3 axis_point{}, axis_direction{};
   int irigid = 0;
   core::SourceLoc loc;

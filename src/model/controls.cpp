@@ -4,13 +4,20 @@ namespace mcdyna::model {
 
 const char* ascii_database_name(AsciiDatabase d) {
   switch (d) {
-    case AsciiDatabase::glstat: return "glstat";
-    case AsciiDatabase::matsum: return "matsum";
-    case AsciiDatabase::rcforc: return "rcforc";
-    case AsciiDatabase::nodout: return "nodout";
-    case AsciiDatabase::spcforc: return "spcforc";
-    case AsciiDatabase::bndout: return "bndout";
-    case AsciiDatabase::rwforc: return "rwforc";
+    case AsciiDatabase::glstat:
+      return "glstat";
+    case AsciiDatabase::matsum:
+      return "matsum";
+    case AsciiDatabase::rcforc:
+      return "rcforc";
+    case AsciiDatabase::nodout:
+      return "nodout";
+    case AsciiDatabase::spcforc:
+      return "spcforc";
+    case AsciiDatabase::bndout:
+      return "bndout";
+    case AsciiDatabase::rwforc:
+      return "rwforc";
   }
   return "?";
 }

@@ -9,8 +9,8 @@
 namespace mcdyna::model {
 
 struct Termination {
-  double end_time = 0.0;  ///< ENDTIM
-  int end_cycle = 0;      ///< ENDCYC (0 none)
+  double end_time = 0.0;         ///< ENDTIM
+  int end_cycle = 0;             ///< ENDCYC (0 none)
   double min_step_factor = 0.0;  ///< DTMIN (factor on initial dt)
   double energy_change_percent = 0.0, mass_change_percent = 1.0e8;
   int no_solution = 0;
@@ -18,25 +18,25 @@ struct Termination {
 };
 
 struct TimeStepControl {
-  double initial_step = 0.0;  ///< DTINIT (0 automatic)
-  double scale_factor = 0.9;  ///< TSSFAC
-  int shell_length_option = 0;  ///< ISDO
-  double shell_min_step = 0.0;  ///< TSLIMT
+  double initial_step = 0.0;       ///< DTINIT (0 automatic)
+  double scale_factor = 0.9;       ///< TSSFAC
+  int shell_length_option = 0;     ///< ISDO
+  double shell_min_step = 0.0;     ///< TSLIMT
   double mass_scaling_step = 0.0;  ///< DT2MS (negative: scale only elements below)
-  Id max_step_curve = 0;  ///< LCTM
+  Id max_step_curve = 0;           ///< LCTM
   int erode = 0;
   int mass_scaling_first_step = 0;  ///< MS1ST
   core::SourceLoc loc;
 };
 
 struct HourglassControl {
-  int type = 1;  ///< IHQ
+  int type = 1;              ///< IHQ
   double coefficient = 0.1;  ///< QH
   core::SourceLoc loc;
 };
 
 struct ContactControl {
-  double penalty_scale = 0.1;  ///< SLSFAC
+  double penalty_scale = 0.1;       ///< SLSFAC
   double rigid_wall_penalty = 0.0;  ///< RWPNAL
   int initial_penetration_check = 1;
   int shell_thickness = 0;
@@ -44,7 +44,7 @@ struct ContactControl {
   int thickness_change = 0;
   int orientation = 1;
   int eroding_mass = 0;
-  int bucket_interval = 0;  ///< NSBCS
+  int bucket_interval = 0;              ///< NSBCS
   double max_penetration_factor = 4.0;  ///< XPENE
   double default_static_friction = 0.0, default_dynamic_friction = 0.0;
   int ignore_penetration = 0;  ///< card 4 IGNORE
@@ -62,7 +62,7 @@ struct SolidControl {
 struct EnergyControl {
   int hourglass = 1;  ///< HGEN: 2 = compute hourglass energy
   int rigid_wall = 2;
-  int sliding = 1;    ///< SLNTEN: 2 = include sliding energy
+  int sliding = 1;  ///< SLNTEN: 2 = include sliding energy
   int rayleigh = 1;
   int initial_reference_geometry = 2;
   int material_split = 1;
@@ -113,7 +113,7 @@ struct D3plotRequest {
 
 struct HistoryNodes {
   bool is_set = false;
-  std::vector<Id> ids;  ///< node IDs or node set IDs
+  std::vector<Id> ids;                ///< node IDs or node set IDs
   std::vector<std::string> headings;  ///< _ID variant, parallel to ids
   core::SourceLoc loc;
 };

@@ -17,7 +17,7 @@ using Vec3 = std::array<double, 3>;
 
 struct Node {
   Id id = 0;
-  Vec3 position{};  ///< length
+  Vec3 position{};                          ///< length
   std::uint8_t translation_constraint = 0;  ///< TC code 0..7 (0 free, 7 x+y+z)
   std::uint8_t rotation_constraint = 0;     ///< RC code 0..7
   core::SourceLoc loc;
@@ -57,23 +57,23 @@ enum class SectionKind { solid, solid_spg, shell };
 /// *SECTION_SOLID_SPG cards 2 and 3 (keywords.md §2.6).
 struct SpgSettings {
   Vec3 support_scale{1.6, 1.6, 1.6};  ///< DX, DY, DZ: support size / nodal spacing (>= 1)
-  int kernel_function = 0;   ///< ISPLINE: 0 cubic box, 1 quadratic box, 2 cubic sphere
-  int kernel_update = 0;     ///< KERNEL: 0 updated Lagrangian, 1 Eulerian, 2 pseudo-Lagrangian
-  int smoothing_interval = 15;  ///< SMSTEP: steps between kernel/smoothing updates
+  int kernel_function = 0;            ///< ISPLINE: 0 cubic box, 1 quadratic box, 2 cubic sphere
+  int kernel_update = 0;          ///< KERNEL: 0 updated Lagrangian, 1 Eulerian, 2 pseudo-Lagrangian
+  int smoothing_interval = 15;    ///< SMSTEP: steps between kernel/smoothing updates
   double smoothing_scheme = 0.0;  ///< MSC (R13+) / SWTIME (R10)
-  int damage_criterion = 1;  ///< IDAM
-  double failure_strain = 1.0e11;  ///< FS (huge: no failure)
-  double failure_stretch = 1.0e10;  ///< STRETCH: critical bond stretch ratio
-  int stabilization = 3;     ///< ITB: 3 = MC-SPG
+  int damage_criterion = 1;       ///< IDAM
+  double failure_strain = 1.0e11;          ///< FS (huge: no failure)
+  double failure_stretch = 1.0e10;         ///< STRETCH: critical bond stretch ratio
+  int stabilization = 3;                   ///< ITB: 3 = MC-SPG
   double surface_quadrature_factor = 1.0;  ///< MSFAC
-  int self_contact = 0;      ///< ISC
-  Id box = 0;                ///< BOXID
-  double particle_damping = -0.001;  ///< PDAMP
+  int self_contact = 0;                    ///< ISC
+  Id box = 0;                              ///< BOXID
+  double particle_damping = -0.001;        ///< PDAMP
 };
 
 struct ShellSettings {
-  double shear_factor = 1.0;   ///< SHRF
-  int integration_points = 2;  ///< NIP
+  double shear_factor = 1.0;          ///< SHRF
+  int integration_points = 2;         ///< NIP
   std::array<double, 4> thickness{};  ///< T1..T4, length
 };
 
@@ -94,17 +94,17 @@ struct ElasticMaterial {
 
 struct PlasticKinematicMaterial {
   double youngs_modulus = 0.0, poisson_ratio = 0.0;
-  double yield_stress = 0.0, tangent_modulus = 0.0;  ///< stress
-  double hardening_mix = 0.0;  ///< BETA: 0 kinematic, 1 isotropic
+  double yield_stress = 0.0, tangent_modulus = 0.0;       ///< stress
+  double hardening_mix = 0.0;                             ///< BETA: 0 kinematic, 1 isotropic
   double cowper_symonds_c = 0.0, cowper_symonds_p = 0.0;  ///< SRC (1/time), SRP
-  double failure_strain = 0.0;  ///< FS: 0 none
-  double viscoplastic = 0.0;    ///< VP
+  double failure_strain = 0.0;                            ///< FS: 0 none
+  double viscoplastic = 0.0;                              ///< VP
 };
 
 struct PiecewiseLinearPlasticityMaterial {
   double youngs_modulus = 0.0, poisson_ratio = 0.0;
   double yield_stress = 0.0, tangent_modulus = 0.0;
-  double failure_strain = 1.0e21;  ///< FAIL
+  double failure_strain = 1.0e21;     ///< FAIL
   double min_time_step_delete = 0.0;  ///< TDEL
   double cowper_symonds_c = 0.0, cowper_symonds_p = 0.0;
   Id stress_strain_curve = 0;  ///< LCSS
@@ -118,26 +118,26 @@ struct JohnsonCookMaterial {
   double min_shell_time_step = 0.0;
   double viscoplastic = 0.0;
   int rate_option = 0;
-  double a = 0.0, b = 0.0, n = 0.0, c = 0.0, m = 0.0;  ///< A, B (stress), N, C, M
+  double a = 0.0, b = 0.0, n = 0.0, c = 0.0, m = 0.0;     ///< A, B (stress), N, C, M
   double melt_temperature = 0.0, room_temperature = 0.0;  ///< TM, TR
-  double reference_strain_rate = 1.0;  ///< EPSO, 1/time
-  double specific_heat = 0.0;  ///< CP
-  double pressure_cutoff = 0.0;  ///< PC (<= 0)
+  double reference_strain_rate = 1.0;                     ///< EPSO, 1/time
+  double specific_heat = 0.0;                             ///< CP
+  double pressure_cutoff = 0.0;                           ///< PC (<= 0)
   double spall_type = 2.0;
-  int iterate_plasticity = 0;  ///< IT
+  int iterate_plasticity = 0;      ///< IT
   std::array<double, 5> damage{};  ///< D1..D5
   double c2 = 0.0;
-  double erode_flag = 0.0;  ///< EROD: 0 erosion allowed
+  double erode_flag = 0.0;             ///< EROD: 0 erosion allowed
   double min_failure_strain = 1.0e-6;  ///< EFMIN
-  int damage_model = 0;  ///< DMODEL
+  int damage_model = 0;                ///< DMODEL
 };
 
 struct RigidMaterial {
   double youngs_modulus = 0.0, poisson_ratio = 0.0;  ///< for contact stiffness
-  int constraint_option = 0;  ///< CMO
-  int translation_constraint = 0;  ///< CON1
-  int rotation_constraint = 0;     ///< CON2
-  Id constraint_node = 0;  ///< SPCNID
+  int constraint_option = 0;                         ///< CMO
+  int translation_constraint = 0;                    ///< CON1
+  int rotation_constraint = 0;                       ///< CON2
+  Id constraint_node = 0;                            ///< SPCNID
   Vec3 constraint_point{};
   int local_output = 0;  ///< BNDLCO
 };
@@ -175,10 +175,10 @@ struct Eos {
   Id id = 0;
   std::string title;
   EosKind kind = EosKind::linear_polynomial;
-  std::array<double, 7> c{};  ///< linear polynomial C0..C6
-  double sound_speed = 0.0;   ///< Grüneisen C
-  std::array<double, 3> s{};  ///< S1..S3
-  double gamma0 = 0.0, volume_correction = 0.0;  ///< GAMMA0, A
+  std::array<double, 7> c{};                                   ///< linear polynomial C0..C6
+  double sound_speed = 0.0;                                    ///< Grüneisen C
+  std::array<double, 3> s{};                                   ///< S1..S3
+  double gamma0 = 0.0, volume_correction = 0.0;                ///< GAMMA0, A
   double initial_energy = 0.0, initial_relative_volume = 1.0;  ///< E0, V0
   core::SourceLoc loc;
 };
@@ -186,8 +186,8 @@ struct Eos {
 struct Hourglass {
   Id id = 0;
   std::string title;
-  int type = 1;  ///< IHQ
-  double coefficient = 0.1;  ///< QM
+  int type = 1;                                                         ///< IHQ
+  double coefficient = 0.1;                                             ///< QM
   double quadratic_bulk_viscosity = 1.5, linear_bulk_viscosity = 0.06;  ///< Q1, Q2
   double qb = 0.1, qw = 0.1;
   core::SourceLoc loc;
@@ -196,10 +196,10 @@ struct Hourglass {
 struct Curve {
   Id id = 0;
   std::string title;
-  int dynamic_relaxation = 0;  ///< SIDR
-  double abscissa_scale = 1.0, ordinate_scale = 1.0;  ///< SFA, SFO
+  int dynamic_relaxation = 0;                           ///< SIDR
+  double abscissa_scale = 1.0, ordinate_scale = 1.0;    ///< SFA, SFO
   double abscissa_offset = 0.0, ordinate_offset = 0.0;  ///< OFFA, OFFO
-  std::vector<std::pair<double, double>> points;  ///< as written (scales not applied)
+  std::vector<std::pair<double, double>> points;        ///< as written (scales not applied)
   core::SourceLoc loc;
 };
 

@@ -20,7 +20,8 @@ class IdIndex {
   std::vector<std::pair<std::size_t, std::size_t>> build(const std::vector<Entity>& entities) {
     std::vector<Id> ids;
     ids.reserve(entities.size());
-    for (const Entity& e : entities) ids.push_back(e.id);
+    for (const Entity& e : entities)
+      ids.push_back(e.id);
     return build_ids(ids);
   }
   std::vector<std::pair<std::size_t, std::size_t>> build_ids(const std::vector<Id>& ids);

@@ -1,9 +1,9 @@
 // The command line as users run it: exit codes 0 / 1 / 2, LS-DYNA style i=, reports.
 #include <doctest/doctest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
-#include <sys/wait.h>
 
 #include "test_support.hpp"
 
@@ -21,7 +21,8 @@ Run run_mcdyna(const std::string& args) {
   REQUIRE(pipe != nullptr);
   std::array<char, 4096> buf{};
   std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0)
+    r.output.append(buf.data(), n);
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return r;
@@ -61,10 +62,11 @@ TEST_CASE("deck errors exit 1; usage errors exit 2") {
 
 TEST_CASE("unsupported physics fails check unless --allow-unsupported; no-effect keywords pass") {
   mcdyna::test::TempDir d;
-  const std::string body =
-                           "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
-  const auto deck = d.write("deck.k", "*KEYWORD\n*CONTROL_MPP_IO_NODUMP\n*DATABASE_ELOUT\n0.1\n"
-                                      "*LOAD_BODY_Z\n1\n" + body);
+  const std::string body = "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
+  const auto deck = d.write("deck.k",
+                            "*KEYWORD\n*CONTROL_MPP_IO_NODUMP\n*DATABASE_ELOUT\n0.1\n"
+                            "*LOAD_BODY_Z\n1\n" +
+                                body);
   const Run strict = run_mcdyna("check " + deck.string());
   CHECK(strict.exit_code == 1);
   CHECK(strict.output.find("UNSUPPORTED        *LOAD_BODY_Z (deck.k: 5)") != std::string::npos);

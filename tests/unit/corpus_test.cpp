@@ -43,10 +43,11 @@ TEST_CASE("corpus: every public deck is read, built and checked; every keyword i
     }
     if (!l->diags.has_errors()) ++clean;
   }
-  for (const auto& [name, s] : distinct) ++distinct_by_class[s];
+  for (const auto& [name, s] : distinct)
+    ++distinct_by_class[s];
   MESSAGE("corpus: ", files.size(), " decks, ", clean, " without deck errors, ", keywords,
-          " keyword blocks, ", distinct.size(), " distinct keywords: ",
-          distinct_by_class[deck::Support::supported], " supported, ",
+          " keyword blocks, ", distinct.size(),
+          " distinct keywords: ", distinct_by_class[deck::Support::supported], " supported, ",
           distinct_by_class[deck::Support::no_effect], " read without effect, ",
           distinct_by_class[deck::Support::output_only], " unsupported output, ",
           distinct_by_class[deck::Support::unsupported], " unsupported");
@@ -79,9 +80,10 @@ TEST_CASE("corpus spot check: material constants in the projectile deck") {
 }
 
 TEST_CASE("corpus spot check: parameters through includes, expressions and relative paths") {
-  auto l = test::load_file(kCorpus / "mjhmilla/Millard2024VEXATMuscleLSDYNA/example/MPP_R931/"
-                                     "umat43/active_passive_force_length/active_force_length_06/"
-                                     "active_force_length_06.k");
+  auto l = test::load_file(kCorpus /
+                           "mjhmilla/Millard2024VEXATMuscleLSDYNA/example/MPP_R931/"
+                           "umat43/active_passive_force_length/active_force_length_06/"
+                           "active_force_length_06.k");
   CHECK_FALSE(l->has_message("not defined"));
   CHECK_FALSE(l->has_message("not found"));
   const auto& t = l->model().controls.termination;
@@ -96,6 +98,7 @@ TEST_CASE("corpus: decks with known upstream defects are reported, not crashed o
   auto missing = test::load_file(kCorpus / "Umesh27/VEOL_GUI/input.k");
   CHECK(missing->has_message("include file \"mesh.k\" not found"));
   auto columns = test::load_file(kCorpus / "cxh-1123/LS-DYNA-ablation/test.k");
-  CHECK(columns->has_message("*CONTROL_TERMINATION card 1 field ENDTIM: expected a real number, "
-                             "got \"1.0E-\""));
+  CHECK(
+      columns->has_message("*CONTROL_TERMINATION card 1 field ENDTIM: expected a real number, "
+                           "got \"1.0E-\""));
 }

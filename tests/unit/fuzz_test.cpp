@@ -40,19 +40,28 @@ TEST_CASE("mutations of a valid deck: truncation, garbage bytes, huge numbers, d
     std::string text = base;
     std::uniform_int_distribution<std::size_t> pos(0, text.size() - 1);
     switch (trial % 6) {
-      case 0: text.resize(pos(rng)); break;  // truncated anywhere, mid-line included
+      case 0:
+        text.resize(pos(rng));
+        break;  // truncated anywhere, mid-line included
       case 1:
-        for (int k = 0; k < 20; ++k) text[pos(rng)] = static_cast<char>(rng() & 0xff);
+        for (int k = 0; k < 20; ++k)
+          text[pos(rng)] = static_cast<char>(rng() & 0xff);
         break;
-      case 2: text.insert(pos(rng), "1.0E+999999999999999999999999999999"); break;
+      case 2:
+        text.insert(pos(rng), "1.0E+999999999999999999999999999999");
+        break;
       case 3: {
         const std::size_t a = pos(rng);
         const std::size_t b = text.find('\n', a);
         if (b != std::string::npos) text.erase(a, b - a + 1);
         break;
       }
-      case 4: text.insert(pos(rng), std::string(5000, 'x')); break;
-      case 5: text.insert(pos(rng), "\n&undefined_parameter,-&x,&,--&y\n*\n*UNKNOWN_KEYWORD_Z\n"); break;
+      case 4:
+        text.insert(pos(rng), std::string(5000, 'x'));
+        break;
+      case 5:
+        text.insert(pos(rng), "\n&undefined_parameter,-&x,&,--&y\n*\n*UNKNOWN_KEYWORD_Z\n");
+        break;
     }
     expect_clean_failure(text, "mutation");
   }
@@ -63,13 +72,15 @@ TEST_CASE("hostile inputs: empty, binary, NUL bytes, one huge line, keyword-only
   expect_clean_failure(std::string("\0\0\0*NODE\n\0\0", 11), "NUL bytes");
   std::string binary(4096, '\0');
   std::mt19937 rng(7);
-  for (char& c : binary) c = static_cast<char>(rng() & 0xff);
+  for (char& c : binary)
+    c = static_cast<char>(rng() & 0xff);
   expect_clean_failure(binary, "binary");
   expect_clean_failure("*NODE\n" + std::string(200000, '9') + "\n", "huge line");
   expect_clean_failure("*\n*+\n*-\n*%\n*KEYWORD LONG=Q I10=Z\n", "bare keywords");
   expect_clean_failure("*ELEMENT_SOLID\n1\n", "element without its node line");
   expect_clean_failure("*PART\nonly a heading\n", "part without card 1");
-  expect_clean_failure("*PARAMETER_EXPRESSION\nR x " + std::string(500, '(') + "\n", "deep nesting");
+  expect_clean_failure("*PARAMETER_EXPRESSION\nR x " + std::string(500, '(') + "\n",
+                       "deep nesting");
   expect_clean_failure("*PARAMETER\nQ bad 1\n*PARAMETER_DUPLICATION\nxx\n", "bad parameter");
   expect_clean_failure("*SET_NODE_LIST_GENERATE\n1\n1,999999999999\n", "huge generate range");
   expect_clean_failure("*INCLUDE\n/dev/null\n/\n.\n\n +\n", "odd include names");

@@ -71,20 +71,22 @@ TEST_CASE("inverted and collapsed hexahedra are reported; a degenerate tetrahedr
 }
 
 TEST_CASE("what mcdyna cannot run is named: deformable shells, ELFORM, unsupported options") {
-  auto l = load_text(std::string(kCube) +
-                         "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SHELL\n1\n1.0\n*SECTION_SOLID\n2,16\n"
-                         "*PART\ns\n1,1,1\n*PART\nt\n2,2,1\n"
-                         "*ELEMENT_SHELL\n1,1,1,2,3,4\n*ELEMENT_SOLID\n2,2\n1,2,3,4,5,6,7,8\n",
-                     true);
+  auto l =
+      load_text(std::string(kCube) +
+                    "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SHELL\n1\n1.0\n*SECTION_SOLID\n2,16\n"
+                    "*PART\ns\n1,1,1\n*PART\nt\n2,2,1\n"
+                    "*ELEMENT_SHELL\n1,1,1,2,3,4\n*ELEMENT_SOLID\n2,2\n1,2,3,4,5,6,7,8\n",
+                true);
   CHECK(l->has_message("part 1: deformable shells are not supported"));
   CHECK(l->has_message("solid ELFORM 16 of section 2 is not supported"));
 }
 
 TEST_CASE("no *CONTROL_TERMINATION in a deck with elements is an error") {
-  auto l = load_text("*NODE\n1\n2,1\n3,1,1\n4,0,1\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
-                     "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SOLID\n1\n*PART\np\n1,1,1\n"
-                     "*ELEMENT_SOLID\n1,1\n1,2,3,4,5,6,7,8\n",
-                     true);
+  auto l = load_text(
+      "*NODE\n1\n2,1\n3,1,1\n4,0,1\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+      "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SOLID\n1\n*PART\np\n1,1,1\n"
+      "*ELEMENT_SOLID\n1,1\n1,2,3,4,5,6,7,8\n",
+      true);
   CHECK(l->has_message("the deck has no *CONTROL_TERMINATION"));
   CHECK(l->diags.error_count() == 1);
 }

@@ -113,7 +113,8 @@ TEST_CASE("LONG=Y widens fields to 20 columns; '-' suffix restores standard form
   auto l = load_text(
       "*KEYWORD LONG=Y\n"
       "*NODE\n"
-      "                   5                 1.5                 2.5                 3.5                   0                   0\n"
+      "                   5                 1.5                 2.5                 3.5            "
+      "       0                   0\n"
       "*MAT_ELASTIC -\n"
       "         1    7.8E-9  210000.0       0.3\n"
       "*END\n");

@@ -28,9 +28,9 @@ TEST_CASE("*INCLUDE_PATH and *INCLUDE_PATH_RELATIVE are searched") {
   TempDir d;
   d.write("lib/mat.k", "*MAT_ELASTIC\n         4    7.8E-9  210000.0       0.3\n");
   d.write("abs_lib/curve.k", "*DEFINE_CURVE\n         9\n0.0,0.0\n1.0,1.0\n");
-  const auto main = d.write("deck/main.k", "*INCLUDE_PATH_RELATIVE\n../lib\n*INCLUDE_PATH\n" +
-                                               (d.path() / "abs_lib").string() +
-                                               "\n*INCLUDE\nmat.k\ncurve.k\n");
+  const auto main =
+      d.write("deck/main.k", "*INCLUDE_PATH_RELATIVE\n../lib\n*INCLUDE_PATH\n" +
+                                 (d.path() / "abs_lib").string() + "\n*INCLUDE\nmat.k\ncurve.k\n");
   auto l = load_file(main);
   CHECK_MESSAGE(!l->diags.has_errors(), l->messages());
   CHECK(l->model().materials.size() == 1);
@@ -109,11 +109,13 @@ TEST_CASE("*PARAMETER_EXPRESSION errors: unknown names, self reference, division
 TEST_CASE("*PARAMETER_LOCAL is visible in its file and its includes, not in parent or siblings") {
   TempDir d;
   d.write("child.k", "*SECTION_SOLID\n        20  &loc\n");
-  d.write("with_local.k", "*PARAMETER_LOCAL\nRloc               2.0\n*INCLUDE\nchild.k\n"
-                          "*SECTION_SOLID\n        21  &loc\n");
+  d.write("with_local.k",
+          "*PARAMETER_LOCAL\nRloc               2.0\n*INCLUDE\nchild.k\n"
+          "*SECTION_SOLID\n        21  &loc\n");
   d.write("sibling.k", "*SECTION_SOLID\n        30  &loc\n");
-  auto l = load_file(d.write("main.k", "*INCLUDE\nwith_local.k\nsibling.k\n"
-                                       "*SECTION_SOLID\n        40  &loc\n"));
+  auto l = load_file(d.write("main.k",
+                             "*INCLUDE\nwith_local.k\nsibling.k\n"
+                             "*SECTION_SOLID\n        40  &loc\n"));
   const auto& s = l->model().sections;
   REQUIRE(s.size() == 4);
   CHECK(s[0].element_formulation == 2);
@@ -139,17 +141,20 @@ TEST_CASE("duplicate parameters follow *PARAMETER_DUPLICATION (default: warn, ke
   auto keep = load_text("*PARAMETER\nR x              1.0\nR x              2.0\n");
   CHECK(keep->deck.parameters.lookup("x", 0)->number == 1.0);
   CHECK(keep->diags.warning_count() == 1);
-  auto take = load_text("*PARAMETER_DUPLICATION\n         4\n*PARAMETER\nR x              1.0\n"
-                        "R x              2.0\n");
+  auto take = load_text(
+      "*PARAMETER_DUPLICATION\n         4\n*PARAMETER\nR x              1.0\n"
+      "R x              2.0\n");
   CHECK(take->deck.parameters.lookup("x", 0)->number == 2.0);
   CHECK(take->diags.warning_count() == 0);
-  auto error = load_text("*PARAMETER_DUPLICATION\n3\n*PARAMETER\nR x              1.0\nR x              2.0\n");
+  auto error = load_text(
+      "*PARAMETER_DUPLICATION\n3\n*PARAMETER\nR x              1.0\nR x              2.0\n");
   CHECK(error->has_message("parameter X is defined twice"));
 }
 
 TEST_CASE("parameter of the wrong kind for a field") {
-  auto l = load_text("*PARAMETER\nR half           0.5C name        abc\n"
-                     "*SECTION_SOLID\n     &half\n*NODE\n       1   &name\n");
+  auto l = load_text(
+      "*PARAMETER\nR half           0.5C name        abc\n"
+      "*SECTION_SOLID\n     &half\n*NODE\n       1   &name\n");
   CHECK(l->has_message("parameter &half = 0.5 is not an integer"));
   CHECK(l->has_message("parameter &name is text (\"abc\"), expected a real number"));
 }

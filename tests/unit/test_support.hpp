@@ -2,12 +2,12 @@
 // Helpers for tests: temporary deck files and one-call deck reading.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
-#include <unistd.h>
 
 #include "core/diagnostics.hpp"
 #include "deck/build_model.hpp"
@@ -58,7 +58,8 @@ struct Loaded {
   }
   [[nodiscard]] std::string messages() const {
     std::string s;
-    for (const auto& d : diags.all()) s += core::format_diagnostic(d, deck.files);
+    for (const auto& d : diags.all())
+      s += core::format_diagnostic(d, deck.files);
     return s;
   }
 };

@@ -17,11 +17,14 @@ void boundary_spc(KeywordRecord& r, model::ModelDatabase& m) {
     s.target = row.integer("NID");
     s.coordinate_system = row.integer("CID");
     const int dx = row.index("DOFX");
-    for (int k = 0; k < 6; ++k) s.fixed[k] = row.integer(dx + k) != 0;
+    for (int k = 0; k < 6; ++k)
+      s.fixed[k] = row.integer(dx + k) != 0;
     s.loc = row.loc();
     if (s.coordinate_system != 0) {
-      r.diags().error(row.loc("CID"), "{}: local coordinate system CID = {} is not supported "
-                      "(global directions only)", r.display_name(), s.coordinate_system);
+      r.diags().error(row.loc("CID"),
+                      "{}: local coordinate system CID = {} is not supported "
+                      "(global directions only)",
+                      r.display_name(), s.coordinate_system);
     }
     m.spcs.push_back(s);
   }
@@ -30,11 +33,10 @@ void boundary_spc(KeywordRecord& r, model::ModelDatabase& m) {
 void boundary_prescribed_motion(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& id = r.card("id");
   const std::string& name = r.schema().name;
-  const model::MotionTarget target = name == "BOUNDARY_PRESCRIBED_MOTION_SET"
-                                         ? model::MotionTarget::node_set
-                                     : name == "BOUNDARY_PRESCRIBED_MOTION_RIGID"
-                                         ? model::MotionTarget::rigid_part
-                                         : model::MotionTarget::node;
+  const model::MotionTarget target =
+      name == "BOUNDARY_PRESCRIBED_MOTION_SET"     ? model::MotionTarget::node_set
+      : name == "BOUNDARY_PRESCRIBED_MOTION_RIGID" ? model::MotionTarget::rigid_part
+                                                   : model::MotionTarget::node;
   Group g;
   while (r.next_group(g)) {
     const Row& c1 = g.rows.front();
@@ -74,8 +76,10 @@ void boundary_prescribed_motion(KeywordRecord& r, model::ModelDatabase& m) {
                       r.display_name());
     }
     if (p.kind == 3 || p.kind == 4) {
-      r.diags().error(c1.loc("VAD"), "{}: VAD = {} is not supported (0 velocity, 1 acceleration, "
-                      "2 displacement)", r.display_name(), p.kind);
+      r.diags().error(c1.loc("VAD"),
+                      "{}: VAD = {} is not supported (0 velocity, 1 acceleration, "
+                      "2 displacement)",
+                      r.display_name(), p.kind);
     }
     if (p.death <= p.birth) {
       r.diags().error(c1.loc("DEATH"), "{}: DEATH = {} is not after BIRTH = {}", r.display_name(),
@@ -140,18 +144,23 @@ void initial_velocity_generation(KeywordRecord& r, model::ModelDatabase& m) {
     v.loc = c1->loc();
     const double len = std::hypot(v.axis_direction[0], v.axis_direction[1], v.axis_direction[2]);
     if (v.axis_direction[0] == -999.0) {
-      r.diags().error(c2->loc("NX"), "*INITIAL_VELOCITY_GENERATION: NX = -999 (axis by two nodes) "
+      r.diags().error(c2->loc("NX"),
+                      "*INITIAL_VELOCITY_GENERATION: NX = -999 (axis by two nodes) "
                       "is not supported");
     } else if (v.omega != 0.0 && len == 0.0) {
-      r.diags().error(c2->loc("NX"), "*INITIAL_VELOCITY_GENERATION: OMEGA = {} needs a rotation "
-                      "axis (NX, NY, NZ)", v.omega);
+      r.diags().error(c2->loc("NX"),
+                      "*INITIAL_VELOCITY_GENERATION: OMEGA = {} needs a rotation "
+                      "axis (NX, NY, NZ)",
+                      v.omega);
     }
     if (c1->integer("ICID") != 0) {
-      r.diags().error(c1->loc("ICID"), "*INITIAL_VELOCITY_GENERATION: local system ICID is not "
+      r.diags().error(c1->loc("ICID"),
+                      "*INITIAL_VELOCITY_GENERATION: local system ICID is not "
                       "supported");
     }
     if (c2->integer("PHASE") != 0) {
-      r.diags().error(c2->loc("PHASE"), "*INITIAL_VELOCITY_GENERATION: PHASE = 1 (after dynamic "
+      r.diags().error(c2->loc("PHASE"),
+                      "*INITIAL_VELOCITY_GENERATION: PHASE = 1 (after dynamic "
                       "relaxation) is not supported");
     }
     m.initial_velocities.push_back(v);

@@ -49,12 +49,16 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
   c.loc = c1.loc();
   const bool single = c.kind == model::ContactKind::automatic_single_surface;
   if (c.a.type == 7 || c.b.type == 7) {
-    r.diags().error(c1.loc(c.a.type == 7 ? "SURFATYP" : "SURFBTYP"), "{}: type 7 (*SET_PART_TREE "
-                    "branch) is not supported", r.display_name());
+    r.diags().error(c1.loc(c.a.type == 7 ? "SURFATYP" : "SURFBTYP"),
+                    "{}: type 7 (*SET_PART_TREE "
+                    "branch) is not supported",
+                    r.display_name());
   }
   if (!single && c.b.type == 4) {
-    r.diags().error(c1.loc("SURFBTYP"), "{}: side B must be a surface (segment set, shell set, "
-                    "part or part set), not a node set", r.display_name());
+    r.diags().error(c1.loc("SURFBTYP"),
+                    "{}: side B must be a surface (segment set, shell set, "
+                    "part or part set), not a node set",
+                    r.display_name());
   }
   if (c.static_friction == -1.0) {
     r.diags().error(c2.loc("FS"), "{}: FS = -1 (*PART_CONTACT friction) is not supported",
@@ -64,8 +68,10 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
                     c.static_friction);
   }
   if (c.soft == 2 || c.soft == 4 || c.soft == 6) {
-    r.diags().error(ca.loc("SOFT"), "{}: SOFT = {} is not supported (0 standard penalty, 1 soft "
-                    "constraint)", r.display_name(), c.soft);
+    r.diags().error(ca.loc("SOFT"),
+                    "{}: SOFT = {} is not supported (0 standard penalty, 1 soft "
+                    "constraint)",
+                    r.display_name(), c.soft);
   }
   if (!single && c.b.type != 5 && c.b.id == 0) {
     r.diags().error(c1.loc("SURFB"), "{}: side B (SURFB) is not given", r.display_name());

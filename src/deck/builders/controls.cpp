@@ -29,11 +29,14 @@ void control_timestep(KeywordRecord& r, model::ModelDatabase& m) {
   t.mass_scaling_first_step = static_cast<int>(c.integer("MS1ST"));
   t.loc = c.loc();
   if (t.scale_factor < 0.0) {
-    r.diags().error(c.loc("TSSFAC"), "*CONTROL_TIMESTEP: TSSFAC < 0 (scale factor from a curve) "
+    r.diags().error(c.loc("TSSFAC"),
+                    "*CONTROL_TIMESTEP: TSSFAC < 0 (scale factor from a curve) "
                     "is not supported");
   } else if (t.scale_factor > 1.0) {
-    r.diags().warning(c.loc("TSSFAC"), "*CONTROL_TIMESTEP: TSSFAC = {} exceeds 1; the explicit "
-                      "step will exceed the stable step", t.scale_factor);
+    r.diags().warning(c.loc("TSSFAC"),
+                      "*CONTROL_TIMESTEP: TSSFAC = {} exceeds 1; the explicit "
+                      "step will exceed the stable step",
+                      t.scale_factor);
   }
   set_once(m.controls.time_step, t, r);
 }

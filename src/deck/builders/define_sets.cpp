@@ -27,8 +27,10 @@ void define_curve(KeywordRecord& r, model::ModelDatabase& m) {
     const Row& p = g.rows.front();
     const double a = p.real("A");
     if (!c.points.empty() && a < c.points.back().first) {  // equal abscissas make a step
-      r.diags().error(p.loc("A"), "*DEFINE_CURVE {}: abscissa {} decreases (previous {} at "
-                      "line {})", c.id, a, c.points.back().first, previous.line);
+      r.diags().error(p.loc("A"),
+                      "*DEFINE_CURVE {}: abscissa {} decreases (previous {} at "
+                      "line {})",
+                      c.id, a, c.points.back().first, previous.line);
     }
     c.points.emplace_back(a, p.real("O"));
     previous = p.loc();
@@ -112,11 +114,14 @@ void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
       const model::Id begin = row.integer(b1 + 2 * k), end = row.integer(b1 + 2 * k + 1);
       if (begin == 0 && end == 0) continue;
       if (end < begin || end - begin > kMaxGenerated) {
-        r.diags().error(row.loc(b1 + 2 * k), "*SET_NODE_LIST_GENERATE {}: range {}..{} is not a "
-                        "valid increasing range", s.id, begin, end);
+        r.diags().error(row.loc(b1 + 2 * k),
+                        "*SET_NODE_LIST_GENERATE {}: range {}..{} is not a "
+                        "valid increasing range",
+                        s.id, begin, end);
         continue;
       }
-      for (model::Id n = begin; n <= end; ++n) s.nodes.push_back(n);
+      for (model::Id n = begin; n <= end; ++n)
+        s.nodes.push_back(n);
     }
   }
   m.node_sets.push_back(std::move(s));

@@ -11,7 +11,8 @@ void eos_linear_polynomial(KeywordRecord& r, model::ModelDatabase& m) {
   e.title = title_of(r);
   e.kind = model::EosKind::linear_polynomial;
   const int c0 = c1.index("C0");
-  for (int k = 0; k < 7; ++k) e.c[k] = c1.real(c0 + k);
+  for (int k = 0; k < 7; ++k)
+    e.c[k] = c1.real(c0 + k);
   e.initial_energy = c2.real("E0");
   e.initial_relative_volume = c2.real("V0");
   e.loc = c1.loc();
@@ -37,8 +38,10 @@ void eos_gruneisen(KeywordRecord& r, model::ModelDatabase& m) {
   e.initial_relative_volume = c2.real("V0");
   e.loc = c1.loc();
   if (c2.integer("LCID") != 0) {
-    r.diags().error(c2.loc("LCID"), "*EOS_GRUNEISEN {}: energy deposition curve LCID is not "
-                    "supported", e.id);
+    r.diags().error(c2.loc("LCID"),
+                    "*EOS_GRUNEISEN {}: energy deposition curve LCID is not "
+                    "supported",
+                    e.id);
   }
   m.equations_of_state.push_back(std::move(e));
 }

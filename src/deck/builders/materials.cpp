@@ -107,24 +107,34 @@ void mat_johnson_cook(KeywordRecord& r, model::ModelDatabase& m) {
   jc.damage_model = static_cast<int>(c4.integer("DMODEL"));
   const bool thermal = jc.m != 0.0 || !c2.blank("TM");
   if (thermal && !(jc.melt_temperature > jc.room_temperature)) {
-    r.diags().error(c2.loc("TM"), "*MAT_JOHNSON_COOK {}: melt temperature TM = {} must exceed "
-                    "room temperature TR = {}", mat.id, jc.melt_temperature, jc.room_temperature);
+    r.diags().error(c2.loc("TM"),
+                    "*MAT_JOHNSON_COOK {}: melt temperature TM = {} must exceed "
+                    "room temperature TR = {}",
+                    mat.id, jc.melt_temperature, jc.room_temperature);
   }
   if (jc.c != 0.0 && !(jc.reference_strain_rate > 0.0)) {
-    r.diags().error(c2.loc("EPSO"), "*MAT_JOHNSON_COOK {}: C = {} needs a reference strain rate "
-                    "EPSO > 0 in the deck's time unit", mat.id, jc.c);
+    r.diags().error(c2.loc("EPSO"),
+                    "*MAT_JOHNSON_COOK {}: C = {} needs a reference strain rate "
+                    "EPSO > 0 in the deck's time unit",
+                    mat.id, jc.c);
   }
   if (jc.a < 0.0) {
-    r.diags().error(c2.loc("A"), "*MAT_JOHNSON_COOK {}: A < 0 (strain-hardening curve) is not "
-                    "supported", mat.id);
+    r.diags().error(c2.loc("A"),
+                    "*MAT_JOHNSON_COOK {}: A < 0 (strain-hardening curve) is not "
+                    "supported",
+                    mat.id);
   }
   if (jc.rate_option != 0) {
-    r.diags().error(c1.loc("RATEOP"), "*MAT_JOHNSON_COOK {}: RATEOP = {} is not supported (only "
-                    "0, the log-linear Johnson-Cook rate term)", mat.id, jc.rate_option);
+    r.diags().error(c1.loc("RATEOP"),
+                    "*MAT_JOHNSON_COOK {}: RATEOP = {} is not supported (only "
+                    "0, the log-linear Johnson-Cook rate term)",
+                    mat.id, jc.rate_option);
   }
   if (jc.damage_model != 0) {
-    r.diags().error(c4.loc("DMODEL"), "*MAT_JOHNSON_COOK {}: DMODEL = {} is not supported (only 0, "
-                    "Johnson-Cook damage)", mat.id, jc.damage_model);
+    r.diags().error(c4.loc("DMODEL"),
+                    "*MAT_JOHNSON_COOK {}: DMODEL = {} is not supported (only 0, "
+                    "Johnson-Cook damage)",
+                    mat.id, jc.damage_model);
   }
   m.materials.push_back(std::move(mat));
 }
@@ -148,13 +158,17 @@ void mat_rigid(KeywordRecord& r, model::ModelDatabase& m) {
     for (const char* f : {"CON1", "CON2"}) {
       const auto code = c2.integer(f);
       if (code < 0 || code > 7) {
-        r.diags().error(c2.loc(f), "*MAT_RIGID {}: {} = {} must be a constraint code 0..7 when "
-                        "CMO > 0", mat.id, f, code);
+        r.diags().error(c2.loc(f),
+                        "*MAT_RIGID {}: {} = {} must be a constraint code 0..7 when "
+                        "CMO > 0",
+                        mat.id, f, code);
       }
     }
   } else if (rb.constraint_option < 0) {
-    r.diags().error(c2.loc("CMO"), "*MAT_RIGID {}: CMO < 0 (local SPC constraints) is not "
-                    "supported; use CMO = 1 with global codes", mat.id);
+    r.diags().error(c2.loc("CMO"),
+                    "*MAT_RIGID {}: CMO < 0 (local SPC constraints) is not "
+                    "supported; use CMO = 1 with global codes",
+                    mat.id);
   }
   m.materials.push_back(std::move(mat));
 }
@@ -185,21 +199,28 @@ void mat_piecewise_linear_plasticity(KeywordRecord& r, model::ModelDatabase& m) 
   for (int k = 0; k < 8; ++k) {
     if (c4.real(s1 + k) != 0.0) used = k + 1;
   }
-  for (int k = 0; k < used; ++k) p.points.emplace_back(c3.real(e1 + k), c4.real(s1 + k));
+  for (int k = 0; k < used; ++k)
+    p.points.emplace_back(c3.real(e1 + k), c4.real(s1 + k));
   for (std::size_t k = 1; k < p.points.size(); ++k) {
     if (p.points[k].first <= p.points[k - 1].first) {
-      r.diags().error(c3.loc(e1 + static_cast<int>(k)), "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: "
-                      "EPS values must increase", mat.id);
+      r.diags().error(c3.loc(e1 + static_cast<int>(k)),
+                      "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: "
+                      "EPS values must increase",
+                      mat.id);
       break;
     }
   }
   if (p.stress_strain_curve == 0 && p.points.empty() && p.yield_stress <= 0.0) {
-    r.diags().error(c1.loc("SIGY"), "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: no hardening given "
-                    "(SIGY, EPS/ES points or LCSS)", mat.id);
+    r.diags().error(c1.loc("SIGY"),
+                    "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: no hardening given "
+                    "(SIGY, EPS/ES points or LCSS)",
+                    mat.id);
   }
   if (p.failure_strain < 0.0) {
-    r.diags().error(c1.loc("FAIL"), "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: FAIL < 0 (user failure "
-                    "subroutine) is not supported", mat.id);
+    r.diags().error(c1.loc("FAIL"),
+                    "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: FAIL < 0 (user failure "
+                    "subroutine) is not supported",
+                    mat.id);
   }
   m.materials.push_back(std::move(mat));
 }

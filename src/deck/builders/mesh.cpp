@@ -33,8 +33,8 @@ void node(KeywordRecord& r, model::ModelDatabase& m) {
 
 void element_solid(KeywordRecord& r, model::ModelDatabase& m) {
   const bool one_line = r.form().name == "one_line";
-  m.solids.reserve(m.solids.size() + (one_line ? r.block().line_count()
-                                               : r.block().line_count() / 2));
+  m.solids.reserve(m.solids.size() +
+                   (one_line ? r.block().line_count() : r.block().line_count() / 2));
   Group g;
   int eid = -1, pid = -1, n1 = -1, n9 = -1;
   while (r.next_group(g)) {
@@ -49,9 +49,11 @@ void element_solid(KeywordRecord& r, model::ModelDatabase& m) {
     e.id = head.integer(eid);
     e.part = head.integer(pid);
     e.loc = nodes->loc();
-    for (int k = 0; k < 8; ++k) e.nodes[k] = nodes->integer(n1 + k);
+    for (int k = 0; k < 8; ++k)
+      e.nodes[k] = nodes->integer(n1 + k);
     if (n9 >= 0 && (nodes->integer(n9) != 0 || nodes->integer(n9 + 1) != 0)) {
-      r.diags().error(nodes->loc(n9), "{}: element {} has nodes 9-10 (10-node tetrahedron); only "
+      r.diags().error(nodes->loc(n9),
+                      "{}: element {} has nodes 9-10 (10-node tetrahedron); only "
                       "8-node solids and degenerate hexahedra are supported",
                       r.display_name(), e.id);
     }
@@ -68,15 +70,19 @@ void element_shell(KeywordRecord& r, model::ModelDatabase& m) {
     s.part = row.integer("PID");
     s.loc = row.loc();
     const int n1 = row.index("N1");
-    for (int k = 0; k < 4; ++k) s.nodes[k] = row.integer(n1 + k);
+    for (int k = 0; k < 4; ++k)
+      s.nodes[k] = row.integer(n1 + k);
     if (s.nodes[3] == 0) s.nodes[3] = s.nodes[2];
     if (row.integer("N5") != 0) {
-      r.diags().error(row.loc("N5"), "{}: element {} has mid-side nodes; 8-node shells are not "
-                      "supported", r.display_name(), s.id);
+      r.diags().error(row.loc("N5"),
+                      "{}: element {} has mid-side nodes; 8-node shells are not "
+                      "supported",
+                      r.display_name(), s.id);
     }
     if (const Row* t = g.card("thickness")) {
       const int t1 = t->index("THIC1");
-      for (int k = 0; k < 4; ++k) s.thickness[k] = t->real(t1 + k);
+      for (int k = 0; k < 4; ++k)
+        s.thickness[k] = t->real(t1 + k);
     }
     m.shells.push_back(s);
   }
@@ -102,8 +108,10 @@ void part(KeywordRecord& r, model::ModelDatabase& m) {
     p.eos_loc = card->loc("EOSID");
     p.hourglass_loc = card->loc("HGID");
     if (p.thermal_material != 0) {
-      r.diags().warning(card->loc("TMID"), "*PART {}: thermal material TMID is ignored (no thermal "
-                        "solver; Johnson-Cook heating uses CP)", p.id);
+      r.diags().warning(card->loc("TMID"),
+                        "*PART {}: thermal material TMID is ignored (no thermal "
+                        "solver; Johnson-Cook heating uses CP)",
+                        p.id);
     }
     m.parts.push_back(std::move(p));
   }

@@ -14,8 +14,10 @@ void section_solid(KeywordRecord& r, model::ModelDatabase& m) {
   s.kind = s.element_formulation == 47 ? model::SectionKind::solid_spg : model::SectionKind::solid;
   s.loc = c1.loc();
   if (s.kind == model::SectionKind::solid_spg) {
-    r.diags().error(c1.loc("ELFORM"), "*SECTION_SOLID {}: ELFORM 47 (SPG) needs the SPG cards; "
-                    "write it as *SECTION_SOLID_SPG", s.id);
+    r.diags().error(c1.loc("ELFORM"),
+                    "*SECTION_SOLID {}: ELFORM 47 (SPG) needs the SPG cards; "
+                    "write it as *SECTION_SOLID_SPG",
+                    s.id);
   }
   m.sections.push_back(std::move(s));
 }
@@ -35,22 +37,26 @@ void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m) {
   spg.kernel_update = static_cast<int>(c2.integer("KERNEL"));
   if (spg.kernel_update == 3) {
     // R10 coding: 3 was pseudo-Lagrangian, which is 2 in R13+ (keywords.md §2.6).
-    r.diags().note(c2.loc("KERNEL"), "*SECTION_SOLID_SPG {}: KERNEL=3 (R10 pseudo-Lagrangian) "
-                   "read as KERNEL=2", s.id);
+    r.diags().note(c2.loc("KERNEL"),
+                   "*SECTION_SOLID_SPG {}: KERNEL=3 (R10 pseudo-Lagrangian) "
+                   "read as KERNEL=2",
+                   s.id);
     spg.kernel_update = 2;
   }
   // Defaults that depend on KERNEL (keywords.md §2.6, R15 manifest).
   constexpr double kSupportDefault[3] = {1.6, 1.8, 1.5};
   constexpr int kSmstepDefault[3] = {15, 5, 30};
-  const double dx = c2.blank("DX") || c2.real("DX") == 0.0 ? kSupportDefault[spg.kernel_update]
-                                                            : c2.real("DX");
+  const double dx =
+      c2.blank("DX") || c2.real("DX") == 0.0 ? kSupportDefault[spg.kernel_update] : c2.real("DX");
   const double dy = c2.blank("DY") || c2.real("DY") == 0.0 ? dx : c2.real("DY");
   const double dz = c2.blank("DZ") || c2.real("DZ") == 0.0 ? dx : c2.real("DZ");
   spg.support_scale = {dx, dy, dz};
   for (const char* f : {"DX", "DY", "DZ"}) {
     if (!c2.blank(f) && c2.real(f) != 0.0 && c2.real(f) < 1.0) {
-      r.diags().error(c2.loc(f), "*SECTION_SOLID_SPG {}: {} = {} is below 1; the support must "
-                      "cover at least the nodal spacing", s.id, f, c2.real(f));
+      r.diags().error(c2.loc(f),
+                      "*SECTION_SOLID_SPG {}: {} = {} is below 1; the support must "
+                      "cover at least the nodal spacing",
+                      s.id, f, c2.real(f));
     }
   }
   spg.smoothing_interval = c2.integer("SMSTEP") > 0 ? static_cast<int>(c2.integer("SMSTEP"))
@@ -67,8 +73,10 @@ void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m) {
   spg.box = c3.integer("BOXID");
   spg.particle_damping = c3.real("PDAMP");
   if (spg.failure_stretch < 1.0) {
-    r.diags().error(c3.loc("STRETCH"), "*SECTION_SOLID_SPG {}: STRETCH = {} must be >= 1 (bonds "
-                    "do not fail in compression)", s.id, spg.failure_stretch);
+    r.diags().error(c3.loc("STRETCH"),
+                    "*SECTION_SOLID_SPG {}: STRETCH = {} must be >= 1 (bonds "
+                    "do not fail in compression)",
+                    s.id, spg.failure_stretch);
   }
   m.sections.push_back(std::move(s));
 }
@@ -84,7 +92,8 @@ void section_shell(KeywordRecord& r, model::ModelDatabase& m) {
   s.shell.shear_factor = c1.real("SHRF");
   s.shell.integration_points = static_cast<int>(c1.integer("NIP"));
   const int t1 = c2.index("T1");
-  for (int k = 0; k < 4; ++k) s.shell.thickness[k] = c2.real(t1 + k);
+  for (int k = 0; k < 4; ++k)
+    s.shell.thickness[k] = c2.real(t1 + k);
   s.loc = c1.loc();
   m.sections.push_back(std::move(s));
 }
