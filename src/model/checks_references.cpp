@@ -160,7 +160,8 @@ void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactS
       diags.error(c.loc, "{}: type 1 (shell element set) is not supported; use a part or part set",
                   user);
       break;
-    case 2:
+    case 2:  // part set
+    case 6:  // all parts except a part set
       need(ix.part_sets, side.id, c.loc, "part set", user, diags);
       break;
     case 3:
@@ -168,9 +169,6 @@ void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactS
       break;
     case 4:
       need(ix.node_sets, side.id, c.loc, "node set", user, diags);
-      break;
-    case 6:
-      need(ix.part_sets, side.id, c.loc, "part set", user, diags);
       break;
     default:
       break;  // 5 = all
