@@ -19,8 +19,8 @@ struct Diagnostic {
   std::string message;
 };
 
-/// Error sink. Keeps every diagnostic in report order; caps the number printed per message kind
-/// is left to the printer so that the count stays exact.
+/// Error sink. Keeps every diagnostic in report order with exact counts; limiting how many are
+/// printed is the printer's job.
 class Diagnostics {
  public:
   void report(Severity severity, SourceLoc loc, std::string message);

@@ -16,6 +16,13 @@ namespace mcdyna::deck {
 /// to 10). Chosen by *KEYWORD for the file or by a '+', '-' or '%' suffix on one keyword.
 enum class CardFormat : std::uint8_t { standard, long_format, i10 };
 
+/// Width of a field of `standard` columns in the given format (keywords.md §1.5).
+[[nodiscard]] inline int field_width(CardFormat format, int standard) {
+  if (format == CardFormat::long_format) return standard > 20 ? standard : 20;
+  if (format == CardFormat::i10) return standard > 10 ? standard : 10;
+  return standard;
+}
+
 /// One non-comment data line of a keyword block.
 struct DataLine {
   std::string_view text;  ///< without end-of-line characters

@@ -92,14 +92,10 @@ class Lexer {
   void finish_block(FileState& st);
   void handle_keyword_arguments(FileState& st, const KeywordBlock& b, std::string_view args);
   void handle_include(FileState& st, const KeywordBlock& b);
-  void handle_include_path(const KeywordBlock& b, bool relative);
+  /// *INCLUDE_PATH and *INCLUDE_PATH_RELATIVE: relative names are taken from the main deck's dir.
+  void handle_include_path(const KeywordBlock& b);
   void handle_parameter(const KeywordBlock& b, bool expression, bool local);
   void handle_duplication(const KeywordBlock& b);
-  [[nodiscard]] int field_width(CardFormat f, int standard) const {
-    if (f == CardFormat::long_format) return std::max(standard, 20);
-    if (f == CardFormat::i10) return std::max(standard, 10);
-    return standard;
-  }
 
   Deck& deck_;
   core::Diagnostics& diags_;
@@ -187,9 +183,9 @@ void Lexer::finish_block(FileState& st) {
   if (name == "INCLUDE") {
     handle_include(st, b);
   } else if (name == "INCLUDE_PATH") {
-    handle_include_path(b, false);
+    handle_include_path(b);
   } else if (name == "INCLUDE_PATH_RELATIVE") {
-    handle_include_path(b, true);
+    handle_include_path(b);
   } else if (name == "PARAMETER" || name == "PARAMETER_NOECHO") {
     handle_parameter(b, false, false);
   } else if (name == "PARAMETER_LOCAL" || name == "PARAMETER_LOCAL_NOECHO") {
@@ -299,10 +295,15 @@ std::optional<fs::path> Lexer::resolve_include(std::string_view raw, const fs::p
     searched = "absolute path";
     return ok(p) ? std::optional<fs::path>(p) : std::nullopt;
   }
-  std::vector<fs::path> dirs{including_dir, main_dir_};
+  std::vector<fs::path> dirs;
+  auto add = [&](const fs::path& d) {
+    if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
+  };
+  add(including_dir);
+  add(main_dir_);
   for (const auto& d : include_paths_)
-    dirs.push_back(d);
-  dirs.push_back(fs::current_path(ec));
+    add(d);
+  add(fs::current_path(ec));
   for (const auto& d : dirs) {
     if (!searched.empty()) searched += ", ";
     searched += d.empty() ? "." : d.string();
@@ -312,14 +313,13 @@ std::optional<fs::path> Lexer::resolve_include(std::string_view raw, const fs::p
   return std::nullopt;
 }
 
-void Lexer::handle_include_path(const KeywordBlock& b, bool relative) {
+void Lexer::handle_include_path(const KeywordBlock& b) {
   for (std::uint32_t i = b.first_line; i < b.end_line; ++i) {
     std::string dir(trim(deck_.lines[i].text));
     if (dir.empty()) continue;
     std::replace(dir.begin(), dir.end(), '\\', '/');
     const fs::path p(dir);
-    include_paths_.push_back(p.is_absolute() || !relative ? (p.is_absolute() ? p : main_dir_ / p)
-                                                          : main_dir_ / p);
+    include_paths_.push_back(p.is_absolute() ? p : main_dir_ / p);
   }
 }
 

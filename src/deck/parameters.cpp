@@ -24,8 +24,7 @@ void Parameters::define(Definition def, int duplication_flag, core::Diagnostics&
   }
   // *PARAMETER_DUPLICATION DFLAG: 1 warn + keep first (default), 2 warn + accept new,
   // 3 error, 4 accept silently, 5 keep first silently.
-  const core::SourceLoc first = defs_[it->second].def.loc;
-  const auto& first_file_line = first.line;
+  const std::uint32_t first_file_line = defs_[it->second].def.loc.line;
   switch (duplication_flag) {
     case 2:
       diags.warning(def.loc,
@@ -63,7 +62,7 @@ int Parameters::find(std::string_view upper_name, std::uint32_t scope) const {
 }
 
 bool Parameters::evaluate(int index, core::Diagnostics& diags) {
-  Entry& e = defs_[index];
+  Entry& e = defs_[index];  // stays valid: defs_ does not grow during evaluation
   if (e.state == Entry::State::done) return true;
   if (e.state == Entry::State::failed) return false;
   if (e.state == Entry::State::evaluating) {
@@ -88,13 +87,12 @@ bool Parameters::evaluate(int index, core::Diagnostics& diags) {
     };
     const auto v = evaluate_expression(src, resolve, error);
     if (!v) {
-      if (defs_[index].state != Entry::State::failed) {
-        diags.error(defs_[index].def.loc, "parameter {}: cannot evaluate '{}': {}",
-                    defs_[index].def.name, src, error);
+      if (e.state != Entry::State::failed) {
+        diags.error(e.def.loc, "parameter {}: cannot evaluate '{}': {}", e.def.name, src, error);
       }
       ok = false;
     } else {
-      defs_[index].value.number = *v;
+      e.value.number = *v;
     }
   } else {
     const auto v = parse_real(src);
@@ -105,9 +103,8 @@ bool Parameters::evaluate(int index, core::Diagnostics& diags) {
       e.value.number = *v;
     }
   }
-  Entry& done = defs_[index];  // defs_ does not grow during evaluation; re-bind for clarity
-  if (ok && done.def.type == 'I') done.value.number = std::trunc(done.value.number);
-  done.state = ok ? Entry::State::done : Entry::State::failed;
+  if (ok && e.def.type == 'I') e.value.number = std::trunc(e.value.number);
+  e.state = ok ? Entry::State::done : Entry::State::failed;
   return ok;
 }
 

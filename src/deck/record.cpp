@@ -13,12 +13,6 @@ namespace mcdyna::deck {
 
 namespace {
 
-int widened(CardFormat format, int width) {
-  if (format == CardFormat::long_format) return std::max(width, 20);
-  if (format == CardFormat::i10) return std::max(width, 10);
-  return width;
-}
-
 std::string_view type_name(FieldType t) {
   switch (t) {
     case FieldType::integer:
@@ -219,7 +213,7 @@ void KeywordRecord::parse_row(const CardSpec& spec, const DataLine* line, Row& r
   }
   std::size_t offset = 0;
   for (int i = 0; i < n; ++i) {
-    const int w = widened(block_.format, spec.fields[i].width);
+    const int w = field_width(block_.format, spec.fields[i].width);
     if (offset >= text.size()) break;
     parse_field(spec.fields[i], text.substr(offset, w), static_cast<int>(offset) + 1, w, row, i,
                 quiet);

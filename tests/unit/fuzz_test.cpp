@@ -2,6 +2,8 @@
 // tests run under AddressSanitizer and UndefinedBehaviorSanitizer in CI (see .ci/run).
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -90,7 +92,7 @@ TEST_CASE("include trouble: missing, cycles, self include, deep chains, director
   test::TempDir d;
   d.write("self.k", "*INCLUDE\nself.k\n");
   for (int i = 0; i < 100; ++i) {
-    d.write("c" + std::to_string(i) + ".k", "*INCLUDE\nc" + std::to_string(i + 1) + ".k\n");
+    d.write(fmt::format("c{}.k", i), fmt::format("*INCLUDE\nc{}.k\n", i + 1));
   }
   fs::create_directories(d.path() / "adir");
   auto l = test::load_file(d.write("main.k", "*INCLUDE\nself.k\nc0.k\nadir\nnope.k\n"), true);
