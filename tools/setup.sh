@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libfmt-dev libcli11-dev libvtk9-dev doctest-dev libomp-dev
-  python3-numpy python3-matplotlib time
+  python3-numpy python3-matplotlib python3-vtk9 time
 )
 
 missing=()

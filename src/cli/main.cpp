@@ -1,4 +1,4 @@
-// mcdyna command line: `check`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k ncpu=2`).
+// mcdyna command line: `run`, `check`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k ncpu=2`).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -8,6 +8,7 @@
 
 #include "cli/check_command.hpp"
 #include "cli/keyword_docs.hpp"
+#include "cli/run_command.hpp"
 #include "deck/registry.hpp"
 #include "deck/text_util.hpp"
 
@@ -19,7 +20,7 @@ constexpr int kExitUsage = 2;
 // Returns false with a message for an unknown key.
 bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& error) {
   std::vector<std::string> out;
-  std::string deck;
+  std::string deck, ncpu;
   bool lsdyna_style = false;
   for (const std::string& a : args) {
     const auto eq = a.find('=');
@@ -32,8 +33,10 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
     const std::string value = a.substr(eq + 1);
     if (key == "I") {
       deck = value;
-    } else if (key == "NCPU" || key == "MEMORY" || key == "MEMORY2") {
-      // Threads and memory are chosen by mcdyna; accepted for LS-DYNA command lines.
+    } else if (key == "NCPU") {
+      ncpu = value;
+    } else if (key == "MEMORY" || key == "MEMORY2") {
+      // Memory is allocated as needed; accepted for LS-DYNA command lines.
     } else {
       error =
           fmt::format("unknown LS-DYNA style argument '{}' (mcdyna knows i=, ncpu=, memory=)", a);
@@ -45,8 +48,11 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
       error = "LS-DYNA style command line needs i=DECK";
       return false;
     }
-    // Until the solver exists, i=deck.k checks the deck (it will behave as `run`).
-    out.insert(out.begin(), {"check", deck});
+    out.insert(out.begin(), {"run", deck});
+    if (!ncpu.empty()) {
+      out.push_back("--threads");
+      out.push_back(ncpu.rfind('-', 0) == 0 ? ncpu.substr(1) : ncpu);  // ncpu=-2: same count
+    }
   }
   args = out;
   return true;
@@ -76,6 +82,19 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
       ->capture_default_str();
 
+  mcdyna::cli::RunOptions run;
+  auto* run_cmd = app.add_subcommand("run",
+                                     "run a deck: explicit dynamics, d3plot.pvd states, "
+                                     "ASCII/CSV histories and d3hsp");
+  run_cmd->add_option("deck", run.deck, "keyword deck (.k, .key, .dyn)")->required();
+  run_cmd->add_option("--out", run.out_dir, "directory for the outputs (default: working dir)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)");
+  run_cmd->add_flag("--allow-unsupported", run.allow_unsupported,
+                    "run without unsupported keywords that change the physics");
+  run_cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");
+  run_cmd->add_option("--max-messages", run.max_messages, "diagnostics printed (0: all)")
+      ->capture_default_str();
+
   std::string keyword_name;
   std::string markdown_dir;
   bool raw = false;
@@ -101,6 +120,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) return mcdyna::cli::run_check(check, std::cout, std::cerr);
+    if (*run_cmd) return mcdyna::cli::run_deck(run, std::cout, std::cerr);
     const mcdyna::deck::Registry registry;
     if (!markdown_dir.empty()) {
       if (!mcdyna::cli::write_keyword_pages(markdown_dir, registry)) {

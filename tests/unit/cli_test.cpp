@@ -1,32 +1,12 @@
 // The command line as users run it: exit codes 0 / 1 / 2, LS-DYNA style i=, reports.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
-
 #include "test_support.hpp"
 
 namespace {
 
-struct Run {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Run run_mcdyna(const std::string& args) {
-  Run r;
-  const std::string cmd = std::string(MCDYNA_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0)
-    r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
-}
+using mcdyna::test::Run;
+using mcdyna::test::run_mcdyna;
 
 const std::string kDataDir = std::string(MCDYNA_SOURCE_DIR) + "/tests/data/";
 
@@ -37,12 +17,6 @@ TEST_CASE("check: a clean deck exits 0 with summary and migration report") {
   CHECK(r.exit_code == 0);
   CHECK(r.output.find("nodes            12") != std::string::npos);
   CHECK(r.output.find("Migration report: 63 keywords") != std::string::npos);
-  CHECK(r.output.find("ready to run") != std::string::npos);
-}
-
-TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 checks the deck") {
-  const Run r = run_mcdyna("i=" + kDataDir + "all_keywords.k ncpu=2 memory=200m");
-  CHECK(r.exit_code == 0);
   CHECK(r.output.find("ready to run") != std::string::npos);
 }
 

@@ -2,8 +2,11 @@
 // Helpers for tests: temporary deck files and one-call deck reading.
 #include <doctest/doctest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
+#include <array>
 #include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -43,6 +46,27 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// Result of running the mcdyna binary.
+struct Run {
+  int exit_code = -1;
+  std::string output;  ///< stdout and stderr
+};
+
+/// Runs `mcdyna ARGS` (optionally with a command prefix such as "cd DIR &&" or "timeout ...").
+inline Run run_mcdyna(const std::string& args, const std::string& prefix = "") {
+  Run r;
+  const std::string cmd = prefix + " " + std::string(MCDYNA_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0)
+    r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
 
 /// Everything reading a deck produces.
 struct Loaded {

@@ -1,0 +1,11 @@
+#!/bin/sh
+# Regenerates the verification decks from their generators (byte-identical on re-run).
+# The committed decks are the CI-sized ones; the finest ones are only written here.
+set -eu
+cd "$(dirname "$0")/.."
+for h in 0.2 0.1 0.05; do
+  /usr/bin/python3 tools/decks/elastic_wave.py "$h" "decks/elastic_wave/rod_h$h.k"
+done
+for r in coarse medium fine; do
+  /usr/bin/python3 tools/decks/taylor_bar.py "$r" "decks/taylor_bar/taylor_$r.k"
+done

@@ -1,0 +1,234 @@
+#include "cli/run_command.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include "cli/load.hpp"
+#include "cli/report.hpp"
+#include "io/outputs.hpp"
+#include "solver/compile.hpp"
+#include "solver/driver.hpp"
+#include "solver/energy.hpp"
+
+namespace mcdyna::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+}
+
+// Progress: a refreshed line on a terminal, otherwise a plain line every 5 % of the end time.
+// The same lines (every 5 %) go to d3hsp as the time-step history.
+class Progress {
+ public:
+  Progress(std::ostream& out, std::ostream& log, bool terminal, bool quiet)
+      : out_(out), log_(log), terminal_(terminal), quiet_(quiet), start_(Clock::now()) {}
+
+  void update(const solver::State& s) {
+    const double end = s.time_control.end_time;
+    const double fraction = end > 0.0 ? std::min(1.0, s.time / end) : 0.0;
+    const auto now = Clock::now();
+    const bool milestone = fraction >= next_fraction_;
+    const bool refresh = terminal_ && now - last_print_ > std::chrono::milliseconds(200);
+    if (!milestone && !refresh) return;
+    const double elapsed = seconds(start_, now);
+    const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    const std::string line = fmt::format(
+        "cycle {:>9}  t = {:.5e}  dt = {:.4e}  {:5.1f} %  elapsed {:.1f} s  ETA {:.1f} s", s.cycle,
+        s.time, s.step, 100.0 * fraction, elapsed, eta);
+    if (milestone) {
+      fmt::print(log_, "{}\n", line);
+      while (next_fraction_ <= fraction)
+        next_fraction_ += 0.05;
+    }
+    if (quiet_) return;
+    if (terminal_) {
+      fmt::print(out_, "\r{}", line);
+      out_.flush();
+      last_print_ = now;
+    } else if (milestone) {
+      fmt::print(out_, "{}\n", line);
+    }
+  }
+  void finish() {
+    if (terminal_ && !quiet_) fmt::print(out_, "\n");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  static double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  }
+  std::ostream& out_;
+  std::ostream& log_;
+  bool terminal_, quiet_;
+  Clock::time_point start_, last_print_{};
+  double next_fraction_ = 0.05;
+};
+
+const char* reason_text(solver::StopReason r) {
+  switch (r) {
+    case solver::StopReason::end_time:
+      return "normal termination (ENDTIM reached)";
+    case solver::StopReason::end_cycle:
+      return "normal termination (ENDCYC reached)";
+    case solver::StopReason::interrupted:
+      return "interrupted by signal";
+    case solver::StopReason::inverted_element:
+      return "error termination: negative volume";
+    case solver::StopReason::non_finite:
+      return "error termination: non-finite values";
+    case solver::StopReason::step_collapse:
+      return "error termination: time step collapse";
+  }
+  return "";
+}
+
+void print_state_summary(std::ostream& log, const solver::State& s) {
+  double mass = 0.0, added = 0.0;
+  for (std::size_t i = 0; i < s.nodes.mass.size(); ++i) {
+    mass += s.nodes.mass[i];
+    added += s.nodes.added_mass[i];
+  }
+  for (const auto& b : s.rigid_bodies)
+    mass += b.mass;
+  fmt::print(log,
+             "\nSolver state\n  nodes {}, deformable solids {} in {} blocks, rigid bodies {}\n",
+             s.nodes.count(), s.solids.count(), s.solids.blocks.size(), s.rigid_bodies.size());
+  for (const auto& b : s.solids.blocks) {
+    const auto& part = s.parts[static_cast<std::size_t>(b.part)];
+    fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, IHQ {} QM {}, Q1 {} Q2 {}\n", part.id,
+               b.end - b.begin, b.points_per_element == 1 ? 1 : 2, b.hourglass.type,
+               b.hourglass.coefficient, b.bulk_viscosity.quadratic, b.bulk_viscosity.linear);
+  }
+  for (const auto& b : s.rigid_bodies) {
+    fmt::print(log, "  rigid part {:>8}: mass {:.6e}, centre ({:.6g}, {:.6g}, {:.6g}), {} nodes\n",
+               b.part_id, b.mass, b.center[0], b.center[1], b.center[2], b.nodes.size());
+  }
+  fmt::print(log, "  total mass {:.6e}; constrained nodes {}; rigid walls {}\n", mass,
+             s.constraints.nodes.size(), s.rigid_walls.size());
+  if (s.mass_scaling_dt > 0.0) {
+    fmt::print(log, "  mass scaling: target step {:.4e}, added mass so far {:.6e} ({:.3f} %)\n",
+               s.mass_scaling_dt, added, mass > 0.0 ? 100.0 * added / mass : 0.0);
+  }
+}
+
+}  // namespace
+
+int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  std::ostringstream report;
+  LoadedDeck d = load_deck(options.deck, report);
+  core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
+  const bool blocked = d.unsupported_physics > 0 && !options.allow_unsupported;
+  if (blocked) {
+    fmt::print(err,
+               "mcdyna: error: {} unsupported keyword(s) change the physics (see `mcdyna "
+               "check`); --allow-unsupported runs without them\n",
+               d.unsupported_physics);
+  }
+  if (d.diags.has_errors() || blocked) {
+    fmt::print(err, "mcdyna: {} not run: {} error(s)\n", options.deck.string(),
+               d.diags.error_count() + (blocked ? 1 : 0));
+    return kRunDeckErrors;
+  }
+  core::Diagnostics compile_diags;
+  std::unique_ptr<solver::State> state = solver::compile(d.built.model, compile_diags);
+  core::print_diagnostics(err, compile_diags, d.deck.files, options.max_messages);
+  if (!state) {
+    fmt::print(err, "mcdyna: {} not run: {} error(s)\n", options.deck.string(),
+               compile_diags.error_count());
+    return kRunDeckErrors;
+  }
+  const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
+  std::filesystem::create_directories(dir);
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+
+  std::ofstream log(dir / "d3hsp");
+  fmt::print(log,
+             "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}\n\n",
+             options.deck.string(), omp_get_max_threads());
+  print_summary(log, d.deck, d.built.model, count_model(d.built.model));
+  log << report.str();
+  for (const auto& diag : compile_diags.all())
+    log << core::format_diagnostic(diag, d.deck.files);
+  print_state_summary(log, *state);
+
+  std::vector<std::string> notes;
+  io::Outputs outputs(d.built.model, *state, dir, notes);
+  for (const auto& n : notes)
+    fmt::print(log, "note: {}\n", n);
+  fmt::print(log, "\nTime-step history (every 5 % of ENDTIM)\n");
+
+  g_stop_signal = 0;
+  auto old_int = std::signal(SIGINT, on_stop_signal);
+  auto old_term = std::signal(SIGTERM, on_stop_signal);
+  Progress progress(out, log, isatty(STDOUT_FILENO) != 0, options.quiet);
+  const auto start = std::chrono::steady_clock::now();
+  long zone_cycles = 0;
+  solver::RunHooks hooks;
+  hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
+  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
+    zone_cycles = s.cycle * static_cast<long>(s.solids.count());
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+  };
+  hooks.stop_requested = [] { return g_stop_signal != 0; };
+  hooks.progress = [&](const solver::State& s) { progress.update(s); };
+  const solver::RunResult result = solver::run(*state, hooks);
+  progress.finish();
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+
+  std::ostringstream summary;
+  fmt::print(summary, "\n{} at t = {:.6e}, cycle {}\n", reason_text(result.reason), state->time,
+             state->cycle);
+  if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
+  fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s))\n", omp_get_max_threads());
+  for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
+    const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
+    fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %\n", solver::PhaseTimes::name(p), sec,
+               result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
+  }
+  fmt::print(summary, "  {:<22}{:10.3f} s\n", "total", result.wall_seconds);
+  if (result.element_cycles > 0) {
+    fmt::print(summary, "  {:.3f} million element-cycles/s\n",
+               1e-6 * result.element_cycles / result.wall_seconds);
+  }
+  if (state->mass_scaling_dt > 0.0) {
+    double added = 0.0;
+    for (const double a : state->nodes.added_mass)
+      added += a;
+    fmt::print(summary, "  added mass (DT2MS) {:.6e}\n", added);
+  }
+  fmt::print(summary, "Outputs in {}:", dir.string());
+  for (const auto& f : outputs.files())
+    fmt::print(summary, " {};", f);
+  fmt::print(summary, " d3hsp\n");
+  log << summary.str();
+  if (!options.quiet || result.reason != solver::StopReason::end_time) out << summary.str();
+  switch (result.reason) {
+    case solver::StopReason::end_time:
+    case solver::StopReason::end_cycle:
+      return kRunOk;
+    case solver::StopReason::interrupted:
+      return kRunInterrupted;
+    default:
+      fmt::print(err, "mcdyna: {}: {}\n", reason_text(result.reason), result.message);
+      return kRunUnstable;
+  }
+}
+
+}  // namespace mcdyna::cli

@@ -1,0 +1,28 @@
+#pragma once
+/// `mcdyna run DECK`: read and check the deck, compile the solver state, run the explicit time
+/// loop and write d3plot.pvd (+ states), the ASCII/CSV histories and d3hsp.
+#include <filesystem>
+#include <iosfwd>
+
+namespace mcdyna::cli {
+
+struct RunOptions {
+  std::filesystem::path deck;
+  std::filesystem::path out_dir;  ///< empty: the working directory, as LS-DYNA
+  bool allow_unsupported = false;
+  int threads = 0;  ///< 0: OpenMP default
+  bool quiet = false;
+  std::size_t max_messages = 50;
+};
+
+/// Exit codes of `run` (README and manual list them).
+enum RunExit : int {
+  kRunOk = 0,
+  kRunDeckErrors = 1,
+  kRunUnstable = 4,     ///< stopped by NaN, negative volume or step collapse
+  kRunInterrupted = 5,  ///< SIGINT / SIGTERM: final state written, files closed
+};
+
+int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace mcdyna::cli

@@ -1,0 +1,102 @@
+#include "io/outputs.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace mcdyna::io {
+
+void Outputs::Schedule::advance(double t) {
+  last_written = t;
+  while (due(t))
+    next += interval;
+}
+
+namespace {
+std::vector<solver::Index> history_nodes(const model::ModelDatabase& m) {
+  std::vector<solver::Index> out;
+  for (const model::HistoryNodes& h : m.outputs.history_nodes) {
+    for (const model::Id id : h.ids) {
+      if (h.is_set) {
+        const model::NodeSet* ns = m.node_set(id);
+        if (ns == nullptr) continue;
+        for (const model::Id n : ns->nodes) {
+          const auto i = m.index.nodes.find(n);
+          if (i != model::IdIndex::kNone) out.push_back(static_cast<solver::Index>(i));
+        }
+      } else {
+        const auto i = m.index.nodes.find(id);
+        if (i != model::IdIndex::kNone) out.push_back(static_cast<solver::Index>(i));
+      }
+    }
+  }
+  return out;
+}
+}  // namespace
+
+Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
+                 const std::filesystem::path& dir, std::vector<std::string>& notes) {
+  if (m.outputs.d3plot) {
+    const model::D3plotRequest& r = *m.outputs.d3plot;
+    double dt = r.interval;
+    if (dt <= 0.0 && r.plots > 0) dt = s.time_control.end_time / r.plots;
+    if (dt > 0.0) {
+      d3plot_ = std::make_unique<VtkSeries>(dir);
+      d3plot_schedule_.interval = dt;
+    }
+  }
+  const std::vector<solver::Index> nodes = history_nodes(m);
+  for (const model::AsciiRequest& r : m.outputs.ascii) {
+    if (r.interval <= 0.0) continue;
+    const std::string name = model::ascii_database_name(r.database);
+    if (name == "nodout" && nodes.empty()) {
+      notes.push_back("nodout requested but no *DATABASE_HISTORY_NODE nodes: not written");
+      continue;
+    }
+    if (name == "rcforc") {
+      notes.push_back("rcforc requested but this version runs no contact: not written");
+      continue;
+    }
+    auto h = make_history(name, dir, s, nodes);
+    if (!h) {
+      notes.push_back(fmt::format("{} is not written by mcdyna", name));
+      continue;
+    }
+    histories_.push_back(std::move(h));
+    history_schedules_.push_back(Schedule{r.interval, 0.0, -1.0});
+  }
+}
+
+bool Outputs::due(const solver::State& s) const {
+  if (d3plot_ && d3plot_schedule_.due(s.time)) return true;
+  return std::any_of(history_schedules_.begin(), history_schedules_.end(),
+                     [&](const Schedule& h) { return h.due(s.time); });
+}
+
+void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bool final,
+                    double ns_per_cycle) {
+  const Eigen::Matrix3Xd velocity = 0.5 * (previous + s.nodes.velocity);
+  const OutputContext c{s, previous, velocity, ns_per_cycle};
+  auto wanted = [&](const Schedule& sc) {
+    return sc.due(s.time) || (final && sc.last_written != s.time);
+  };
+  if (d3plot_ && wanted(d3plot_schedule_)) {
+    d3plot_->write(s, velocity);
+    d3plot_schedule_.advance(s.time);
+  }
+  for (std::size_t k = 0; k < histories_.size(); ++k) {
+    if (!wanted(history_schedules_[k])) continue;
+    histories_[k]->write(c);
+    history_schedules_[k].advance(s.time);
+  }
+}
+
+std::vector<std::string> Outputs::files() const {
+  std::vector<std::string> out;
+  if (d3plot_) out.push_back(fmt::format("d3plot.pvd ({} states)", d3plot_->states()));
+  for (const auto& h : histories_)
+    out.push_back(h->name() + " (+ .csv)");
+  return out;
+}
+
+}  // namespace mcdyna::io

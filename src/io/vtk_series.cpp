@@ -1,0 +1,161 @@
+#include "io/vtk_series.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <stdexcept>
+
+#include "solver/results.hpp"
+
+namespace mcdyna::io {
+
+namespace {
+
+using solver::Index;
+using solver::State;
+
+vtkNew<vtkDoubleArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(v.cols());
+  for (Index n = 0; n < v.cols(); ++n)
+    a->SetTuple3(n, v(0, n), v(1, n), v(2, n));
+  return a;
+}
+
+// Cell fields in cell order: deformable solids (not eroded), rigid solids, rigid shells.
+struct CellFields {
+  vtkNew<vtkDoubleArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
+  vtkNew<vtkIntArray> part, eroded;
+  CellFields() {
+    stress->SetName("stress");
+    stress->SetNumberOfComponents(6);
+    const char* comps[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+    for (int k = 0; k < 6; ++k)
+      stress->SetComponentName(k, comps[k]);
+    von_mises->SetName("von_mises");
+    plastic_strain->SetName("effective_plastic_strain");
+    temperature->SetName("temperature");
+    damage->SetName("damage");
+    pressure->SetName("pressure");
+    part->SetName("part_id");
+    eroded->SetName("erosion_state");
+  }
+  void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id) {
+    const auto& s = r.stress;
+    const double tuple[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
+    stress->InsertNextTuple(tuple);
+    von_mises->InsertNextValue(r.von_mises);
+    plastic_strain->InsertNextValue(r.plastic_strain);
+    temperature->InsertNextValue(temp);
+    damage->InsertNextValue(r.damage);
+    pressure->InsertNextValue(pressure_value);
+    part->InsertNextValue(part_id);
+    eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
+  }
+  void attach(vtkUnstructuredGrid* g) {
+    for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
+             stress, von_mises, plastic_strain, temperature, damage, pressure, part, eroded})
+      g->GetCellData()->AddArray(a);
+  }
+};
+
+}  // namespace
+
+VtkSeries::VtkSeries(std::filesystem::path dir, std::string base)
+    : dir_(std::move(dir)), base_(std::move(base)) {}
+
+void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
+  const solver::Nodes& nd = s.nodes;
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nd.count());
+  for (Index n = 0; n < nd.count(); ++n)
+    points->SetPoint(n, nd.position(0, n), nd.position(1, n), nd.position(2, n));
+  grid->SetPoints(points);
+  const Eigen::Matrix3Xd displacement = nd.position - nd.initial;
+  grid->GetPointData()->AddArray(vector_array("displacement", displacement));
+  grid->GetPointData()->AddArray(vector_array("velocity", velocity));
+  grid->GetPointData()->AddArray(vector_array("acceleration", nd.acceleration));
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("node_id");
+  for (Index n = 0; n < nd.count(); ++n)
+    ids->InsertNextValue(static_cast<int>(nd.ids[static_cast<std::size_t>(n)]));
+  grid->GetPointData()->AddArray(ids);
+
+  CellFields fields;
+  vtkIdType hex[8];
+  const solver::Solids& so = s.solids;
+  for (Index e = 0; e < so.count(); ++e) {
+    const auto i = static_cast<std::size_t>(e);
+    if (so.eroded[i]) continue;
+    for (int c = 0; c < 8; ++c)
+      hex[c] = so.nodes[i][static_cast<std::size_t>(c)];
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+    fields.add(solver::element_result(s, e), so.pressure[i], so.temperature[i],
+               static_cast<int>(s.parts[static_cast<std::size_t>(so.part[i])].id));
+  }
+  const solver::DisplayCells& rc = s.rigid_cells;
+  const solver::ElementResult none;
+  for (std::size_t k = 0; k < rc.solids.size(); ++k) {
+    for (int c = 0; c < 8; ++c)
+      hex[c] = rc.solids[k][static_cast<std::size_t>(c)];
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+    fields.add(none, 0.0, 0.0,
+               static_cast<int>(s.parts[static_cast<std::size_t>(rc.solid_parts[k])].id));
+  }
+  for (std::size_t k = 0; k < rc.shells.size(); ++k) {
+    const auto& q = rc.shells[k];
+    vtkIdType quad[4] = {q[0], q[1], q[2], q[3]};
+    if (q[3] == q[2])
+      grid->InsertNextCell(VTK_TRIANGLE, 3, quad);
+    else
+      grid->InsertNextCell(VTK_QUAD, 4, quad);
+    fields.add(none, 0.0, 0.0,
+               static_cast<int>(s.parts[static_cast<std::size_t>(rc.shell_parts[k])].id));
+  }
+  fields.attach(grid);
+
+  const std::string name = fmt::format("{}_{:04d}.vtu", base_, entries_.size());
+  const std::filesystem::path final_path = dir_ / name;
+  const std::filesystem::path temp_path = dir_ / (name + ".part");
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(temp_path.string().c_str());
+  writer->SetInputData(grid);
+  writer->SetDataModeToBinary();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) {
+    throw std::runtime_error(fmt::format("cannot write {}", temp_path.string()));
+  }
+  std::filesystem::rename(temp_path, final_path);
+  entries_.emplace_back(s.time, name);
+  write_collection();
+}
+
+void VtkSeries::write_collection() const {
+  const std::filesystem::path temp = collection().string() + ".part";
+  {
+    auto out = fmt::output_file(temp.string());
+    out.print("<?xml version=\"1.0\"?>\n");
+    out.print("<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
+    out.print("  <Collection>\n");
+    for (const auto& [t, file] : entries_)
+      out.print("    <DataSet timestep=\"{:.9e}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, file);
+    out.print("  </Collection>\n</VTKFile>\n");
+  }
+  std::filesystem::rename(temp, collection());
+}
+
+}  // namespace mcdyna::io

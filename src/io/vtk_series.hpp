@@ -1,0 +1,33 @@
+#pragma once
+/// d3plot-like VTK output: one XML unstructured-grid file per state (binary, zlib) written with
+/// VTK's own writer, and a ParaView collection d3plot.pvd listing the states with their times.
+/// Each file is written under a temporary name and renamed, so every file on disk is complete
+/// even if the run is killed.
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "solver/state.hpp"
+
+namespace mcdyna::io {
+
+class VtkSeries {
+ public:
+  /// Files go to dir/<base>.pvd and dir/<base>_NNNN.vtu.
+  VtkSeries(std::filesystem::path dir, std::string base = "d3plot");
+
+  /// Writes the state at its current time; `velocity` are the nodal velocities at that time.
+  void write(const solver::State& state, const Eigen::Matrix3Xd& velocity);
+  [[nodiscard]] std::size_t states() const { return entries_.size(); }
+  [[nodiscard]] std::filesystem::path collection() const { return dir_ / (base_ + ".pvd"); }
+
+ private:
+  void write_collection() const;
+  std::filesystem::path dir_;
+  std::string base_;
+  std::vector<std::pair<double, std::string>> entries_;
+};
+
+}  // namespace mcdyna::io

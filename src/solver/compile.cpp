@@ -1,0 +1,246 @@
+// compile(): nodes, parts, deformable solid blocks and their materials; then the rigid bodies,
+// constraints, motions, initial velocities and walls (compile_*.cpp).
+#include "solver/compile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/fe/hex_geometry.hpp"
+
+namespace mcdyna::solver {
+
+namespace detail {
+
+std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set) {
+  std::vector<Index> out;
+  const model::NodeSet* ns = m.node_set(set);
+  if (ns == nullptr) return out;
+  for (const model::Id id : ns->nodes) {
+    const auto i = m.index.nodes.find(id);
+    if (i != model::IdIndex::kNone) out.push_back(static_cast<Index>(i));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+Index curve_index(const model::ModelDatabase& m, model::Id id) {
+  const auto i = m.index.curves.find(id);
+  return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
+}
+
+namespace {
+
+HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
+                             BulkViscosityParams& q) {
+  HourglassParams hg;
+  if (m.controls.hourglass) {
+    hg.type = m.controls.hourglass->type == 0 ? 1 : m.controls.hourglass->type;
+    hg.coefficient = m.controls.hourglass->coefficient;
+  }
+  if (m.controls.bulk_viscosity) {
+    q.quadratic = m.controls.bulk_viscosity->quadratic;
+    q.linear = m.controls.bulk_viscosity->linear;
+  }
+  if (part.hourglass != 0) {
+    for (const model::Hourglass& h : m.hourglasses) {
+      if (h.id != part.hourglass) continue;
+      hg.type = h.type == 0 ? 1 : h.type;
+      hg.coefficient = h.coefficient;
+      q.quadratic = h.quadratic_bulk_viscosity;
+      q.linear = h.linear_bulk_viscosity;
+    }
+  }
+  return hg;
+}
+
+// Volume the formulation itself measures (so the relative volume starts at exactly 1).
+double formulation_volume(const hex::Corners& x, SolidFormulation f) {
+  if (f == SolidFormulation::one_point) return 8.0 * hex::centre_gradients(x).det;
+  const double gp = 1.0 / std::sqrt(3.0);
+  double v = 0.0;
+  for (const auto& corner : hex::kXi) {
+    const double at[3] = {gp * corner[0], gp * corner[1], gp * corner[2]};
+    double g[8][3];
+    hex::parent_gradients(at, g);
+    v += hex::gradients(x, g).det;
+  }
+  return v;
+}
+
+void build_corner_lists(State& s) {
+  Nodes& nd = s.nodes;
+  const auto n = static_cast<std::size_t>(nd.count());
+  nd.corner_offsets.assign(n + 1, 0);
+  for (const auto& conn : s.solids.nodes)
+    for (const Index v : conn)
+      ++nd.corner_offsets[static_cast<std::size_t>(v) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    nd.corner_offsets[i + 1] += nd.corner_offsets[i];
+  nd.corners.assign(static_cast<std::size_t>(nd.corner_offsets[n]), 0);
+  std::vector<Index> fill(nd.corner_offsets.begin(), nd.corner_offsets.end() - 1);
+  for (std::size_t e = 0; e < s.solids.nodes.size(); ++e)
+    for (int c = 0; c < 8; ++c) {
+      const auto v = static_cast<std::size_t>(s.solids.nodes[e][static_cast<std::size_t>(c)]);
+      nd.corners[static_cast<std::size_t>(fill[v]++)] = static_cast<Index>(8 * e) + c;
+    }
+}
+
+void allocate_solid_state(State& s, Index points, bool back_stress) {
+  Solids& so = s.solids;
+  const auto n = static_cast<std::size_t>(so.count());
+  so.volume = so.initial_volume;
+  so.internal_energy.assign(n, 0.0);
+  so.hourglass_energy.assign(n, 0.0);
+  so.hourglass_force.assign(12 * n, 0.0);
+  so.viscosity.assign(n, 0.0);
+  so.time_step.assign(n, 0.0);
+  so.added_mass.assign(n, 0.0);
+  so.eroded.assign(n, 0);
+  so.corner_force.assign(24 * n, 0.0);
+  so.pressure.assign(n, 0.0);
+  so.points.deviator.setZero(6, points);
+  if (back_stress) so.points.back_stress.setZero(6, points);
+  so.points.plastic_strain.assign(static_cast<std::size_t>(points), 0.0);
+  so.points.damage.assign(static_cast<std::size_t>(points), 0.0);
+}
+
+}  // namespace
+
+void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  Nodes& nd = s.nodes;
+  const auto nn = static_cast<Index>(m.nodes.size());
+  nd.initial.resize(3, nn);
+  for (Index i = 0; i < nn; ++i) {
+    const model::Node& node = m.nodes[static_cast<std::size_t>(i)];
+    nd.ids.push_back(node.id);
+    nd.initial.col(i) = Vec3(node.position[0], node.position[1], node.position[2]);
+  }
+  nd.position = nd.initial;
+  nd.velocity.setZero(3, nn);
+  nd.acceleration.setZero(3, nn);
+  nd.force.setZero(3, nn);
+  nd.mass.assign(static_cast<std::size_t>(nn), 0.0);
+  nd.added_mass.assign(static_cast<std::size_t>(nn), 0.0);
+  nd.rigid_body.assign(static_cast<std::size_t>(nn), -1);
+
+  // Parts in deck order; solids grouped per deformable part into blocks.
+  std::vector<std::vector<std::size_t>> by_part(m.parts.size());
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    const auto p = m.index.parts.find(m.solids[e].part);
+    if (p != model::IdIndex::kNone) by_part[static_cast<std::size_t>(p)].push_back(e);
+  }
+  Solids& so = s.solids;
+  Index points = 0;
+  bool back = false;
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    const model::Part& part = m.parts[p];
+    PartInfo info{part.id, part.heading, -1, -1, part.material};
+    const model::Material* mat = m.material(part.material);
+    const model::Section* sec = m.section(part.section);
+    const bool rigid = mat != nullptr && mat->kind == model::MaterialKind::rigid;
+    if (!rigid && !by_part[p].empty() && sec != nullptr) {
+      if (sec->kind == model::SectionKind::solid_spg) {
+        d.error(part.section_loc,
+                "part {}: SPG particles (ELFORM 47) are not run by this version "
+                "of the solver",
+                part.id);
+      }
+      SolidBlock b;
+      b.part = static_cast<Index>(p);
+      b.formulation = sec->element_formulation == 2 ? SolidFormulation::selective_reduced
+                                                    : SolidFormulation::one_point;
+      b.points_per_element = b.formulation == SolidFormulation::one_point ? 1 : 8;
+      b.hourglass = hourglass_of(m, part, b.bulk_viscosity);
+      b.material = static_cast<Index>(s.materials.size());
+      s.materials.push_back(compile_material(m, part, d));
+      info.material = b.material;
+      b.begin = so.count();
+      b.point_begin = points;
+      const Material& cm = s.materials.back();
+      for (const std::size_t e : by_part[p]) {
+        const model::SolidElement& el = m.solids[e];
+        std::array<Index, 8> conn{};
+        hex::Corners x{};
+        for (int c = 0; c < 8; ++c) {
+          conn[static_cast<std::size_t>(c)] =
+              static_cast<Index>(m.index.nodes.find(el.nodes[static_cast<std::size_t>(c)]));
+          for (int k = 0; k < 3; ++k)
+            x[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] =
+                nd.initial(k, conn[static_cast<std::size_t>(c)]);
+        }
+        const double v0 = formulation_volume(x, b.formulation);
+        if (!(v0 > 0.0)) {
+          d.error(el.loc,
+                  "solid element {} of part {} has non-positive volume {:.4g} "
+                  "(node order inverted or element collapsed)",
+                  el.id, part.id, v0);
+        }
+        so.ids.push_back(el.id);
+        so.nodes.push_back(conn);
+        so.part.push_back(static_cast<Index>(p));
+        so.initial_volume.push_back(v0);
+        so.mass.push_back(cm.density * v0);
+        so.eos_energy.push_back(cm.eos.initial_energy);
+        so.temperature.push_back(cm.model == MaterialModel::johnson_cook ? cm.room_temperature
+                                                                         : 0.0);
+        for (const Index v : conn)
+          nd.mass[static_cast<std::size_t>(v)] += cm.density * v0 / 8.0;
+      }
+      b.end = so.count();
+      points += (b.end - b.begin) * b.points_per_element;
+      back = back || cm.has_back_stress();
+      so.blocks.push_back(b);
+    }
+    s.parts.push_back(info);
+  }
+  allocate_solid_state(s, points, back);
+  build_corner_lists(s);
+}
+
+}  // namespace detail
+
+std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics& diags) {
+  const std::size_t errors = diags.error_count();
+  auto s = std::make_unique<State>();
+  s->title = m.title;
+  for (const model::Curve& c : m.curves)
+    s->curves.emplace_back(c);
+  for (const model::Contact& c : m.contacts) {
+    diags.error(c.loc, "contact {} is not run by this version of the solver", c.id);
+  }
+  detail::compile_nodes_and_solids(m, *s, diags);
+  detail::compile_rigid_bodies(m, *s, diags);
+  detail::compile_constraints(m, *s, diags);
+  detail::compile_motions(m, *s, diags);
+  detail::compile_initial_velocities(m, *s, diags);
+  detail::compile_rigid_walls(m, *s, diags);
+
+  TimeControl& tc = s->time_control;
+  if (m.controls.termination) {
+    tc.end_time = m.controls.termination->end_time;
+    tc.end_cycle = m.controls.termination->end_cycle;
+    tc.min_step_factor = m.controls.termination->min_step_factor;
+  }
+  if (m.controls.time_step) {
+    const model::TimeStepControl& t = *m.controls.time_step;
+    tc.scale_factor = t.scale_factor > 0.0 ? t.scale_factor : 0.9;
+    if (t.scale_factor < 0.0) {
+      diags.error(t.loc, "*CONTROL_TIMESTEP: TSSFAC < 0 (a curve) is not supported");
+    }
+    tc.initial_step = t.initial_step;
+    tc.mass_scaling_step = t.mass_scaling_step;
+    if (t.max_step_curve != 0) {
+      tc.max_step_curve = detail::curve_index(m, t.max_step_curve);
+      if (tc.max_step_curve < 0) {
+        diags.error(t.loc, "*CONTROL_TIMESTEP: LCTM {} is not a defined curve", t.max_step_curve);
+      }
+    }
+  }
+  s->mass_scaling_dt =
+      tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
+  if (diags.error_count() > errors) return nullptr;
+  return s;
+}
+
+}  // namespace mcdyna::solver

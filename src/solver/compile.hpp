@@ -1,0 +1,31 @@
+#pragma once
+/// Model database -> solver State. Runs once after the deck checks. Everything the solver cannot
+/// run is reported as an error at the deck location that asks for it; nothing is dropped silently.
+#include <memory>
+
+#include "core/diagnostics.hpp"
+#include "model/model_database.hpp"
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// Returns the state, or nullptr when errors were reported (the model must have passed
+/// model::check, which builds the ID indices this uses).
+std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnostics& diags);
+
+namespace detail {
+// The pieces of compile(), in the order it runs them (compile_*.cpp).
+void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+Material compile_material(const model::ModelDatabase& m, const model::Part& part,
+                          core::Diagnostics& d);
+/// Solver indices of the nodes of a node set (sorted, unique); empty + error if unknown.
+std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
+Index curve_index(const model::ModelDatabase& m, model::Id id);
+}  // namespace detail
+
+}  // namespace mcdyna::solver

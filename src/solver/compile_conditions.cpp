@@ -1,0 +1,333 @@
+// SPC and *NODE TC constraints, prescribed motions, initial velocities and planar rigid walls.
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <map>
+
+#include "solver/compile.hpp"
+
+namespace mcdyna::solver::detail {
+
+namespace {
+
+const model::Box* box_of(const model::ModelDatabase& m, model::Id id) {
+  if (id == 0) return nullptr;
+  const auto i = m.index.boxes.find(id);
+  return i == model::IdIndex::kNone ? nullptr : &m.boxes[static_cast<std::size_t>(i)];
+}
+
+bool inside(const model::Box* box, const Vec3& x) {
+  if (box == nullptr) return true;
+  for (int k = 0; k < 3; ++k)
+    if (x[k] < box->min[static_cast<std::size_t>(k)] ||
+        x[k] > box->max[static_cast<std::size_t>(k)])
+      return false;
+  return true;
+}
+
+std::vector<Index> all_nodes(const State& s) {
+  std::vector<Index> out(static_cast<std::size_t>(s.nodes.count()));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = static_cast<Index>(i);
+  return out;
+}
+
+std::vector<Index> nodes_of_parts(const model::ModelDatabase& m, const State& s,
+                                  const std::vector<model::Id>& parts) {
+  std::vector<char> in_part(m.parts.size(), 0);
+  for (const model::Id p : parts) {
+    const auto i = m.index.parts.find(p);
+    if (i != model::IdIndex::kNone) in_part[static_cast<std::size_t>(i)] = 1;
+  }
+  std::vector<char> mark(static_cast<std::size_t>(s.nodes.count()), 0);
+  auto take = [&](model::Id part, auto const& ids) {
+    const auto i = m.index.parts.find(part);
+    if (i == model::IdIndex::kNone || !in_part[static_cast<std::size_t>(i)]) return;
+    for (const model::Id n : ids) {
+      const auto k = m.index.nodes.find(n);
+      if (k != model::IdIndex::kNone) mark[static_cast<std::size_t>(k)] = 1;
+    }
+  };
+  for (const auto& e : m.solids)
+    take(e.part, e.nodes);
+  for (const auto& e : m.shells)
+    take(e.part, e.nodes);
+  std::vector<Index> out;
+  for (std::size_t i = 0; i < mark.size(); ++i)
+    if (mark[i]) out.push_back(static_cast<Index>(i));
+  return out;
+}
+
+Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::SourceLoc& loc,
+                      core::Diagnostics& d) {
+  for (const model::Vector& v : m.vectors) {
+    if (v.id != id) continue;
+    const Vec3 dir(v.head[0] - v.tail[0], v.head[1] - v.tail[1], v.head[2] - v.tail[2]);
+    if (dir.norm() > 0.0) return dir.normalized();
+  }
+  d.error(loc, "*DEFINE_VECTOR {} is missing or has zero length", id);
+  return Vec3::UnitX();
+}
+
+// Velocity of the rigid motion that best fits the given nodal velocities (exact for a rigid
+// field): centroid velocity plus the spin from sum r x v = (sum r^2 I - r r^T) omega.
+void fit_rigid_velocity(const State& s, RigidBody& body) {
+  if (body.nodes.empty()) return;
+  Vec3 xm = Vec3::Zero(), vm = Vec3::Zero();
+  for (const Index n : body.nodes) {
+    xm += s.nodes.initial.col(n);
+    vm += s.nodes.velocity.col(n);
+  }
+  xm /= static_cast<double>(body.nodes.size());
+  vm /= static_cast<double>(body.nodes.size());
+  Mat3 a = Mat3::Zero();
+  Vec3 h = Vec3::Zero();
+  for (const Index n : body.nodes) {
+    const Vec3 r = s.nodes.initial.col(n) - xm;
+    a += r.squaredNorm() * Mat3::Identity() - r * r.transpose();
+    h += r.cross(Vec3(s.nodes.velocity.col(n)) - vm);
+  }
+  const Vec3 omega = a.completeOrthogonalDecomposition().solve(h);
+  body.omega = omega;
+  body.velocity = vm + omega.cross(body.center - xm);
+  body.angular_momentum = body.inertia0 * omega;
+}
+
+}  // namespace
+
+void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  struct Entry {
+    std::uint8_t mask = 0;
+    double birth = 0.0, death = 1.0e20;
+  };
+  std::map<Index, Entry> merged;
+  auto add = [&](Index n, std::uint8_t mask, double birth, double death,
+                 const core::SourceLoc& loc) {
+    if (mask == 0) return;
+    if (s.nodes.rigid_body[static_cast<std::size_t>(n)] >= 0) {
+      d.warning(loc,
+                "constraint on node {} of a rigid body is ignored (constrain the rigid part "
+                "with CMO/CON1/CON2 on *MAT_RIGID)",
+                s.nodes.ids[static_cast<std::size_t>(n)]);
+      return;
+    }
+    auto [it, fresh] = merged.try_emplace(n, Entry{mask, birth, death});
+    if (!fresh) {
+      it->second.mask |= mask;
+      it->second.birth = std::min(it->second.birth, birth);
+      it->second.death = std::max(it->second.death, death);
+    }
+  };
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+    static constexpr std::uint8_t kCodes[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+    const int tc = m.nodes[i].translation_constraint;
+    if (tc > 0 && tc <= 7) add(static_cast<Index>(i), kCodes[tc], 0.0, 1.0e20, m.nodes[i].loc);
+  }
+  for (const model::SpcConstraint& c : m.spcs) {
+    if (c.coordinate_system != 0) {
+      d.error(c.loc, "SPC in local coordinate system {} is not supported", c.coordinate_system);
+      continue;
+    }
+    const std::uint8_t mask = static_cast<std::uint8_t>(
+        (c.fixed[0] ? 1 : 0) | (c.fixed[1] ? 2 : 0) | (c.fixed[2] ? 4 : 0));
+    if (c.is_set) {
+      for (const Index n : node_set_nodes(m, c.target))
+        add(n, mask, c.birth, c.death, c.loc);
+    } else {
+      add(static_cast<Index>(m.index.nodes.find(c.target)), mask, c.birth, c.death, c.loc);
+    }
+  }
+  NodalConstraints& nc = s.constraints;
+  for (const auto& [n, e] : merged) {
+    nc.nodes.push_back(n);
+    nc.masks.push_back(e.mask);
+    nc.birth.push_back(e.birth);
+    nc.death.push_back(e.death);
+  }
+  nc.reaction.setZero(3, static_cast<Index>(nc.nodes.size()));
+}
+
+void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  for (const model::PrescribedMotion& pm : m.prescribed_motions) {
+    const int dof = pm.dof;
+    if (pm.kind < 0 || pm.kind > 2) {
+      d.error(pm.loc,
+              "prescribed motion VAD = {} is not supported (0 velocity, 1 acceleration, 2 "
+              "displacement)",
+              pm.kind);
+      continue;
+    }
+    const Index curve = curve_index(m, pm.curve);
+    if (curve < 0) {
+      d.error(pm.curve_loc, "prescribed motion: LCID {} is not a defined curve", pm.curve);
+      continue;
+    }
+    const double death = pm.death == 0.0 ? 1.0e28 : pm.death;
+    if (pm.target_kind == model::MotionTarget::rigid_part) {
+      const auto p = m.index.parts.find(pm.target);
+      const Index b =
+          p == model::IdIndex::kNone ? -1 : s.parts[static_cast<std::size_t>(p)].rigid_body;
+      if (b < 0) {
+        d.error(pm.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not a *MAT_RIGID part",
+                pm.target);
+        continue;
+      }
+      if (dof < 1 || dof > 8) {
+        d.error(pm.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: DOF = {} is not supported (1-8)", dof);
+        continue;
+      }
+      RigidMotion rm{dof, pm.kind, curve, pm.scale, Vec3::UnitX(), pm.birth, death};
+      if (dof == 4 || dof == 8) rm.direction = vector_direction(m, pm.vector, pm.vector_loc, d);
+      s.rigid_bodies[static_cast<std::size_t>(b)].motions.push_back(rm);
+      continue;
+    }
+    if (dof < 1 || dof > 4) {
+      d.error(pm.loc,
+              "prescribed nodal motion DOF = {} is not supported: solid nodes have "
+              "translations only (1-3 x/y/z, 4 along VID)",
+              dof);
+      continue;
+    }
+    NodalMotion nm;
+    nm.id = pm.id;
+    nm.nodes = pm.target_kind == model::MotionTarget::node_set
+                   ? node_set_nodes(m, pm.target)
+                   : std::vector<Index>{static_cast<Index>(m.index.nodes.find(pm.target))};
+    for (const Index n : nm.nodes) {
+      if (s.nodes.rigid_body[static_cast<std::size_t>(n)] >= 0) {
+        d.error(pm.loc,
+                "prescribed motion on node {} of a rigid body; use "
+                "*BOUNDARY_PRESCRIBED_MOTION_RIGID",
+                s.nodes.ids[static_cast<std::size_t>(n)]);
+      }
+    }
+    nm.dof = dof;
+    nm.kind = pm.kind;
+    nm.curve = curve;
+    nm.scale = pm.scale;
+    nm.birth = pm.birth;
+    nm.death = death;
+    if (dof == 4) nm.direction = vector_direction(m, pm.vector, pm.vector_loc, d);
+    s.nodal_motions.push_back(std::move(nm));
+  }
+}
+
+void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  auto& v = s.nodes.velocity;
+  for (const model::InitialVelocity& iv : m.initial_velocities) {
+    const Vec3 vel(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
+    switch (iv.kind) {
+      case model::InitialVelocityKind::per_node:
+        v.col(static_cast<Index>(m.index.nodes.find(iv.target))) = vel;
+        break;
+      case model::InitialVelocityKind::by_set: {
+        const model::Box* box = box_of(m, iv.box);
+        std::vector<Index> nodes = iv.target == 0 ? all_nodes(s) : node_set_nodes(m, iv.target);
+        std::vector<Index> exempt =
+            iv.exempted_set == 0 ? std::vector<Index>{} : node_set_nodes(m, iv.exempted_set);
+        const Vec3 ve(iv.exempted_velocity[0], iv.exempted_velocity[1], iv.exempted_velocity[2]);
+        for (const Index n : nodes) {
+          if (!inside(box, s.nodes.initial.col(n))) continue;
+          const bool ex = std::binary_search(exempt.begin(), exempt.end(), n);
+          v.col(n) = ex ? ve : vel;
+        }
+        if (iv.angular_velocity != model::Vec3{}) {
+          d.warning(iv.loc,
+                    "*INITIAL_VELOCITY: rotational velocities VXR/VYR/VZR apply to nodal "
+                    "rotations, which solid nodes do not have; ignored");
+        }
+        break;
+      }
+      case model::InitialVelocityKind::generation: {
+        std::vector<Index> nodes;
+        if (iv.target == 0) {
+          nodes = all_nodes(s);
+        } else if (iv.target_type == 3) {
+          nodes = node_set_nodes(m, iv.target);
+        } else if (iv.target_type == 2) {
+          nodes = nodes_of_parts(m, s, {iv.target});
+        } else {
+          const model::PartSet* ps = m.part_set(iv.target);
+          if (ps != nullptr) nodes = nodes_of_parts(m, s, ps->parts);
+        }
+        Vec3 axis(iv.axis_direction[0], iv.axis_direction[1], iv.axis_direction[2]);
+        if (iv.omega != 0.0 && !(axis.norm() > 0.0)) {
+          d.error(iv.loc,
+                  "*INITIAL_VELOCITY_GENERATION: OMEGA = {} needs an axis direction "
+                  "(NX = -999, axis by nodes, is not supported)",
+                  iv.omega);
+          break;
+        }
+        if (axis.norm() > 0.0) axis.normalize();
+        const Vec3 c(iv.axis_point[0], iv.axis_point[1], iv.axis_point[2]);
+        for (const Index n : nodes)
+          v.col(n) = vel + iv.omega * axis.cross(Vec3(s.nodes.initial.col(n)) - c);
+        break;
+      }
+    }
+  }
+  for (RigidBody& body : s.rigid_bodies) {
+    fit_rigid_velocity(s, body);
+    for (std::size_t k = 0; k < body.nodes.size(); ++k)
+      v.col(body.nodes[k]) =
+          body.velocity + body.omega.cross(Vec3(body.offsets.col(static_cast<Index>(k))));
+  }
+}
+
+void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  for (const model::RigidWall& w : m.rigid_walls) {
+    RigidWallState rw;
+    rw.id = w.id != 0 ? w.id : static_cast<model::Id>(s.rigid_walls.size() + 1);
+    rw.point = Vec3(w.tail[0], w.tail[1], w.tail[2]);
+    const Vec3 n = Vec3(w.head[0], w.head[1], w.head[2]) - rw.point;
+    if (!(n.norm() > 0.0)) {
+      d.error(w.loc, "*RIGIDWALL_PLANAR: the normal (head - tail) has zero length");
+      continue;
+    }
+    rw.normal = n.normalized();
+    if (w.friction >= 2.0) {
+      d.error(w.loc, "*RIGIDWALL_PLANAR: FRIC = {} (welding) is not supported", w.friction);
+    }
+    rw.friction = w.friction;
+    rw.birth = w.birth;
+    rw.death = w.death == 0.0 ? 1.0e20 : w.death;
+    if (w.finite) {
+      rw.finite = true;
+      const Vec3 l = Vec3(w.edge_head[0], w.edge_head[1], w.edge_head[2]) - rw.point;
+      const Vec3 lp = l - l.dot(rw.normal) * rw.normal;
+      if (!(lp.norm() > 0.0)) {
+        d.error(w.loc, "*RIGIDWALL_PLANAR_FINITE: edge vector l is parallel to the normal");
+        continue;
+      }
+      rw.edge_l = lp.normalized();
+      rw.edge_m = rw.normal.cross(rw.edge_l);
+      rw.length_l = w.length_l;
+      rw.length_m = w.length_m;
+    }
+    if (w.moving) {
+      rw.moving = true;
+      rw.mass = w.mass;
+      rw.velocity = w.initial_velocity;
+      if (!(w.mass > 0.0)) d.error(w.loc, "*RIGIDWALL_PLANAR_MOVING: MASS must be > 0");
+    }
+    const model::Box* box = box_of(m, w.box);
+    std::vector<Index> nodes = w.node_set == 0 ? all_nodes(s) : node_set_nodes(m, w.node_set);
+    std::vector<Index> exempt =
+        w.exempted_set == 0 ? std::vector<Index>{} : node_set_nodes(m, w.exempted_set);
+    for (const Index node : nodes) {
+      const auto i = static_cast<std::size_t>(node);
+      if (s.nodes.rigid_body[i] >= 0 || !(s.nodes.mass[i] > 0.0)) continue;
+      if (std::binary_search(exempt.begin(), exempt.end(), node)) continue;
+      const Vec3 x = s.nodes.initial.col(node);
+      if (!inside(box, x)) continue;
+      if (w.node_set == 0 && w.offset > 0.0) {
+        const double dist = (x - rw.point).dot(rw.normal);
+        if (dist < 0.0 || dist > w.offset) continue;
+      }
+      rw.nodes.push_back(node);
+    }
+    s.rigid_walls.push_back(std::move(rw));
+  }
+}
+
+}  // namespace mcdyna::solver::detail

@@ -1,0 +1,177 @@
+// Deck materials (+ the part's EOS and *MAT_ADD_EROSION) -> solver Material.
+#include <algorithm>
+
+#include "solver/compile.hpp"
+
+namespace mcdyna::solver::detail {
+
+namespace {
+
+void elastic_moduli(Material& out, double e, double nu) {
+  out.shear_modulus = e / (2.0 * (1.0 + nu));
+  out.bulk_modulus = e / (3.0 * (1.0 - 2.0 * nu));
+}
+
+EosParams compile_eos(const model::Eos& e) {
+  EosParams p;
+  if (e.kind == model::EosKind::gruneisen) {
+    p.kind = EosModel::gruneisen;
+    p.sound_speed = e.sound_speed;
+    p.s1 = e.s[0];
+    p.s2 = e.s[1];
+    p.s3 = e.s[2];
+    p.gamma0 = e.gamma0;
+    p.volume_correction = e.volume_correction;
+  } else {
+    p.kind = EosModel::linear_polynomial;
+    p.c = e.c;
+  }
+  p.initial_energy = e.initial_energy;
+  return p;
+}
+
+// MAT_024 hardening: LCSS curve (plastic strain -> yield stress), else the EPS/ES pairs, else
+// bilinear from SIGY and ETAN.
+void piecewise_hardening(const model::ModelDatabase& m, const model::Material& mat, Material& out,
+                         core::Diagnostics& d) {
+  const auto& p = mat.piecewise_linear;
+  if (p.stress_strain_curve != 0) {
+    const Index c = curve_index(m, p.stress_strain_curve);
+    if (c < 0) {
+      d.error(mat.loc,
+              "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: LCSS {} is not a *DEFINE_CURVE "
+              "(tables are not supported)",
+              mat.id, p.stress_strain_curve);
+      return;
+    }
+    const model::Curve& curve = m.curves[static_cast<std::size_t>(c)];
+    for (const auto& [a, o] : curve.points) {
+      out.curve_strain.push_back(curve.abscissa_scale * a + curve.abscissa_offset);
+      out.curve_stress.push_back(curve.ordinate_scale * o + curve.ordinate_offset);
+    }
+  } else if (!p.points.empty()) {
+    for (const auto& [eps, sig] : p.points) {
+      out.curve_strain.push_back(eps);
+      out.curve_stress.push_back(sig);
+    }
+  } else {
+    const double ep = p.tangent_modulus * p.youngs_modulus / (p.youngs_modulus - p.tangent_modulus);
+    out.curve_strain = {0.0, 1.0};
+    out.curve_stress = {p.yield_stress, p.yield_stress + ep};
+  }
+  if (out.curve_strain.size() < 1 ||
+      !std::is_sorted(out.curve_strain.begin(), out.curve_strain.end())) {
+    d.error(mat.loc,
+            "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: the hardening curve needs increasing "
+            "plastic strains",
+            mat.id);
+  }
+  if (p.strain_rate_curve != 0) {
+    d.error(mat.loc,
+            "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: LCSR (strain-rate curve) is not "
+            "supported; use SRC/SRP (Cowper-Symonds)",
+            mat.id);
+  }
+}
+
+void johnson_cook(const model::Material& mat, Material& out, core::Diagnostics& d) {
+  const auto& j = mat.johnson_cook;
+  out.model = MaterialModel::johnson_cook;
+  out.shear_modulus = j.shear_modulus;
+  out.bulk_modulus = 0.0;  // the EOS gives the pressure
+  out.jc_a = j.a;
+  out.jc_b = j.b;
+  out.jc_n = j.n;
+  out.jc_c = j.c;
+  out.jc_m = j.m;
+  out.melt_temperature = j.melt_temperature;
+  out.room_temperature = j.room_temperature;
+  out.reference_rate = j.reference_strain_rate > 0.0 ? j.reference_strain_rate : 1.0;
+  out.specific_heat = j.specific_heat;
+  out.pressure_cutoff = j.pressure_cutoff;
+  out.spall = static_cast<int>(j.spall_type);
+  out.damage = j.damage;
+  out.min_failure_strain = j.min_failure_strain;
+  const bool any = std::any_of(j.damage.begin(), j.damage.end(), [](double x) { return x != 0.0; });
+  out.damage_active = any && j.erode_flag == 0.0;
+  if (j.viscoplastic != 0.0) {
+    d.warning(mat.loc,
+              "*MAT_JOHNSON_COOK {}: VP = {} (viscoplastic) runs as VP = 0 (scaled yield "
+              "stress)",
+              mat.id, j.viscoplastic);
+  }
+}
+
+}  // namespace
+
+Material compile_material(const model::ModelDatabase& m, const model::Part& part,
+                          core::Diagnostics& d) {
+  const model::Material& mat = *m.material(part.material);
+  Material out;
+  out.id = mat.id;
+  out.density = mat.density;
+  switch (mat.kind) {
+    case model::MaterialKind::elastic:
+      out.model = MaterialModel::elastic;
+      elastic_moduli(out, mat.elastic.youngs_modulus, mat.elastic.poisson_ratio);
+      break;
+    case model::MaterialKind::plastic_kinematic: {
+      const auto& p = mat.plastic_kinematic;
+      out.model = MaterialModel::plastic_kinematic;
+      elastic_moduli(out, p.youngs_modulus, p.poisson_ratio);
+      out.yield_stress = p.yield_stress;
+      out.hardening_modulus =
+          p.tangent_modulus * p.youngs_modulus / (p.youngs_modulus - p.tangent_modulus);
+      out.isotropic_fraction = p.hardening_mix;
+      out.cowper_symonds_c = p.cowper_symonds_c;
+      out.cowper_symonds_p = p.cowper_symonds_p;
+      out.failure_strain = p.failure_strain;
+      if (p.viscoplastic != 0.0) {
+        d.warning(mat.loc,
+                  "*MAT_PLASTIC_KINEMATIC {}: VP = {} runs as VP = 0 (scaled yield "
+                  "stress)",
+                  mat.id, p.viscoplastic);
+      }
+      break;
+    }
+    case model::MaterialKind::piecewise_linear: {
+      const auto& p = mat.piecewise_linear;
+      out.model = MaterialModel::piecewise_linear;
+      elastic_moduli(out, p.youngs_modulus, p.poisson_ratio);
+      out.cowper_symonds_c = p.cowper_symonds_c;
+      out.cowper_symonds_p = p.cowper_symonds_p;
+      out.failure_strain =
+          p.failure_strain < 1.0e20 && p.failure_strain > 0.0 ? p.failure_strain : 0.0;
+      piecewise_hardening(m, mat, out, d);
+      break;
+    }
+    case model::MaterialKind::johnson_cook:
+      johnson_cook(mat, out, d);
+      break;
+    case model::MaterialKind::rigid:
+      break;  // rigid parts become rigid bodies, never elements
+  }
+  if (part.eos != 0) {
+    const auto e = m.index.equations_of_state.find(part.eos);
+    if (e != model::IdIndex::kNone) {
+      out.eos = compile_eos(m.equations_of_state[static_cast<std::size_t>(e)]);
+    }
+  }
+  for (const model::Erosion& er : m.erosions) {
+    if (er.material != mat.id) continue;
+    out.erosion_plastic_strain = er.effective_plastic_strain;
+    const bool other =
+        er.max_pressure != 0.0 || er.min_principal_strain != 0.0 || er.volumetric_strain != 0.0 ||
+        er.min_pressure != 0.0 || er.max_principal_stress != 0.0 || er.equivalent_stress != 0.0 ||
+        er.max_principal_strain != 0.0 || er.shear_strain != 0.0 || er.failure_time != 0.0;
+    if (other) {
+      d.error(er.loc,
+              "*MAT_ADD_EROSION for material {}: only EPSP (effective plastic strain) is "
+              "supported; remove the other criteria",
+              mat.id);
+    }
+  }
+  return out;
+}
+
+}  // namespace mcdyna::solver::detail

@@ -1,0 +1,56 @@
+#pragma once
+/// The explicit time loop (central difference, LS-DYNA step semantics) and the hooks through
+/// which io/ and the command line watch it. The solver never writes files itself.
+#include <Eigen/Core>
+
+#include <array>
+#include <functional>
+#include <string>
+
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// Wall-clock seconds per phase of the cycle.
+struct PhaseTimes {
+  static constexpr int kCount = 5;
+  enum Phase { elements, boundary, rigid, output, other };
+  std::array<double, kCount> seconds{};
+  static const char* name(int p);
+};
+
+/// Why the run ended.
+enum class StopReason {
+  end_time,
+  end_cycle,
+  interrupted,
+  inverted_element,
+  non_finite,
+  step_collapse
+};
+
+struct RunResult {
+  StopReason reason = StopReason::end_time;
+  std::string message;  ///< diagnostic for the abnormal stops (names element/node, part, time)
+  PhaseTimes phases;
+  double wall_seconds = 0.0;
+  long element_cycles = 0;  ///< deformable element updates performed
+};
+
+struct RunHooks {
+  /// Asked at t^n before the velocities advance: is an output state due now?
+  std::function<bool(const State&)> output_due;
+  /// Writes the state at t^n. The state holds v^{n+1/2}; `previous` holds v^{n-1/2} (energies
+  /// use both, see solver/energy.hpp). `final` is set for the last state of the run (normal end,
+  /// interruption or error stop).
+  std::function<void(const State&, const Eigen::Matrix3Xd& previous, bool final)> write;
+  /// Polled every cycle (signals).
+  std::function<bool()> stop_requested;
+  /// Called every cycle after the step (progress display decides how often to print).
+  std::function<void(const State&)> progress;
+};
+
+/// Runs the state from its current time to ENDTIM / ENDCYC or until something stops it.
+RunResult run(State& state, const RunHooks& hooks);
+
+}  // namespace mcdyna::solver

@@ -1,0 +1,73 @@
+#include "solver/energy.hpp"
+
+namespace mcdyna::solver {
+
+namespace {
+double rigid_kinetic(const RigidBody& b) {
+  return 0.5 * b.mass * b.previous_velocity.dot(b.velocity) +
+         0.5 * b.previous_omega.dot(b.inertia() * b.omega);
+}
+}  // namespace
+
+EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
+  EnergySummary e;
+  const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+  const Solids& so = s.solids;
+  for (std::size_t i = 0; i < so.ids.size(); ++i) {
+    (so.eroded[i] ? e.eroded_internal : e.internal) += so.internal_energy[i];
+    (so.eroded[i] ? e.eroded_hourglass : e.hourglass) += so.hourglass_energy[i];
+  }
+  for (const RigidWallState& w : s.rigid_walls)
+    e.stonewall += w.energy;
+  for (const NodalMotion& m : s.nodal_motions)
+    e.external_work += m.work;
+  for (const RigidBody& b : s.rigid_bodies) {
+    e.kinetic += rigid_kinetic(b);
+    e.external_work += b.constraint_work;
+    e.momentum += b.mass * 0.5 * (b.velocity + b.previous_velocity);
+    e.mass += b.mass;
+  }
+  const Nodes& nd = s.nodes;
+  for (Index n = 0; n < nd.count(); ++n) {
+    const auto i = static_cast<std::size_t>(n);
+    e.added_mass += nd.added_mass[i];
+    if (nd.rigid_body[i] >= 0) continue;
+    e.kinetic += 0.5 * nd.mass[i] * previous.col(n).dot(velocity.col(n));
+    e.momentum += 0.5 * nd.mass[i] * (previous.col(n) + velocity.col(n));
+    e.mass += nd.mass[i];
+  }
+  e.total =
+      e.kinetic + e.internal + e.hourglass + e.stonewall + e.eroded_internal + e.eroded_hourglass;
+  return e;
+}
+
+std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& previous) {
+  const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+  std::vector<PartSummary> out(s.parts.size());
+  for (std::size_t p = 0; p < s.parts.size(); ++p)
+    out[p].part = s.parts[p].id;
+  const Solids& so = s.solids;
+  for (std::size_t e = 0; e < so.ids.size(); ++e) {
+    PartSummary& ps = out[static_cast<std::size_t>(so.part[e])];
+    (so.eroded[e] ? ps.eroded_internal : ps.internal) += so.internal_energy[e];
+    ps.hourglass += so.hourglass_energy[e];
+    ps.added_mass += so.added_mass[e];
+    const double m = so.mass[e] / 8.0;
+    for (const Index n : so.nodes[e]) {
+      ps.kinetic += 0.5 * m * previous.col(n).dot(velocity.col(n));
+      ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+    }
+  }
+  for (std::size_t p = 0; p < s.parts.size(); ++p) {
+    const Index b = s.parts[p].rigid_body;
+    if (b < 0) continue;
+    const RigidBody& body = s.rigid_bodies[static_cast<std::size_t>(b)];
+    const Vec3 v = 0.5 * (body.velocity + body.previous_velocity);
+    out[p].kinetic = rigid_kinetic(body);
+    out[p].momentum = body.mass * v;
+    out[p].rigid_velocity = v;
+  }
+  return out;
+}
+
+}  // namespace mcdyna::solver

@@ -1,0 +1,98 @@
+#pragma once
+/// Geometry of the 8-node hexahedron: shape-function gradients at a point of the parent cube,
+/// the Flanagan-Belytschko hourglass base vectors and the characteristic length LS-DYNA uses for
+/// the time step (volume / largest face area). Node order is LS-DYNA's: 1-4 bottom, 5-8 top.
+#include <array>
+#include <cmath>
+
+namespace mcdyna::solver::hex {
+
+/// Parent coordinates of the corners.
+inline constexpr double kXi[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
+/// Hourglass base vectors: eta*zeta, xi*zeta, xi*eta, xi*eta*zeta at the corners; orthogonal
+/// to the constant and linear fields (Flanagan & Belytschko 1981).
+inline constexpr double kHourglass[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                            {1, -1, -1, 1, -1, 1, 1, -1},
+                                            {1, -1, 1, -1, 1, -1, 1, -1},
+                                            {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+/// Corner coordinates (or velocities): x[corner][component].
+using Corners = std::array<std::array<double, 3>, 8>;
+
+/// Gradients dN/dx of the 8 shape functions at parent point (r, s, t) and det(dx/dxi).
+struct Gradients {
+  double b[8][3];
+  double det;
+};
+
+/// dN_I/dxi_j at parent point p.
+inline void parent_gradients(const double p[3], double g[8][3]) {
+  for (int i = 0; i < 8; ++i) {
+    const double a = 1.0 + kXi[i][0] * p[0], b = 1.0 + kXi[i][1] * p[1], c = 1.0 + kXi[i][2] * p[2];
+    g[i][0] = 0.125 * kXi[i][0] * b * c;
+    g[i][1] = 0.125 * kXi[i][1] * a * c;
+    g[i][2] = 0.125 * kXi[i][2] * a * b;
+  }
+}
+
+/// Gradients at a parent point from the parent gradients g; det <= 0 flags an inverted element.
+inline Gradients gradients(const Corners& x, const double g[8][3]) {
+  double j[3][3] = {};  // j[i][k] = dx_i / dxi_k
+  for (int n = 0; n < 8; ++n)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        j[i][k] += x[n][i] * g[n][k];
+  Gradients out{};
+  const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1];
+  const double c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2];
+  const double c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
+  out.det = j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02;
+  if (!(out.det > 0.0)) return out;
+  const double inv = 1.0 / out.det;
+  // inverse of j: ji[k][i] = dxi_k / dx_i
+  double ji[3][3];
+  ji[0][0] = c00 * inv;
+  ji[1][0] = c01 * inv;
+  ji[2][0] = c02 * inv;
+  ji[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv;
+  ji[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv;
+  ji[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv;
+  ji[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv;
+  ji[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv;
+  ji[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv;
+  for (int n = 0; n < 8; ++n)
+    for (int i = 0; i < 3; ++i)
+      out.b[n][i] = g[n][0] * ji[0][i] + g[n][1] * ji[1][i] + g[n][2] * ji[2][i];
+  return out;
+}
+
+/// Gradients at the element centre: the one-point quadrature of ELFORM 1. Volume = 8 det.
+inline Gradients centre_gradients(const Corners& x) {
+  double g[8][3];
+  for (int n = 0; n < 8; ++n)
+    for (int k = 0; k < 3; ++k)
+      g[n][k] = 0.125 * kXi[n][k];
+  return gradients(x, g);
+}
+
+/// Largest face area (faces as quadrilaterals, area = |d1 x d2| / 2 from the diagonals).
+inline double max_face_area(const Corners& x) {
+  static constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                       {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  double best = 0.0;
+  for (const auto& f : kFaces) {
+    double d1[3], d2[3];
+    for (int i = 0; i < 3; ++i) {
+      d1[i] = x[f[2]][i] - x[f[0]][i];
+      d2[i] = x[f[3]][i] - x[f[1]][i];
+    }
+    const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
+                 cz = d1[0] * d2[1] - d1[1] * d2[0];
+    best = std::max(best, cx * cx + cy * cy + cz * cz);
+  }
+  return 0.5 * std::sqrt(best);
+}
+
+}  // namespace mcdyna::solver::hex

@@ -1,0 +1,119 @@
+#include "solver/loads/loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcdyna::solver {
+
+namespace {
+double nodal_mass(const Nodes& nd, Index n) {
+  const auto i = static_cast<std::size_t>(n);
+  return nd.mass[i] + nd.added_mass[i];
+}
+
+// Work of an impulse J applied during the cycle that took the node from v^{n-1/2} to v^{n+1/2}:
+// J . (v^{n-1/2} + v^{n+1/2}) / 2. With this split the element forces and the boundary impulses
+// add up exactly to the change of 1/2 m v^2 over the cycle (a node pressed against a wall at
+// rest does no work).
+double impulse_work(const Vec3& impulse, const Vec3& v_start, const Vec3& v_end) {
+  return 0.5 * impulse.dot(v_start + v_end);
+}
+}  // namespace
+
+void apply_nodal_constraints(State& state, const StepTimes& t) {
+  NodalConstraints& c = state.constraints;
+  Nodes& nd = state.nodes;
+  for (std::size_t k = 0; k < c.nodes.size(); ++k) {
+    const Index n = c.nodes[k];
+    const auto col = static_cast<Index>(k);
+    c.reaction.col(col).setZero();
+    if (t.time < c.birth[k] || t.time > c.death[k]) continue;
+    const double m = nodal_mass(nd, n);
+    for (int i = 0; i < 3; ++i) {
+      if (!(c.masks[k] & (1u << i))) continue;
+      c.reaction(i, col) = -m * nd.velocity(i, n) / t.mean;
+      nd.velocity(i, n) = 0.0;
+      nd.acceleration(i, n) = 0.0;
+    }
+  }
+}
+
+void apply_nodal_motions(State& state, const StepTimes& t) {
+  Nodes& nd = state.nodes;
+  for (NodalMotion& nm : state.nodal_motions) {
+    nm.force.setZero();
+    if (t.time < nm.birth || t.time > nm.death) continue;
+    const Vec3 axis = nm.dof == 4 ? nm.direction : Vec3::Unit(nm.dof - 1);
+    for (const Index n : nm.nodes) {
+      const Vec3 v = nd.velocity.col(n);
+      const double now = axis.dot(v);
+      double target = 0.0;
+      if (nm.kind == 1) {
+        // `now` includes this cycle's free acceleration; the prescribed one replaces it.
+        const double before = now - t.mean * axis.dot(Vec3(nd.acceleration.col(n)));
+        target = before + t.mean * motion_value(state, nm.curve, nm.scale, nm.birth, t.time);
+      } else if (nm.kind == 2) {
+        const double u = axis.dot(Vec3(nd.position.col(n)) - Vec3(nd.initial.col(n)));
+        target = displacement_velocity(state, nm.curve, nm.scale, nm.birth, u, t.time, t.step);
+      } else {
+        target = motion_value(state, nm.curve, nm.scale, nm.birth, t.time + 0.5 * t.step);
+      }
+      const Vec3 dv = (target - now) * axis;
+      const Vec3 f = nodal_mass(nd, n) * dv / t.mean;
+      const Vec3 v_start = v - t.mean * Vec3(nd.acceleration.col(n));  // v^{n-1/2}
+      nd.velocity.col(n) = v + dv;
+      nd.acceleration.col(n) += dv / t.mean;
+      nm.force += f;
+      nm.work += impulse_work(f * t.mean, v_start, v + dv);
+    }
+  }
+}
+
+void apply_rigid_walls(State& state, const StepTimes& t) {
+  Nodes& nd = state.nodes;
+  for (RigidWallState& w : state.rigid_walls) {
+    w.force.setZero();
+    const bool on = t.time >= w.birth && t.time <= w.death;
+    // Wall plane at the end of the step (a moving wall advances along its normal).
+    const Vec3 point_next = w.point + (w.displacement + w.velocity * t.step) * w.normal;
+    double wall_impulse = 0.0;
+    for (const Index n : w.nodes) {
+      if (!on) break;
+      const Vec3 x = nd.position.col(n);
+      Vec3 v = nd.velocity.col(n);
+      const double gap = (x + t.step * v - point_next).dot(w.normal);
+      if (gap >= 0.0) continue;
+      if (w.finite) {
+        const Vec3 r = x - w.point - w.displacement * w.normal;
+        const double a = r.dot(w.edge_l), b = r.dot(w.edge_m);
+        if ((w.length_l > 0.0 && (a < 0.0 || a > w.length_l)) ||
+            (w.length_m > 0.0 && (b < 0.0 || b > w.length_m)))
+          continue;
+      }
+      const double m = nodal_mass(nd, n);
+      const Vec3 v_before = v;
+      const Vec3 v_start = v - t.mean * Vec3(nd.acceleration.col(n));  // v^{n-1/2}
+      const double dvn = -gap / t.step;  // normal velocity change that lands the node on the wall
+      v += dvn * w.normal;
+      if (w.friction > 0.0) {
+        const Vec3 vt = v - v.dot(w.normal) * w.normal;  // the wall moves along its normal only
+        const double speed = vt.norm();
+        const double allowed = w.friction >= 1.0 ? speed : w.friction * dvn;
+        if (speed > 0.0) v -= std::min(speed, allowed) / speed * vt;
+      }
+      const Vec3 dv = v - v_before;
+      nd.velocity.col(n) = v;
+      nd.acceleration.col(n) += dv / t.mean;
+      w.force -= m * dv / t.mean;
+      wall_impulse += m * dvn;
+      w.energy -= impulse_work(m * dv, v_start, v);
+    }
+    if (w.moving) {
+      // The wall takes the opposite normal impulse (momentum is exchanged, not created).
+      w.velocity -= wall_impulse / w.mass;
+      w.displacement += w.velocity * t.step;
+    }
+  }
+}
+
+}  // namespace mcdyna::solver

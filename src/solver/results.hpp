@@ -1,0 +1,44 @@
+#pragma once
+/// Element results as users see them: the Cauchy stress averaged over the integration points,
+/// von Mises stress, mean effective plastic strain, and damage (the largest of the points).
+#include <array>
+#include <cmath>
+
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+struct ElementResult {
+  std::array<double, 6> stress{};  ///< xx yy zz xy yz zx
+  double von_mises = 0.0;
+  double plastic_strain = 0.0;
+  double damage = 0.0;
+};
+
+inline ElementResult element_result(const State& s, Index e) {
+  ElementResult r;
+  const SolidBlock* block = nullptr;
+  for (const SolidBlock& b : s.solids.blocks)
+    if (e >= b.begin && e < b.end) block = &b;
+  if (block == nullptr) return r;
+  const int np = block->points_per_element;
+  const Index first = block->point_begin + np * (e - block->begin);
+  const auto& pts = s.solids.points;
+  std::array<double, 6> dev{};
+  for (Index p = first; p < first + np; ++p) {
+    for (int k = 0; k < 6; ++k)
+      dev[static_cast<std::size_t>(k)] += pts.deviator(k, p) / np;
+    r.plastic_strain += pts.plastic_strain[static_cast<std::size_t>(p)] / np;
+    r.damage = std::max(r.damage, pts.damage[static_cast<std::size_t>(p)]);
+  }
+  const double p = s.solids.pressure[static_cast<std::size_t>(e)];
+  r.stress = dev;
+  for (int k = 0; k < 3; ++k)
+    r.stress[static_cast<std::size_t>(k)] -= p;
+  const double j2 = 0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]) + dev[3] * dev[3] +
+                    dev[4] * dev[4] + dev[5] * dev[5];
+  r.von_mises = std::sqrt(3.0 * j2);
+  return r;
+}
+
+}  // namespace mcdyna::solver

@@ -1,0 +1,145 @@
+#include "solver/rigid/rigid_bodies.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace mcdyna::solver {
+
+double motion_value(const State& state, Index curve, double scale, double birth, double t) {
+  return scale * state.curves[static_cast<std::size_t>(curve)](t - birth);
+}
+
+double displacement_velocity(const State& state, Index curve, double scale, double birth,
+                             double current, double time, double step) {
+  return (motion_value(state, curve, scale, birth, time + step) - current) / step;
+}
+
+namespace {
+
+// Velocity constraints on one vector quantity (v or omega): unit directions and target values.
+struct DirectionConstraints {
+  Eigen::Matrix<double, 3, Eigen::Dynamic> dirs;
+  std::vector<double> values;
+  void add(const Vec3& d, double value) {
+    dirs.conservativeResize(3, dirs.cols() + 1);
+    dirs.col(dirs.cols() - 1) = d;
+    values.push_back(value);
+  }
+};
+
+// Solves for x with x . c_k = value_k on the constrained directions and A x = b on the free
+// ones (A = M I for translation, the inertia tensor for rotation).
+Vec3 constrained_solve(const Mat3& a, const Vec3& b, const DirectionConstraints& c) {
+  if (c.dirs.cols() == 0) return a.ldlt().solve(b);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(c.dirs.transpose(), Eigen::ComputeFullV);
+  const Index rank = static_cast<Index>(svd.rank());
+  const Eigen::VectorXd vals =
+      Eigen::Map<const Eigen::VectorXd>(c.values.data(), static_cast<Index>(c.values.size()));
+  const Vec3 fixed_part = svd.solve(vals);  // min-norm x satisfying the constraints
+  if (rank >= 3) return fixed_part;
+  const Eigen::MatrixXd free = svd.matrixV().rightCols(3 - rank);  // 3 x f, orthonormal
+  const Eigen::MatrixXd reduced = free.transpose() * a * free;
+  const Eigen::VectorXd rhs = free.transpose() * (b - a * fixed_part);
+  return fixed_part + free * reduced.ldlt().solve(rhs);
+}
+
+bool active(const RigidMotion& m, double t) {
+  return t >= m.birth && t <= m.death;
+}
+
+Vec3 axis_of(const RigidMotion& m) {
+  const int d = m.dof;
+  if (d == 1 || d == 5) return Vec3::UnitX();
+  if (d == 2 || d == 6) return Vec3::UnitY();
+  if (d == 3 || d == 7) return Vec3::UnitZ();
+  return m.direction;
+}
+
+// Target velocity component of a prescribed motion over the step starting at t.
+double target(const State& s, const RigidBody& b, const RigidMotion& m, double previous,
+              double rotated, const StepTimes& t) {
+  const double t_half = t.time + 0.5 * t.step;
+  switch (m.kind) {
+    case 1:
+      return previous + t.mean * motion_value(s, m.curve, m.scale, m.birth, t.time);
+    case 2: {
+      const bool rotation = m.dof >= 5;
+      const double now = rotation ? rotated : axis_of(m).dot(b.center - b.initial_center);
+      return displacement_velocity(s, m.curve, m.scale, m.birth, now, t.time, t.step);
+    }
+    default:
+      return motion_value(s, m.curve, m.scale, m.birth, t_half);
+  }
+}
+
+Mat3 rotation_increment(const Vec3& omega, double dt) {
+  const double angle = omega.norm() * dt;
+  if (angle == 0.0) return Mat3::Identity();
+  return Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix();
+}
+
+}  // namespace
+
+void advance_rigid_bodies(State& state, const StepTimes& t) {
+  Nodes& nd = state.nodes;
+  for (RigidBody& b : state.rigid_bodies) {
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    for (const Index n : b.nodes) {
+      const Vec3 f = nd.force.col(n);
+      force += f;
+      moment += (Vec3(nd.position.col(n)) - b.center).cross(f);
+    }
+    b.force = force;
+    b.moment = moment;
+    const Vec3 v_free = b.velocity + t.mean * force / b.mass;
+    const Vec3 l_free = b.angular_momentum + t.mean * moment;
+    DirectionConstraints lin, ang;
+    for (int k = 0; k < 3; ++k) {
+      if (b.fixed_translation[static_cast<std::size_t>(k)]) lin.add(Vec3::Unit(k), 0.0);
+      if (b.fixed_rotation[static_cast<std::size_t>(k)]) ang.add(Vec3::Unit(k), 0.0);
+    }
+    for (RigidMotion& m : b.motions) {
+      if (!active(m, t.time)) continue;
+      const bool rotation = m.dof >= 5;
+      const Vec3 axis = axis_of(m);
+      const double previous = axis.dot(rotation ? b.omega : b.velocity);
+      const double value = target(state, b, m, previous, m.rotated, t);
+      (rotation ? ang : lin).add(axis, value);
+      if (rotation) m.rotated += value * t.step;
+    }
+    const Mat3 inertia = b.inertia();
+    const Vec3 v_new = constrained_solve(b.mass * Mat3::Identity(), b.mass * v_free, lin);
+    const Vec3 w_new = ang.dirs.cols() == 0 ? Vec3(inertia.ldlt().solve(l_free))
+                                            : constrained_solve(inertia, l_free, ang);
+    b.constraint_force = b.mass * (v_new - v_free) / t.mean;
+    b.angular_momentum = ang.dirs.cols() == 0 ? l_free : Vec3(inertia * w_new);
+    b.constraint_moment = (b.angular_momentum - l_free) / t.mean;
+    b.constraint_work += (b.constraint_force.dot(0.5 * (v_new + b.velocity)) +
+                          b.constraint_moment.dot(0.5 * (w_new + b.omega))) *
+                         t.mean;
+    b.previous_velocity = b.velocity;
+    b.previous_omega = b.omega;
+    b.velocity = v_new;
+    b.omega = w_new;
+    // Node velocities and accelerations at the half step, positions come in place_rigid_nodes.
+    for (const Index n : b.nodes) {
+      const Vec3 r = Vec3(nd.position.col(n)) - b.center;
+      const Vec3 vn = v_new + w_new.cross(r);
+      nd.acceleration.col(n) = (vn - Vec3(nd.velocity.col(n))) / t.mean;
+      nd.velocity.col(n) = vn;
+    }
+  }
+}
+
+void place_rigid_nodes(State& state, double step) {
+  Nodes& nd = state.nodes;
+  for (RigidBody& b : state.rigid_bodies) {
+    b.center += step * b.velocity;
+    b.rotation = rotation_increment(b.omega, step) * b.rotation;
+    for (std::size_t k = 0; k < b.nodes.size(); ++k)
+      nd.position.col(b.nodes[k]) = b.center + b.rotation * b.offsets.col(static_cast<Index>(k));
+  }
+}
+
+}  // namespace mcdyna::solver

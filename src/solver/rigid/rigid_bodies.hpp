@@ -1,0 +1,30 @@
+#pragma once
+/// Rigid-body dynamics for MAT_020 parts. Translation with the mass; rotation with the angular
+/// momentum L as the integrated variable and omega = I(t)^-1 L, so a free body keeps L to
+/// round-off whatever its inertia. Constraints and prescribed motion fix velocity components in
+/// chosen directions; the free components follow from the momentum equations of the rest.
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+struct StepTimes {
+  double time = 0.0;  ///< t^n
+  double step = 0.0;  ///< dt^{n+1/2}: positions advance over it
+  double mean = 0.0;  ///< dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2: velocities advance over it
+};
+
+/// Sums nodal forces into each body, integrates its velocities under constraints and prescribed
+/// motion, then sets its nodes' velocities (half step) and accelerations.
+void advance_rigid_bodies(State& state, const StepTimes& t);
+
+/// Moves rigid-body nodes to x = c + R X (after the body positions are advanced).
+void place_rigid_nodes(State& state, double step);
+
+/// Value of a prescribed motion's curve at time t (SF applied, abscissa shifted by BIRTH).
+double motion_value(const State& state, Index curve, double scale, double birth, double t);
+
+/// Displacement-type (VAD 2) target to velocity over [t, t + step] given the current value.
+double displacement_velocity(const State& state, Index curve, double scale, double birth,
+                             double current, double time, double step);
+
+}  // namespace mcdyna::solver

@@ -1,0 +1,210 @@
+#pragma once
+/// The solver state: compiled once from the model database (solver/compile.hpp), holding only what
+/// the deck uses, as structs of arrays indexed by dense solver indices. User IDs are kept beside
+/// the arrays for output and diagnostics only.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/entities.hpp"
+#include "solver/curve.hpp"
+#include "solver/material/material.hpp"
+
+namespace mcdyna::solver {
+
+using Index = std::int32_t;
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// Nodal arrays. Velocities live at half steps (central difference), everything else at t^n.
+struct Nodes {
+  std::vector<model::Id> ids;
+  Eigen::Matrix3Xd initial, position, velocity, acceleration, force;
+  std::vector<double> mass;        ///< lumped physical mass
+  std::vector<double> added_mass;  ///< DT2MS mass scaling (zero without it)
+  std::vector<Index> rigid_body;   ///< owning rigid body or -1
+  /// Node -> (element * 8 + corner) of the deformable solids that touch it, in element order:
+  /// the fixed summation order that makes the force gather bitwise reproducible.
+  std::vector<Index> corner_offsets, corners;
+  [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
+};
+
+enum class SolidFormulation {
+  one_point,          ///< ELFORM 1: one-point quadrature + Flanagan-Belytschko hourglass control
+  selective_reduced,  ///< ELFORM 2: 2x2x2 deviatoric, mean volumetric strain rate (B-bar)
+};
+
+struct HourglassParams {
+  int type = 1;              ///< IHQ: 1-3 viscous, 4-5 stiffness
+  double coefficient = 0.1;  ///< QM
+  [[nodiscard]] bool stiffness() const { return type == 4 || type == 5; }
+};
+
+struct BulkViscosityParams {
+  double quadratic = 1.5;  ///< Q1
+  double linear = 0.06;    ///< Q2
+};
+
+/// Solid elements of one part: a contiguous range [begin, end) of the element arrays.
+struct SolidBlock {
+  Index part = 0;
+  Index begin = 0, end = 0;
+  Index point_begin = 0;       ///< first integration point of the block
+  int points_per_element = 1;  ///< 1 (ELFORM 1) or 8 (ELFORM 2)
+  SolidFormulation formulation = SolidFormulation::one_point;
+  Index material = 0;
+  HourglassParams hourglass;
+  BulkViscosityParams bulk_viscosity;
+};
+
+/// Deformable 8-node solids (rigid-part elements only contribute mass properties).
+struct Solids {
+  std::vector<model::Id> ids;
+  std::vector<std::array<Index, 8>> nodes;
+  std::vector<Index> part;
+  std::vector<double> initial_volume, volume, mass;
+  std::vector<double> pressure;          ///< element pressure (compression positive), stress
+  std::vector<double> eos_energy;        ///< internal energy per initial volume (EOS materials)
+  std::vector<double> temperature;       ///< JC adiabatic temperature (room temperature otherwise)
+  std::vector<double> internal_energy;   ///< absolute, energy
+  std::vector<double> hourglass_energy;  ///< absolute, energy
+  std::vector<double> hourglass_force;   ///< 12 per element: hourglass resistance of the last pass
+  std::vector<double> viscosity;         ///< bulk viscosity q of the last pass, stress
+  std::vector<double> time_step;         ///< last critical step estimate (before TSSFAC)
+  std::vector<double> added_mass;        ///< DT2MS mass given to the element so far
+  std::vector<std::uint8_t> eroded;
+  std::vector<double> corner_force;  ///< 24 per element: force on each corner node, this cycle
+  std::vector<SolidBlock> blocks;
+  MaterialPoints points;  ///< integration-point state (stress, plastic strain, ...)
+  [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
+};
+
+struct PartInfo {
+  model::Id id = 0;
+  std::string heading;
+  Index material = -1;    ///< compiled deformable material, -1 for rigid parts
+  Index rigid_body = -1;  ///< for MAT_020 parts
+  model::Id material_id = 0;
+};
+
+/// Prescribed motion of a rigid body: one *BOUNDARY_PRESCRIBED_MOTION_RIGID line.
+struct RigidMotion {
+  int dof = 0;   ///< 1-3 translation x/y/z, 5-7 rotation about x/y/z, 4/8 along/about `direction`
+  int kind = 0;  ///< VAD: 0 velocity, 1 acceleration, 2 displacement
+  Index curve = -1;
+  double scale = 1.0;
+  Vec3 direction = Vec3::UnitX();
+  double birth = 0.0, death = 1.0e28;
+  double rotated = 0.0;  ///< angle turned under this motion so far (VAD 2 rotations)
+};
+
+struct RigidBody {
+  model::Id part_id = 0;
+  double mass = 0.0;
+  Vec3 center = Vec3::Zero();          ///< current centre of mass
+  Vec3 initial_center = Vec3::Zero();  ///< at t = 0
+  Mat3 inertia0 = Mat3::Zero();        ///< about the centre, global axes at t = 0
+  Mat3 rotation = Mat3::Identity();    ///< current orientation relative to t = 0
+  Vec3 velocity = Vec3::Zero();        ///< centre velocity, half step
+  Vec3 angular_momentum = Vec3::Zero();
+  Vec3 omega = Vec3::Zero();  ///< angular velocity, half step
+  Vec3 previous_velocity = Vec3::Zero(), previous_omega = Vec3::Zero();  ///< one half step back
+  std::vector<Index> nodes;
+  Eigen::Matrix3Xd offsets;  ///< node position - centre at t = 0
+  std::array<bool, 3> fixed_translation{}, fixed_rotation{};
+  std::vector<RigidMotion> motions;
+  Vec3 force = Vec3::Zero();   ///< resultant of element, contact and wall forces on the body
+  Vec3 moment = Vec3::Zero();  ///< about the centre
+  Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
+  Vec3 constraint_moment = Vec3::Zero();
+  double constraint_work = 0.0;
+  [[nodiscard]] Mat3 inertia() const { return rotation * inertia0 * rotation.transpose(); }
+};
+
+/// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
+struct NodalConstraints {
+  std::vector<Index> nodes;         ///< ascending
+  std::vector<std::uint8_t> masks;  ///< bit 0 x, 1 y, 2 z
+  std::vector<double> birth, death;
+  Eigen::Matrix3Xd reaction;  ///< force the constraint applies, this cycle
+};
+
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET line expanded to nodes.
+struct NodalMotion {
+  model::Id id = 0;
+  std::vector<Index> nodes;
+  int dof = 1;
+  int kind = 0;
+  Index curve = -1;
+  double scale = 1.0;
+  Vec3 direction = Vec3::UnitX();
+  double birth = 0.0, death = 1.0e28;
+  Vec3 force = Vec3::Zero();  ///< reaction resultant this cycle (bndout)
+  double work = 0.0;
+};
+
+struct RigidWallState {
+  model::Id id = 0;
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  ///< unit, into the allowed side
+  bool finite = false;
+  Vec3 edge_l = Vec3::UnitX(), edge_m = Vec3::UnitY();  ///< unit in-plane edges (finite)
+  double length_l = 0.0, length_m = 0.0;
+  double friction = 0.0;
+  double birth = 0.0, death = 1.0e20;
+  bool moving = false;
+  double mass = 0.0, velocity = 0.0, displacement = 0.0;  ///< along the normal
+  std::vector<Index> nodes;                               ///< tracked nodes
+  Vec3 force = Vec3::Zero();  ///< force on the wall this cycle (from the nodes)
+  double energy = 0.0;        ///< work the wall has absorbed
+};
+
+/// Elements drawn but not integrated: those of rigid parts (solids and shells).
+struct DisplayCells {
+  std::vector<std::array<Index, 8>> solids;
+  std::vector<Index> solid_parts;
+  std::vector<std::array<Index, 4>> shells;  ///< triangle: nodes[3] == nodes[2]
+  std::vector<Index> shell_parts;
+};
+
+struct TimeControl {
+  double end_time = 0.0;
+  long end_cycle = 0;
+  double scale_factor = 0.9;  ///< TSSFAC
+  double initial_step = 0.0;  ///< DTINIT
+  double min_step_factor = 0.0;
+  double mass_scaling_step = 0.0;  ///< DT2MS (signed as in the deck)
+  Index max_step_curve = -1;       ///< LCTM
+};
+
+struct State {
+  std::string title;
+  Nodes nodes;
+  Solids solids;
+  std::vector<PartInfo> parts;
+  std::vector<Material> materials;
+  std::vector<RigidBody> rigid_bodies;
+  DisplayCells rigid_cells;
+  std::vector<LoadCurve> curves;
+  NodalConstraints constraints;
+  std::vector<NodalMotion> nodal_motions;
+  std::vector<RigidWallState> rigid_walls;
+  TimeControl time_control;
+
+  double time = 0.0;
+  long cycle = 0;
+  double step = 0.0;       ///< last step dt^{n-1/2}
+  double next_step = 0.0;  ///< step to take next
+  Index controlling_element = -1;
+  double external_work = 0.0;
+  double eroded_kinetic = 0.0, eroded_internal = 0.0, eroded_hourglass = 0.0;
+  double initial_energy = 0.0;
+  double initial_mass = 0.0;
+  double mass_scaling_dt = 0.0;  ///< TSSFAC * |DT2MS| or 0
+};
+
+}  // namespace mcdyna::solver
