@@ -5,4 +5,4 @@ cd "$(dirname "$0")/.."
 tools/setup.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)"
-build/mcdyna check decks/cube/cube_drop.k
+build/mcdyna run decks/cube/cube_drop.k --out results/cube

@@ -196,7 +196,8 @@ class Rwforc final : public HistoryFile {
   void write(const OutputContext& c) override {
     const State& s = c.state;
     for (const solver::RigidWallState& w : s.rigid_walls) {
-      const double normal = w.force.dot(w.normal);
+      // Force of the structure on the wall; the normal force is positive in contact.
+      const double normal = -w.force.dot(w.normal);
       ascii("{:12.5E}{:8d}{:15.6E}{:15.6E}{:15.6E}{:15.6E}\n", s.time, w.id, normal, w.force[0],
             w.force[1], w.force[2]);
       csv("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, w.id, normal, w.force[0], w.force[1],

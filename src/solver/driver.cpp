@@ -73,7 +73,7 @@ ElementPassResult compute_forces(State& s) {
 Index free_velocity_update(State& s, double dt) {
   Nodes& nd = s.nodes;
   Index bad = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for schedule(static) reduction(min : bad) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n) {
     const auto i = static_cast<std::size_t>(n);
     if (nd.rigid_body[i] >= 0) continue;
@@ -91,7 +91,7 @@ Index free_velocity_update(State& s, double dt) {
 
 void advance_positions(State& s, double dt) {
   Nodes& nd = s.nodes;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n) {
     if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0) continue;
     nd.position.col(n) += dt * nd.velocity.col(n);

@@ -17,6 +17,8 @@ namespace {
 
 using hex::Corners;
 
+constexpr Index kParallelMinimum = 512;
+
 // Per-thread minimum of (step, element); ties go to the lower element index, so the combined
 // result is the same for any thread count.
 struct StepMin {
@@ -339,7 +341,8 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
     ElementContext c{state, block, state.materials[static_cast<std::size_t>(block.material)],
                      input};
     const bool one_point = block.formulation == SolidFormulation::one_point;
-#pragma omp parallel
+    // Small blocks run serially: a parallel region costs more than a few elements.
+#pragma omp parallel if (block.end - block.begin > kParallelMinimum)
     {
       StepMin local;
       Index local_inverted = std::numeric_limits<Index>::max();
@@ -387,7 +390,7 @@ void gather_solid_forces(State& state) {
   const double* cf = state.solids.corner_force.data();
   double* f = state.nodes.force.data();
   const Index n_nodes = nd.count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n_nodes > 4 * kParallelMinimum)
   for (Index n = 0; n < n_nodes; ++n) {
     double fx = 0.0, fy = 0.0, fz = 0.0;
     for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
