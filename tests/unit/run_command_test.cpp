@@ -7,8 +7,6 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include <regex>
-
 #include "solver_support.hpp"
 
 namespace mcdyna::test {
@@ -24,10 +22,11 @@ std::string slurp(const std::filesystem::path& p) {
 std::vector<std::string> collection(const std::filesystem::path& pvd) {
   const std::string text = slurp(pvd);
   std::vector<std::string> files;
-  const std::regex entry("file=\"([^\"]+)\"");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry);
-       it != std::sregex_iterator(); ++it)
-    files.push_back((*it)[1]);
+  const std::string key = "file=\"";
+  for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at)) {
+    at += key.size();
+    files.push_back(text.substr(at, text.find('"', at) - at));
+  }
   return files;
 }
 
