@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "solver/compile.hpp"
+
 namespace mcdyna::io {
 
 void Outputs::Schedule::advance(double t) {
@@ -18,12 +20,8 @@ std::vector<solver::Index> history_nodes(const model::ModelDatabase& m) {
   for (const model::HistoryNodes& h : m.outputs.history_nodes) {
     for (const model::Id id : h.ids) {
       if (h.is_set) {
-        const model::NodeSet* ns = m.node_set(id);
-        if (ns == nullptr) continue;
-        for (const model::Id n : ns->nodes) {
-          const auto i = m.index.nodes.find(n);
-          if (i != model::IdIndex::kNone) out.push_back(static_cast<solver::Index>(i));
-        }
+        const auto set = solver::node_set_nodes(m, id);
+        out.insert(out.end(), set.begin(), set.end());
       } else {
         const auto i = m.index.nodes.find(id);
         if (i != model::IdIndex::kNone) out.push_back(static_cast<solver::Index>(i));

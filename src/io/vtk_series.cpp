@@ -98,14 +98,16 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   CellFields fields;
   vtkIdType hex[8];
   const solver::Solids& so = s.solids;
-  for (Index e = 0; e < so.count(); ++e) {
-    const auto i = static_cast<std::size_t>(e);
-    if (so.eroded[i]) continue;
-    for (int c = 0; c < 8; ++c)
-      hex[c] = so.nodes[i][static_cast<std::size_t>(c)];
-    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-    fields.add(solver::element_result(s, e), so.pressure[i], so.temperature[i],
-               static_cast<int>(s.parts[static_cast<std::size_t>(so.part[i])].id));
+  for (const solver::SolidBlock& block : so.blocks) {
+    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
+    for (Index e = block.begin; e < block.end; ++e) {
+      const auto i = static_cast<std::size_t>(e);
+      if (so.eroded[i]) continue;
+      for (int c = 0; c < 8; ++c)
+        hex[c] = so.nodes[i][static_cast<std::size_t>(c)];
+      grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      fields.add(solver::element_result(s, block, e), so.pressure[i], so.temperature[i], part_id);
+    }
   }
   const solver::DisplayCells& rc = s.rigid_cells;
   const solver::ElementResult none;

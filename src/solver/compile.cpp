@@ -9,8 +9,6 @@
 
 namespace mcdyna::solver {
 
-namespace detail {
-
 std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set) {
   std::vector<Index> out;
   const model::NodeSet* ns = m.node_set(set);
@@ -23,6 +21,8 @@ std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set) 
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
+
+namespace detail {
 
 Index curve_index(const model::ModelDatabase& m, model::Id id) {
   const auto i = m.index.curves.find(id);
@@ -57,14 +57,9 @@ HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& p
 // Volume the formulation itself measures (so the relative volume starts at exactly 1).
 double formulation_volume(const hex::Corners& x, SolidFormulation f) {
   if (f == SolidFormulation::one_point) return 8.0 * hex::centre_gradients(x).det;
-  const double gp = 1.0 / std::sqrt(3.0);
   double v = 0.0;
-  for (const auto& corner : hex::kXi) {
-    const double at[3] = {gp * corner[0], gp * corner[1], gp * corner[2]};
-    double g[8][3];
-    hex::parent_gradients(at, g);
+  for (const auto& g : hex::gauss_points().gradients)
     v += hex::gradients(x, g).det;
-  }
   return v;
 }
 

@@ -13,6 +13,9 @@ namespace mcdyna::solver {
 /// model::check, which builds the ID indices this uses).
 std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnostics& diags);
 
+/// Solver indices of the nodes of a node set (sorted, unique); empty if the set is unknown.
+std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
+
 namespace detail {
 // The pieces of compile(), in the order it runs them (compile_*.cpp).
 void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
@@ -23,8 +26,6 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
-/// Solver indices of the nodes of a node set (sorted, unique); empty + error if unknown.
-std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
 Index curve_index(const model::ModelDatabase& m, model::Id id);
 }  // namespace detail
 

@@ -26,12 +26,10 @@ void add_solid(const State& s, const std::array<Index, 8>& conn, double density,
   for (std::size_t c = 0; c < 8; ++c)
     for (std::size_t k = 0; k < 3; ++k)
       x[c][k] = s.nodes.initial(static_cast<Index>(k), conn[c]);
-  const double gp = 1.0 / std::sqrt(3.0);
-  for (const auto& corner : hex::kXi) {
-    const double at[3] = {gp * corner[0], gp * corner[1], gp * corner[2]};
-    double g[8][3];
-    hex::parent_gradients(at, g);
-    const double det = hex::gradients(x, g).det;
+  const hex::GaussPoints& gauss = hex::gauss_points();
+  for (int q = 0; q < 8; ++q) {
+    const double* at = gauss.at[q];
+    const double det = hex::gradients(x, gauss.gradients[q]).det;
     Vec3 p = Vec3::Zero();
     for (int n = 0; n < 8; ++n) {
       const double shape = 0.125 * (1 + hex::kXi[n][0] * at[0]) * (1 + hex::kXi[n][1] * at[1]) *

@@ -101,8 +101,9 @@ void advance_positions(State& s, double dt) {
 
 double choose_step(const State& s, const ElementPassResult& r, bool first) {
   const TimeControl& tc = s.time_control;
-  double dt = std::isfinite(r.critical_step) ? tc.scale_factor * r.critical_step : 0.0;
-  if (!std::isfinite(r.critical_step)) dt = tc.initial_step > 0.0 ? tc.initial_step : 0.0;
+  // Without deformable elements (rigid bodies only) DTINIT is the step.
+  double dt = std::isfinite(r.critical_step) ? tc.scale_factor * r.critical_step
+                                             : std::max(tc.initial_step, 0.0);
   if (first && tc.initial_step > 0.0) dt = std::min(dt, tc.initial_step);
   if (tc.max_step_curve >= 0)
     dt = std::min(dt, s.curves[static_cast<std::size_t>(tc.max_step_curve)](s.time));
@@ -138,8 +139,8 @@ RunResult run(State& s, const RunHooks& hooks) {
           pass.controlling >= 0 ? element_name(s, pass.controlling) : "none");
     }
     const bool stop = at_end || interrupted || result.reason == StopReason::step_collapse;
-    const StepTimes t{s.time, dt > 0.0 ? dt : min_step,
-                      0.5 * (s.step + (dt > 0.0 ? dt : min_step))};
+    const double step = dt > 0.0 ? dt : min_step;  // a collapsed step still closes the cycle
+    const StepTimes t{s.time, step, 0.5 * (s.step + step)};
     const bool write = stop || (hooks.output_due && hooks.output_due(s));
     if (write) velocity_before = s.nodes.velocity;
     const Index bad = free_velocity_update(s, t.mean);

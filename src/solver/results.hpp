@@ -1,6 +1,7 @@
 #pragma once
 /// Element results as users see them: the Cauchy stress averaged over the integration points,
 /// von Mises stress, mean effective plastic strain, and damage (the largest of the points).
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -15,14 +16,11 @@ struct ElementResult {
   double damage = 0.0;
 };
 
-inline ElementResult element_result(const State& s, Index e) {
+/// Result of element `e` of `block`.
+inline ElementResult element_result(const State& s, const SolidBlock& block, Index e) {
   ElementResult r;
-  const SolidBlock* block = nullptr;
-  for (const SolidBlock& b : s.solids.blocks)
-    if (e >= b.begin && e < b.end) block = &b;
-  if (block == nullptr) return r;
-  const int np = block->points_per_element;
-  const Index first = block->point_begin + np * (e - block->begin);
+  const int np = block.points_per_element;
+  const Index first = block.point_begin + np * (e - block.begin);
   const auto& pts = s.solids.points;
   std::array<double, 6> dev{};
   for (Index p = first; p < first + np; ++p) {

@@ -68,6 +68,25 @@ inline Gradients gradients(const Corners& x, const double g[8][3]) {
   return out;
 }
 
+/// The 2x2x2 Gauss points (parent coordinates) and the parent gradients there, computed once.
+struct GaussPoints {
+  double at[8][3];
+  double gradients[8][8][3];  ///< [point][corner][direction]
+  GaussPoints() {
+    const double p = 1.0 / std::sqrt(3.0);
+    for (int q = 0; q < 8; ++q) {
+      for (int k = 0; k < 3; ++k)
+        at[q][k] = p * kXi[q][k];
+      parent_gradients(at[q], gradients[q]);
+    }
+  }
+};
+
+inline const GaussPoints& gauss_points() {
+  static const GaussPoints kPoints;
+  return kPoints;
+}
+
 /// Gradients at the element centre: the one-point quadrature of ELFORM 1. Volume = 8 det.
 inline Gradients centre_gradients(const Corners& x) {
   double g[8][3];

@@ -122,6 +122,8 @@ struct VolumetricResult {
   double pressure_total;  // p + q
   double step;
   bool zero_deviator;
+  double density;             // current
+  double wave_speed_squared;  // current
 };
 
 VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, double trace,
@@ -132,7 +134,8 @@ VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, do
   const double v0 = s.initial_volume[i];
   const double rel = volume / v0;
   const double density = c.mat.density / rel;
-  const double sound = std::sqrt(wave_speed_squared(c.mat, rel));
+  const double c2 = wave_speed_squared(c.mat, rel);
+  const double sound = std::sqrt(c2);
   const double q = bulk_viscosity(c.block.bulk_viscosity, density, length, sound, trace);
   // The viscosity acting over the step is the mean of the last pass's and this one's, as for
   // the pressure: the trapezoidal rule that matches the central-difference kinetic energy.
@@ -148,7 +151,8 @@ VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, do
     s.temperature[i] = c.mat.room_temperature + (s.eos_energy[i] - c.mat.eos.initial_energy) /
                                                     (c.mat.density * c.mat.specific_heat);
   }
-  return {s.pressure[i] + q, element_step(c.block.bulk_viscosity, length, sound, trace), zero_dev};
+  return {s.pressure[i] + q, element_step(c.block.bulk_viscosity, length, sound, trace), zero_dev,
+          density, c2};
 }
 
 // Deviatoric update of one point: rotate, integrate the material, return the work done.
@@ -197,7 +201,8 @@ void add_stress_forces(const double* s, double pq, double weight, const double b
 // The resistance is kept per element so the hourglass work over a step is the trapezoid of the
 // last and the new resistance (consistent with the kinetic energy; see solver/energy.hpp).
 double hourglass_forces(ElementContext& c, Index e, const Corners& x, const Corners& v,
-                        const double b[8][3], double volume, double* f) {
+                        const double b[8][3], double volume, const VolumetricResult& vr,
+                        double* f) {
   const HourglassParams& hg = c.block.hourglass;
   if (hg.coefficient <= 0.0) return 0.0;
   double gamma[4][8], qdot[4][3];
@@ -216,23 +221,26 @@ double hourglass_forces(ElementContext& c, Index e, const Corners& x, const Corn
       qdot[a][i] = sum;
     }
   }
-  const auto i_e = static_cast<std::size_t>(e);
-  const double rel = volume / c.st.solids.initial_volume[i_e];
-  const double rho = c.mat.density / rel;
-  const double c2 = wave_speed_squared(c.mat, rel);
+  const double rho = vr.density, c2 = vr.wave_speed_squared;
   const double dt = c.in.step;
   double resist[4][3];
   double power = 0.0;
-  double* q = &c.st.solids.hourglass_force[12 * i_e];
-  double bb = 0.0;
-  for (int n = 0; n < 8; ++n)
-    bb += b[n][0] * b[n][0] + b[n][1] * b[n][1] + b[n][2] * b[n][2];
-  const double kappa = hg.coefficient * rho * c2 * volume * bb / 3.0;
-  const double ah = 16.0 * hg.coefficient * rho * std::cbrt(volume * volume) * std::sqrt(c2);
+  double* q = &c.st.solids.hourglass_force[12 * static_cast<std::size_t>(e)];
+  // Stiffness form: resist = Q_old + kappa dt qdot; viscous form: resist = a_h qdot.
+  double rate_factor = 0.0, carry = 0.0;
+  if (hg.stiffness()) {
+    double bb = 0.0;
+    for (int n = 0; n < 8; ++n)
+      bb += b[n][0] * b[n][0] + b[n][1] * b[n][1] + b[n][2] * b[n][2];
+    rate_factor = hg.coefficient * rho * c2 * volume * bb / 3.0 * dt;
+    carry = 1.0;
+  } else {
+    rate_factor = 16.0 * hg.coefficient * rho * std::cbrt(volume * volume) * std::sqrt(c2);
+  }
   for (int a = 0; a < 4; ++a)
     for (int i = 0; i < 3; ++i) {
       const double old = q[3 * a + i];
-      resist[a][i] = hg.stiffness() ? old + kappa * dt * qdot[a][i] : ah * qdot[a][i];
+      resist[a][i] = carry * old + rate_factor * qdot[a][i];
       q[3 * a + i] = resist[a][i];
       power += 0.5 * (old + resist[a][i]) * qdot[a][i];
     }
@@ -252,13 +260,19 @@ struct ElementOutcome {
   bool failed = false;
 };
 
+// Clears the element's corner forces and loads its corner positions and velocities.
+double* start_element(State& st, Index e, Corners& x, Corners& v) {
+  double* f = &st.solids.corner_force[24 * static_cast<std::size_t>(e)];
+  std::fill(f, f + 24, 0.0);
+  load_corners(st, e, x, v);
+  return f;
+}
+
 ElementOutcome one_point_element(ElementContext& c, Index e) {
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
-  double* f = &s.corner_force[24 * i];
-  std::fill(f, f + 24, 0.0);
   Corners x, v;
-  load_corners(c.st, e, x, v);
+  double* f = start_element(c.st, e, x, v);
   const hex::Gradients g = hex::centre_gradients(x);
   if (!(g.det > 0.0)) return {0.0, true, false};
   const double volume = 8.0 * g.det;
@@ -271,27 +285,21 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const VolumetricResult vr = volumetric_update(c, e, volume, k.trace, dev_work, length);
   if (vr.zero_deviator) zero_point_deviators(c.st, point, 1);
   add_stress_forces(s.points.deviator.col(point).data(), vr.pressure_total, volume, g.b, f);
-  s.hourglass_energy[i] += hourglass_forces(c, e, x, v, g.b, volume, f);
+  s.hourglass_energy[i] += hourglass_forces(c, e, x, v, g.b, volume, vr, f);
   return {vr.step, false, failed};
 }
 
 ElementOutcome selective_reduced_element(ElementContext& c, Index e) {
-  static const double kGauss = 1.0 / std::sqrt(3.0);
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
-  double* f = &s.corner_force[24 * i];
-  std::fill(f, f + 24, 0.0);
   Corners x, v;
-  load_corners(c.st, e, x, v);
+  double* f = start_element(c.st, e, x, v);
+  const hex::GaussPoints& gauss = hex::gauss_points();
   hex::Gradients g[8];
   Kinematics k[8];
   double volume = 0.0, trace = 0.0;
   for (int p = 0; p < 8; ++p) {
-    const double at[3] = {kGauss * hex::kXi[p][0], kGauss * hex::kXi[p][1],
-                          kGauss * hex::kXi[p][2]};
-    double pg[8][3];
-    hex::parent_gradients(at, pg);
-    g[p] = hex::gradients(x, pg);
+    g[p] = hex::gradients(x, gauss.gradients[p]);
     if (!(g[p].det > 0.0)) return {0.0, true, false};
     k[p] = kinematics(v, g[p].b);
     volume += g[p].det;

@@ -163,8 +163,15 @@ inline PointResult update_deviator(const Material& m, const PointInput& in, Poin
           sy = rf * (m.jc_a + m.jc_b * pw);
           h = rf * m.jc_b * m.jc_n * pw / ep;
         } else {
+          // Slope B N ep^(N-1) at ep = 0: 0 for N > 1, B for N = 1, unbounded for N < 1 (a stiff
+          // stand-in; the bracketed Newton iteration takes it from there).
           sy = rf * m.jc_a;
-          h = m.jc_n >= 1.0 ? rf * m.jc_b * (m.jc_n == 1.0 ? 1.0 : 0.0) : 1.0e3 * m.shear_modulus;
+          if (m.jc_n > 1.0)
+            h = 0.0;
+          else if (m.jc_n == 1.0)
+            h = rf * m.jc_b;
+          else
+            h = 1.0e3 * m.shear_modulus;
         }
       };
       double sy0 = 0.0, h0 = 0.0;
