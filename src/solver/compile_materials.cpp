@@ -94,6 +94,11 @@ void johnson_cook(const model::Material& mat, Material& out, core::Diagnostics& 
   out.min_failure_strain = j.min_failure_strain;
   const bool any = std::any_of(j.damage.begin(), j.damage.end(), [](double x) { return x != 0.0; });
   out.damage_active = any && j.erode_flag == 0.0;
+  // The return mapping relies on a flow stress that does not fall with plastic strain.
+  if (j.b < 0.0 || j.n <= 0.0) {
+    d.error(mat.loc, "*MAT_JOHNSON_COOK {}: B = {} and N = {} must give hardening (B >= 0, N > 0)",
+            mat.id, j.b, j.n);
+  }
   if (j.viscoplastic != 0.0) {
     d.warning(mat.loc,
               "*MAT_JOHNSON_COOK {}: VP = {} (viscoplastic) runs as VP = 0 (scaled yield "

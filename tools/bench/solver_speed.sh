@@ -20,7 +20,7 @@ for threads in 1 2; do
   for run in 1 2 3; do
     out=$(build/mcdyna run "$deck" --threads "$threads" --out "$work/out_$threads" -q)
     rate=$(grep -o '[0-9.]* million element-cycles/s' "$work/out_$threads/d3hsp")
-    wall=$(awk '/^  total/{print $2}' "$work/out_$threads/d3hsp")
+    wall=$(awk '/^  total  /{print $2}' "$work/out_$threads/d3hsp")
     echo "threads $threads run $run: wall $wall s, $rate"
   done
 done

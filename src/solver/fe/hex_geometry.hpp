@@ -37,6 +37,26 @@ inline void parent_gradients(const double p[3], double g[8][3]) {
   }
 }
 
+/// Inverse of a 3x3 matrix: out = a^-1; returns det(a) (out is left unset when det <= 0).
+inline double invert(const double a[3][3], double out[3][3]) {
+  const double c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+  const double c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+  const double c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+  const double det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+  if (!(det > 0.0)) return det;
+  const double inv = 1.0 / det;
+  out[0][0] = c00 * inv;
+  out[1][0] = c01 * inv;
+  out[2][0] = c02 * inv;
+  out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * inv;
+  out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * inv;
+  out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * inv;
+  out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * inv;
+  out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * inv;
+  out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * inv;
+  return det;
+}
+
 /// Gradients at a parent point from the parent gradients g; det <= 0 flags an inverted element.
 inline Gradients gradients(const Corners& x, const double g[8][3]) {
   double j[3][3] = {};  // j[i][k] = dx_i / dxi_k
@@ -44,24 +64,10 @@ inline Gradients gradients(const Corners& x, const double g[8][3]) {
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k)
         j[i][k] += x[n][i] * g[n][k];
-  Gradients out{};
-  const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1];
-  const double c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2];
-  const double c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
-  out.det = j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02;
+  Gradients out;  // b is filled only for a valid element (det > 0); no zeroing on the hot path
+  double ji[3][3];  // inverse of j: ji[k][i] = dxi_k / dx_i
+  out.det = invert(j, ji);
   if (!(out.det > 0.0)) return out;
-  const double inv = 1.0 / out.det;
-  // inverse of j: ji[k][i] = dxi_k / dx_i
-  double ji[3][3];
-  ji[0][0] = c00 * inv;
-  ji[1][0] = c01 * inv;
-  ji[2][0] = c02 * inv;
-  ji[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv;
-  ji[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv;
-  ji[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv;
-  ji[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv;
-  ji[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv;
-  ji[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv;
   for (int n = 0; n < 8; ++n)
     for (int i = 0; i < 3; ++i)
       out.b[n][i] = g[n][0] * ji[0][i] + g[n][1] * ji[1][i] + g[n][2] * ji[2][i];
@@ -94,6 +100,52 @@ inline Gradients centre_gradients(const Corners& x) {
     for (int k = 0; k < 3; ++k)
       g[n][k] = 0.125 * kXi[n][k];
   return gradients(x, g);
+}
+
+/// Corner sign patterns of the parent cube, indexed by a 3-bit mask k (bit 0: xi, bit 1: eta,
+/// bit 2: zeta): pattern k at a corner is the product of the corner's parent coordinates named
+/// by k. k = 0 is the constant, 1 / 2 / 4 the linear patterns, 3 / 5 / 6 / 7 the hourglass
+/// patterns xi eta, xi zeta, eta zeta, xi eta zeta (the rows of kHourglass are 6, 5, 3, 7).
+/// kBinary[n] is corner n's position in binary order (bit set: parent coordinate +1).
+inline constexpr int kBinary[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+inline constexpr int kHourglassPattern[4] = {6, 5, 3, 7};
+
+/// Pattern sums m[k][i] = sum_n pattern_k(n) x[n][i], by a fast Walsh-Hadamard transform: 24
+/// additions per component instead of 64 multiply-adds. The loops are unrolled so that the
+/// branch on the bit folds away and everything stays in registers.
+inline void pattern_sums(const Corners& x, double m[8][3]) {
+#pragma GCC unroll 8
+  for (int n = 0; n < 8; ++n)
+    for (int i = 0; i < 3; ++i)
+      m[kBinary[n]][i] = x[n][i];
+#pragma GCC unroll 3
+  for (int bit = 1; bit < 8; bit <<= 1)
+#pragma GCC unroll 8
+    for (int b = 0; b < 8; ++b)
+      if (!(b & bit))
+        for (int i = 0; i < 3; ++i) {
+          const double lo = m[b][i], hi = m[b | bit][i];
+          m[b][i] = lo + hi;
+          m[b | bit][i] = hi - lo;
+        }
+}
+
+/// The transpose map: f[3 n + i] += sum_k c[k][i] pattern_k(n). Overwrites c.
+inline void add_pattern_combination(double c[8][3], double* f) {
+#pragma GCC unroll 3
+  for (int bit = 1; bit < 8; bit <<= 1)
+#pragma GCC unroll 8
+    for (int b = 0; b < 8; ++b)
+      if (!(b & bit))
+        for (int i = 0; i < 3; ++i) {
+          const double lo = c[b][i], hi = c[b | bit][i];
+          c[b][i] = lo - hi;
+          c[b | bit][i] = lo + hi;
+        }
+#pragma GCC unroll 8
+  for (int n = 0; n < 8; ++n)
+    for (int i = 0; i < 3; ++i)
+      f[3 * n + i] += c[kBinary[n]][i];
 }
 
 /// Largest face area (faces as quadrilaterals, area = |d1 x d2| / 2 from the diagonals).

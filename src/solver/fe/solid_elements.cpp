@@ -18,6 +18,9 @@ namespace {
 using hex::Corners;
 
 constexpr Index kParallelMinimum = 512;
+// Elements are handed to threads in interleaved chunks: plastic work concentrates in one region
+// of a part (the impact end of a Taylor bar), and contiguous halves would leave one thread idle.
+constexpr int kElementChunk = 128;
 
 // Per-thread minimum of (step, element); ties go to the lower element index, so the combined
 // result is the same for any thread count.
@@ -39,13 +42,9 @@ struct Kinematics {
   double trace;
 };
 
-Kinematics kinematics(const Corners& v, const double b[8][3]) {
-  double l[3][3] = {};  // l[i][j] = dv_i/dx_j
-  for (int n = 0; n < 8; ++n)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        l[i][j] += v[n][i] * b[n][j];
-  Kinematics k{};
+// D, W and tr D from the velocity gradient l[i][j] = dv_i/dx_j.
+Kinematics kinematics_from_gradient(const double l[3][3]) {
+  Kinematics k;
   k.d[0] = l[0][0];
   k.d[1] = l[1][1];
   k.d[2] = l[2][2];
@@ -57,6 +56,15 @@ Kinematics kinematics(const Corners& v, const double b[8][3]) {
   k.w[2] = 0.5 * (l[2][0] - l[0][2]);
   k.trace = l[0][0] + l[1][1] + l[2][2];
   return k;
+}
+
+Kinematics kinematics(const Corners& v, const double b[8][3]) {
+  double l[3][3] = {};
+  for (int n = 0; n < 8; ++n)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        l[i][j] += v[n][i] * b[n][j];
+  return kinematics_from_gradient(l);
 }
 
 // Jaumann (objective) rotation of a symmetric tensor over dt: s += dt (W s - s W).
@@ -194,63 +202,81 @@ void add_stress_forces(const double* s, double pq, double weight, const double b
   }
 }
 
-// Flanagan-Belytschko hourglass forces. gamma = (Gamma - (Gamma . x_i) b_i) / 8 is orthogonal
-// to every linear velocity field, so rigid motion and uniform strain see no hourglass force.
+// The one-point element (ELFORM 1) in terms of corner pattern sums (hex::pattern_sums): at the
+// centre J[i][k] = Hx[2^k][i] / 8 and b_n = (xi_n / 8) J^-1, so every sum over the corners
+// against b_n or the hourglass vectors becomes a pattern sum and a 3x3 product, and the corner
+// forces one transform back (hex::add_pattern_combination).
+struct CentrePoint {
+  double hx[8][3], hv[8][3];  // pattern sums of positions and velocities
+  double ji[3][3];            // J^-1: ji[k][i] = dxi_k / dx_i
+  double l[3][3];             // velocity gradient dv_i / dx_j
+  double volume;              // 8 det J (<= 0: inverted)
+};
+
+CentrePoint centre_point(const Corners& x, const Corners& v) {
+  CentrePoint p;
+  hex::pattern_sums(x, p.hx);
+  hex::pattern_sums(v, p.hv);
+  double jac[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      jac[i][k] = 0.125 * p.hx[1 << k][i];
+  p.volume = 8.0 * hex::invert(jac, p.ji);
+  if (!(p.volume > 0.0)) return p;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      p.l[i][j] = 0.125 * (p.hv[1][i] * p.ji[0][j] + p.hv[2][i] * p.ji[1][j] +
+                           p.hv[4][i] * p.ji[2][j]);
+  return p;
+}
+
+// Flanagan-Belytschko hourglass forces. gamma_a = (h_a - (h_a . x_n) b_n) / 8 is orthogonal
+// to every linear velocity field, so rigid motion and uniform strain see no hourglass force;
+// the hourglass rate is q_a = gamma_a . v = (Hv_a - l Hx_a) / 8 and the force -sum_a Q_a gamma_a
+// splits into pattern coefficients (-Q_a / 8) and a b-term folded into the stress matrix m.
 // Viscous (IHQ 1-3) uses LS-DYNA's magnitude a_h = QM rho V^(2/3) c / 4 on the +-1 vectors;
 // stiffness (IHQ 4/5) integrates Q += kappa dt qdot, kappa = QM (lambda+2mu) V sum|b|^2 / 3.
 // The resistance is kept per element so the hourglass work over a step is the trapezoid of the
 // last and the new resistance (consistent with the kinetic energy; see solver/energy.hpp).
-double hourglass_forces(ElementContext& c, Index e, const Corners& x, const Corners& v,
-                        const double b[8][3], double volume, const VolumetricResult& vr,
-                        double* f) {
+double hourglass_forces(ElementContext& c, Index e, const CentrePoint& p,
+                        const VolumetricResult& vr, double m[3][3], double coef[8][3]) {
   const HourglassParams& hg = c.block.hourglass;
   if (hg.coefficient <= 0.0) return 0.0;
-  double gamma[4][8], qdot[4][3];
-  for (int a = 0; a < 4; ++a) {
-    double hx[3] = {0, 0, 0};
-    for (int n = 0; n < 8; ++n)
-      for (int i = 0; i < 3; ++i)
-        hx[i] += hex::kHourglass[a][n] * x[n][i];
-    for (int n = 0; n < 8; ++n)
-      gamma[a][n] =
-          0.125 * (hex::kHourglass[a][n] - hx[0] * b[n][0] - hx[1] * b[n][1] - hx[2] * b[n][2]);
-    for (int i = 0; i < 3; ++i) {
-      double sum = 0.0;
-      for (int n = 0; n < 8; ++n)
-        sum += gamma[a][n] * v[n][i];
-      qdot[a][i] = sum;
-    }
-  }
   const double rho = vr.density, c2 = vr.wave_speed_squared;
   const double dt = c.in.step;
-  double resist[4][3];
-  double power = 0.0;
   double* q = &c.st.solids.hourglass_force[12 * static_cast<std::size_t>(e)];
   // Stiffness form: resist = Q_old + kappa dt qdot; viscous form: resist = a_h qdot.
   double rate_factor = 0.0, carry = 0.0;
   if (hg.stiffness()) {
-    double bb = 0.0;
-    for (int n = 0; n < 8; ++n)
-      bb += b[n][0] * b[n][0] + b[n][1] * b[n][1] + b[n][2] * b[n][2];
-    rate_factor = hg.coefficient * rho * c2 * volume * bb / 3.0 * dt;
+    double bb = 0.0;  // sum_n |b_n|^2 = sum |J^-1|^2 / 8
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i)
+        bb += p.ji[k][i] * p.ji[k][i];
+    rate_factor = hg.coefficient * rho * c2 * p.volume * (0.125 * bb) / 3.0 * dt;
     carry = 1.0;
   } else {
-    rate_factor = 16.0 * hg.coefficient * rho * std::cbrt(volume * volume) * std::sqrt(c2);
+    rate_factor = 16.0 * hg.coefficient * rho * std::cbrt(p.volume * p.volume) * std::sqrt(c2);
   }
-  for (int a = 0; a < 4; ++a)
+  double power = 0.0;
+#pragma GCC unroll 4
+  for (int a = 0; a < 4; ++a) {
+    const double* hx = p.hx[hex::kHourglassPattern[a]];
+    const double* hv = p.hv[hex::kHourglassPattern[a]];
+    double resist[3];
     for (int i = 0; i < 3; ++i) {
+      const double qdot =
+          0.125 * (hv[i] - (p.l[i][0] * hx[0] + p.l[i][1] * hx[1] + p.l[i][2] * hx[2]));
       const double old = q[3 * a + i];
-      resist[a][i] = carry * old + rate_factor * qdot[a][i];
-      q[3 * a + i] = resist[a][i];
-      power += 0.5 * (old + resist[a][i]) * qdot[a][i];
+      resist[i] = carry * old + rate_factor * qdot;
+      q[3 * a + i] = resist[i];
+      power += 0.5 * (old + resist[i]) * qdot;
     }
-  for (int n = 0; n < 8; ++n)
     for (int i = 0; i < 3; ++i) {
-      double sum = 0.0;
-      for (int a = 0; a < 4; ++a)
-        sum += resist[a][i] * gamma[a][n];
-      f[3 * n + i] -= sum;
+      coef[hex::kHourglassPattern[a]][i] = -0.125 * resist[i];
+      for (int j = 0; j < 3; ++j)
+        m[i][j] -= 0.125 * resist[i] * hx[j];
     }
+  }
   return power * dt;
 }
 
@@ -273,10 +299,10 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const auto i = static_cast<std::size_t>(e);
   Corners x, v;
   double* f = start_element(c.st, e, x, v);
-  const hex::Gradients g = hex::centre_gradients(x);
-  if (!(g.det > 0.0)) return {0.0, true, false};
-  const double volume = 8.0 * g.det;
-  const Kinematics k = kinematics(v, g.b);
+  const CentrePoint cp = centre_point(x, v);
+  if (!(cp.volume > 0.0)) return {0.0, true, false};
+  const double volume = cp.volume;
+  const Kinematics k = kinematics_from_gradient(cp.l);
   const Index point = c.block.point_begin + (e - c.block.begin);
   bool failed = false;
   const double dev_work =
@@ -284,8 +310,19 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const double length = volume / hex::max_face_area(x);
   const VolumetricResult vr = volumetric_update(c, e, volume, k.trace, dev_work, length);
   if (vr.zero_deviator) zero_point_deviators(c.st, point, 1);
-  add_stress_forces(s.points.deviator.col(point).data(), vr.pressure_total, volume, g.b, f);
-  s.hourglass_energy[i] += hourglass_forces(c, e, x, v, g.b, volume, vr, f);
+  // Corner forces f_n = -m b_n + hourglass, with m = V sigma (less the hourglass b-term).
+  const double* dev = s.points.deviator.col(point).data();
+  const double pq = vr.pressure_total;
+  double m[3][3] = {{volume * (dev[0] - pq), volume * dev[3], volume * dev[5]},
+                    {volume * dev[3], volume * (dev[1] - pq), volume * dev[4]},
+                    {volume * dev[5], volume * dev[4], volume * (dev[2] - pq)}};
+  double coef[8][3] = {};
+  s.hourglass_energy[i] += hourglass_forces(c, e, cp, vr, m, coef);
+  for (int kk = 0; kk < 3; ++kk)
+    for (int r = 0; r < 3; ++r)
+      coef[1 << kk][r] =
+          -0.125 * (m[r][0] * cp.ji[kk][0] + m[r][1] * cp.ji[kk][1] + m[r][2] * cp.ji[kk][2]);
+  hex::add_pattern_combination(coef, f);
   return {vr.step, false, failed};
 }
 
@@ -356,7 +393,7 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
       Index local_inverted = std::numeric_limits<Index>::max();
       Index local_eroded = 0;
       bool local_changed = false;
-#pragma omp for schedule(static) nowait
+#pragma omp for schedule(static, kElementChunk) nowait
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
         if (s.eroded[i]) continue;

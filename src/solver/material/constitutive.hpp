@@ -37,24 +37,26 @@ struct PointResult {
 
 namespace detail {
 
-// Radial return for isotropic hardening: solve q - 3G dp - sy(ep + dp) = 0 for dp >= 0 by a
-// Newton iteration kept inside [0, (q - sy(ep)) / 3G] (sy is non-decreasing in ep).
+// Radial return for isotropic hardening: solve g(dp) = q - 3G dp - sy(ep + dp) = 0 for dp >= 0
+// by Newton's method kept inside the bracket [0, (q - sy(ep)) / 3G] (sy is non-decreasing in
+// ep). sy0 and h0 are the flow stress and slope at ep, which the caller already has. The
+// iteration stops on the residual (|g| <= 1e-12 q, far below any stress that matters), so the
+// converged point costs no extra evaluation of the hardening law.
 template <typename Yield>
-double radial_return(double q, double shear, double ep, double sy0, Yield yield) {
-  double hi = (q - sy0) / (3.0 * shear), lo = 0.0;
-  double dp = 0.0;
-  for (int it = 0; it < 12; ++it) {
-    double sy = 0.0, slope = 0.0;
+double radial_return(double q, double shear, double ep, double sy0, double h0, Yield yield) {
+  double lo = 0.0, hi = (q - sy0) / (3.0 * shear);
+  double dp = 0.0, g = q - sy0, slope = h0;
+  for (int it = 0; it < 20; ++it) {
+    const double next = dp + g / (3.0 * shear + slope);
+    dp = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+    double sy = 0.0;
     yield(ep + dp, sy, slope);
-    const double g = q - 3.0 * shear * dp - sy;
+    g = q - 3.0 * shear * dp - sy;
+    if (std::abs(g) <= 1.0e-12 * q) break;
     if (g > 0.0)
       lo = dp;
     else
       hi = dp;
-    const double next = dp + g / (3.0 * shear + slope);
-    const double bounded = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
-    if (std::abs(bounded - dp) <= 1.0e-12 * (1.0 + dp) + 1.0e-14) return bounded;
-    dp = bounded;
   }
   return dp;
 }
@@ -79,20 +81,29 @@ inline void table_yield(const Material& m, double ep, double& sy, double& slope)
   sy = y[i] + slope * (ep - x[i]);
 }
 
-inline double jc_thermal_factor(const Material& m, double temperature) {
-  if (m.melt_temperature <= m.room_temperature) return 1.0;
-  const double ts = (temperature - m.room_temperature) / (m.melt_temperature - m.room_temperature);
-  if (ts <= 0.0) return 1.0;
-  if (ts >= 1.0) return 0.0;
-  return 1.0 - std::pow(ts, m.jc_m);
+// Homologous temperature T* = (T - TR) / (TM - TR); 0 when TM is not above TR (no softening).
+inline double homologous_temperature(const Material& m, double temperature) {
+  if (m.melt_temperature <= m.room_temperature) return 0.0;
+  return (temperature - m.room_temperature) / (m.melt_temperature - m.room_temperature);
 }
 
-// Scales the trial deviator back onto the yield surface; returns dp.
+// 1 - T*^M for 0 < T* < 1.
+inline double jc_thermal_factor(const Material& m, double ts) {
+  return ts <= 0.0 ? 1.0 : 1.0 - std::pow(ts, m.jc_m);
+}
+
+// A lower bound of 1 - T*^M that needs no power: 1 - T* when M >= 1, else 0.
+inline double jc_thermal_floor(const Material& m, double ts) {
+  if (ts <= 0.0) return 1.0;
+  return m.jc_m >= 1.0 ? 1.0 - ts : 0.0;
+}
+
+// Scales the trial deviator (equivalent stress q) back onto the yield surface; returns dp.
 template <typename Yield>
-double isotropic_return(double* s, double shear, double& ep, double sy0, Yield yield) {
-  const double q = std::sqrt(1.5 * contract(s, s));
+double isotropic_return(double* s, double q, double shear, double& ep, double sy0, double h0,
+                        Yield yield) {
   if (q <= sy0) return 0.0;
-  const double dp = radial_return(q, shear, ep, sy0, yield);
+  const double dp = radial_return(q, shear, ep, sy0, h0, yield);
   const double scale = 1.0 - 3.0 * shear * dp / q;
   for (int k = 0; k < 6; ++k)
     s[k] *= scale;
@@ -138,8 +149,10 @@ inline PointResult update_deviator(const Material& m, const PointInput& in, Poin
       const double rf = detail::cowper_symonds(m, in.effective_strain_rate);
       double sy0 = 0.0, slope = 0.0;
       detail::table_yield(m, st.plastic_strain, sy0, slope);
+      const double q = std::sqrt(1.5 * contract(s, s));
       r.plastic_increment = detail::isotropic_return(
-          s, m.shear_modulus, st.plastic_strain, rf * sy0, [&](double ep, double& sy, double& h) {
+          s, q, m.shear_modulus, st.plastic_strain, rf * sy0, rf * slope,
+          [&](double ep, double& sy, double& h) {
             detail::table_yield(m, ep, sy, h);
             sy *= rf;
             h *= rf;
@@ -149,14 +162,26 @@ inline PointResult update_deviator(const Material& m, const PointInput& in, Poin
     case MaterialModel::johnson_cook: {
       // sigma_y = (A + B ep^N)(1 + C ln rate*)(1 - T*^M); rate* clamped at 1 so slow rates do
       // not soften below the quasi-static curve.
-      const double rate_star = std::max(in.effective_strain_rate / m.reference_rate, 1.0);
-      const double rf = (m.jc_c != 0.0 ? 1.0 + m.jc_c * std::log(rate_star) : 1.0) *
-                        detail::jc_thermal_factor(m, in.temperature);
-      if (rf <= 0.0) {  // molten: no deviatoric strength
+      const double ts = detail::homologous_temperature(m, in.temperature);
+      if (ts >= 1.0) {  // molten: no deviatoric strength
         for (int k = 0; k < 6; ++k)
           s[k] = 0.0;
         break;
       }
+      // The flow stress is at least A times a lower bound of the rate and thermal factors
+      // (B >= 0, checked at compile): most elastic points are settled without log or pow.
+      const double q = std::sqrt(1.5 * contract(s, s));
+      const double rate_floor = m.jc_c >= 0.0 ? 1.0 : 0.0;
+      if (q <= rate_floor * detail::jc_thermal_floor(m, ts) * m.jc_a) break;
+      const double rate_star = std::max(in.effective_strain_rate / m.reference_rate, 1.0);
+      const double rate_factor = m.jc_c != 0.0 ? 1.0 + m.jc_c * std::log(rate_star) : 1.0;
+      if (rate_factor <= 0.0) {
+        for (int k = 0; k < 6; ++k)
+          s[k] = 0.0;
+        break;
+      }
+      const double rf = rate_factor * detail::jc_thermal_factor(m, ts);
+      if (q <= rf * m.jc_a) break;
       auto yield = [&](double ep, double& sy, double& h) {
         if (ep > 0.0) {
           const double pw = std::pow(ep, m.jc_n);
@@ -176,16 +201,13 @@ inline PointResult update_deviator(const Material& m, const PointInput& in, Poin
       };
       double sy0 = 0.0, h0 = 0.0;
       yield(st.plastic_strain, sy0, h0);
-      const double dp = detail::isotropic_return(s, m.shear_modulus, st.plastic_strain, sy0, yield);
+      const double dp =
+          detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, sy0, h0, yield);
       r.plastic_increment = dp;
       if (dp > 0.0 && m.damage_active) {
-        const double q = std::sqrt(1.5 * contract(s, s));
-        const double triax = q > 0.0 ? -in.pressure / q : 0.0;
+        const double q_returned = std::sqrt(1.5 * contract(s, s));
+        const double triax = q_returned > 0.0 ? -in.pressure / q_returned : 0.0;
         const auto& d = m.damage;
-        const double ts =
-            m.melt_temperature > m.room_temperature
-                ? (in.temperature - m.room_temperature) / (m.melt_temperature - m.room_temperature)
-                : 0.0;
         double ef = (d[0] + d[1] * std::exp(d[2] * triax)) * (1.0 + d[3] * std::log(rate_star)) *
                     (1.0 + d[4] * ts);
         ef = std::max(ef, m.min_failure_strain);
