@@ -64,7 +64,7 @@ inline Gradients gradients(const Corners& x, const double g[8][3]) {
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k)
         j[i][k] += x[n][i] * g[n][k];
-  Gradients out;  // b is filled only for a valid element (det > 0); no zeroing on the hot path
+  Gradients out;    // b is filled only for a valid element (det > 0); no zeroing on the hot path
   double ji[3][3];  // inverse of j: ji[k][i] = dxi_k / dx_i
   out.det = invert(j, ji);
   if (!(out.det > 0.0)) return out;

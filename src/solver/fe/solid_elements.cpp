@@ -225,8 +225,8 @@ CentrePoint centre_point(const Corners& x, const Corners& v) {
   if (!(p.volume > 0.0)) return p;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      p.l[i][j] = 0.125 * (p.hv[1][i] * p.ji[0][j] + p.hv[2][i] * p.ji[1][j] +
-                           p.hv[4][i] * p.ji[2][j]);
+      p.l[i][j] =
+          0.125 * (p.hv[1][i] * p.ji[0][j] + p.hv[2][i] * p.ji[1][j] + p.hv[4][i] * p.ji[2][j]);
   return p;
 }
 

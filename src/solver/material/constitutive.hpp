@@ -150,13 +150,13 @@ inline PointResult update_deviator(const Material& m, const PointInput& in, Poin
       double sy0 = 0.0, slope = 0.0;
       detail::table_yield(m, st.plastic_strain, sy0, slope);
       const double q = std::sqrt(1.5 * contract(s, s));
-      r.plastic_increment = detail::isotropic_return(
-          s, q, m.shear_modulus, st.plastic_strain, rf * sy0, rf * slope,
-          [&](double ep, double& sy, double& h) {
-            detail::table_yield(m, ep, sy, h);
-            sy *= rf;
-            h *= rf;
-          });
+      r.plastic_increment =
+          detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, rf * sy0, rf * slope,
+                                   [&](double ep, double& sy, double& h) {
+                                     detail::table_yield(m, ep, sy, h);
+                                     sy *= rf;
+                                     h *= rf;
+                                   });
       break;
     }
     case MaterialModel::johnson_cook: {
