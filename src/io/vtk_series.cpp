@@ -5,7 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
-#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -24,8 +24,10 @@ namespace {
 using solver::Index;
 using solver::State;
 
-vtkNew<vtkDoubleArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) {
-  vtkNew<vtkDoubleArray> a;
+// Fields are single precision, as in d3plot: half the bytes to compress and write, and far more
+// digits than a plot shows. Point coordinates stay double (they are the deformed geometry).
+vtkNew<vtkFloatArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) {
+  vtkNew<vtkFloatArray> a;
   a->SetName(name);
   a->SetNumberOfComponents(3);
   a->SetNumberOfTuples(v.cols());
@@ -36,7 +38,7 @@ vtkNew<vtkDoubleArray> vector_array(const char* name, const Eigen::Matrix3Xd& v)
 
 // Cell fields in cell order: deformable solids (not eroded), rigid solids, rigid shells.
 struct CellFields {
-  vtkNew<vtkDoubleArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
+  vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
   vtkNew<vtkIntArray> part, eroded;
   CellFields() {
     stress->SetName("stress");
@@ -54,13 +56,15 @@ struct CellFields {
   }
   void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id) {
     const auto& s = r.stress;
-    const double tuple[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
-    stress->InsertNextTuple(tuple);
-    von_mises->InsertNextValue(r.von_mises);
-    plastic_strain->InsertNextValue(r.plastic_strain);
-    temperature->InsertNextValue(temp);
-    damage->InsertNextValue(r.damage);
-    pressure->InsertNextValue(pressure_value);
+    const float tuple[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
+                            static_cast<float>(s[2]), static_cast<float>(s[3]),
+                            static_cast<float>(s[4]), static_cast<float>(s[5])};
+    stress->InsertNextTypedTuple(tuple);
+    von_mises->InsertNextValue(static_cast<float>(r.von_mises));
+    plastic_strain->InsertNextValue(static_cast<float>(r.plastic_strain));
+    temperature->InsertNextValue(static_cast<float>(temp));
+    damage->InsertNextValue(static_cast<float>(r.damage));
+    pressure->InsertNextValue(static_cast<float>(pressure_value));
     part->InsertNextValue(part_id);
     eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
   }
@@ -137,7 +141,7 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   writer->SetFileName(temp_path.string().c_str());
   writer->SetInputData(grid);
   writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
+  writer->SetCompressorTypeToLZ4();
   if (writer->Write() != 1) {
     throw std::runtime_error(fmt::format("cannot write {}", temp_path.string()));
   }

@@ -1,6 +1,9 @@
 #pragma once
-/// d3plot-like VTK output: one XML unstructured-grid file per state (binary, zlib) written with
-/// VTK's own writer, and a ParaView collection d3plot.pvd listing the states with their times.
+/// d3plot-like VTK output: one XML unstructured-grid file per state written with VTK's own writer,
+/// and a ParaView collection d3plot.pvd listing the states with their times. Binary with LZ4
+/// compression, fields in single precision as in d3plot: measured on the h = 0.1 elastic-wave
+/// rod (81 states of 14,400 cells), output took 7.3 s with double fields and zlib (level 5),
+/// 3.0 s with float fields and zlib level 1 (120 MB), 1.5 s with float fields and LZ4 (187 MB).
 /// Each file is written under a temporary name and renamed, so every file on disk is complete
 /// even if the run is killed.
 #include <Eigen/Core>
