@@ -54,13 +54,27 @@ HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& p
   return hg;
 }
 
-// Volume the formulation itself measures (so the relative volume starts at exactly 1).
-double formulation_volume(const hex::Corners& x, SolidFormulation f) {
-  if (f == SolidFormulation::one_point) return 8.0 * hex::centre_gradients(x).det;
+// Exact volume of the trilinear hexahedron (det J is at most quadratic in each parent
+// coordinate, so 2x2x2 Gauss points integrate it exactly), also for degenerate hexahedra.
+double exact_volume(const hex::Corners& x) {
   double v = 0.0;
   for (const auto& g : hex::gauss_points().gradients)
     v += hex::gradients(x, g).det;
   return v;
+}
+
+// Volume the formulation itself measures (so the relative volume starts at exactly 1).
+double formulation_volume(const hex::Corners& x, SolidFormulation f) {
+  if (f == SolidFormulation::one_point) return 8.0 * hex::centre_gradients(x).det;
+  return exact_volume(x);
+}
+
+// Number of distinct nodes of a connectivity: 8 for a hexahedron, 6 for a pentahedron (wedge)
+// and 4 for a tetrahedron written as degenerate hexahedra with repeated nodes.
+int distinct_nodes(const std::array<Index, 8>& conn) {
+  std::array<Index, 8> sorted = conn;
+  std::sort(sorted.begin(), sorted.end());
+  return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
 }
 
 void build_corner_lists(State& s) {
@@ -153,6 +167,7 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
       b.begin = so.count();
       b.point_begin = points;
       const Material& cm = s.materials.back();
+      std::array<int, 3> degenerate{};  // tetrahedra, pentahedra, other
       for (const std::size_t e : by_part[p]) {
         const model::SolidElement& el = m.solids[e];
         std::array<Index, 8> conn{};
@@ -165,6 +180,11 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
                 nd.initial(k, conn[static_cast<std::size_t>(c)]);
         }
         const double v0 = formulation_volume(x, b.formulation);
+        // Mass from the exact volume: for a distorted or degenerate element the one-point
+        // volume differs from it (a tetrahedron's by ~40 %), and mass must not.
+        const double mass = cm.density * exact_volume(x);
+        const int distinct = distinct_nodes(conn);
+        if (distinct < 8) ++degenerate[distinct == 4 ? 0 : (distinct == 6 ? 1 : 2)];
         if (!(v0 > 0.0)) {
           d.error(el.loc,
                   "solid element {} of part {} has non-positive volume {:.4g} "
@@ -175,12 +195,20 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
         so.nodes.push_back(conn);
         so.part.push_back(static_cast<Index>(p));
         so.initial_volume.push_back(v0);
-        so.mass.push_back(cm.density * v0);
+        so.mass.push_back(mass);
         so.eos_energy.push_back(cm.eos.initial_energy);
         so.temperature.push_back(cm.model == MaterialModel::johnson_cook ? cm.room_temperature
                                                                          : 0.0);
         for (const Index v : conn)
-          nd.mass[static_cast<std::size_t>(v)] += cm.density * v0 / 8.0;
+          nd.mass[static_cast<std::size_t>(v)] += mass / 8.0;
+      }
+      if (degenerate[0] + degenerate[1] + degenerate[2] > 0) {
+        d.warning(part.loc,
+                  "part {}: degenerate hexahedra (repeated nodes): {} tetrahedra, {} pentahedra, "
+                  "{} other; they run as ELFORM {} hexahedra with their exact mass, stiffer and "
+                  "less accurate than true tetrahedron/pentahedron elements",
+                  part.id, degenerate[0], degenerate[1], degenerate[2],
+                  sec->element_formulation == 2 ? 2 : 1);
       }
       b.end = so.count();
       points += (b.end - b.begin) * b.points_per_element;

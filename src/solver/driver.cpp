@@ -176,10 +176,14 @@ RunResult run(State& s, const RunHooks& hooks) {
     pass = compute_forces(s);
     result.element_cycles += elements;
     clock.charge(PhaseTimes::elements);
-    if (pass.inverted >= 0) {
-      result.reason = StopReason::inverted_element;
-      result.message = fmt::format("negative volume in {} at t = {:.6e} (cycle {})",
-                                   element_name(s, pass.inverted), s.time, s.cycle);
+    if (pass.inverted >= 0 || pass.non_finite >= 0) {
+      result.reason = pass.inverted >= 0 ? StopReason::inverted_element : StopReason::non_finite;
+      result.message =
+          pass.inverted >= 0
+              ? fmt::format("negative volume in {} at t = {:.6e} (cycle {})",
+                            element_name(s, pass.inverted), s.time, s.cycle)
+              : fmt::format("non-finite stress or wave speed in {} at t = {:.6e} (cycle {})",
+                            element_name(s, pass.non_finite), s.time, s.cycle);
       if (hooks.write) hooks.write(s, s.nodes.velocity, true);
       break;
     }

@@ -380,6 +380,7 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
   ElementPassResult result;
   StepMin global;
   Index inverted = std::numeric_limits<Index>::max();
+  Index non_finite = std::numeric_limits<Index>::max();
   Index eroded = 0;
   bool mass_changed = false;
   for (const SolidBlock& block : s.blocks) {
@@ -391,6 +392,7 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
     {
       StepMin local;
       Index local_inverted = std::numeric_limits<Index>::max();
+      Index local_non_finite = std::numeric_limits<Index>::max();
       Index local_eroded = 0;
       bool local_changed = false;
 #pragma omp for schedule(static, kElementChunk) nowait
@@ -401,6 +403,10 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
             one_point ? one_point_element(c, e) : selective_reduced_element(c, e);
         if (o.inverted) {
           local_inverted = std::min(local_inverted, e);
+          continue;
+        }
+        if (!std::isfinite(o.step)) {  // NaN or Inf stress, energy or wave speed
+          local_non_finite = std::min(local_non_finite, e);
           continue;
         }
         if (o.failed) {
@@ -417,6 +423,7 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
       {
         global.take(local.step, local.element);
         inverted = std::min(inverted, local_inverted);
+        non_finite = std::min(non_finite, local_non_finite);
         eroded += local_eroded;
         mass_changed = mass_changed || local_changed;
       }
@@ -425,6 +432,7 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
   result.critical_step = global.step;
   result.controlling = global.element;
   result.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
+  result.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
   result.newly_eroded = eroded;
   result.mass_changed = mass_changed;
   return result;

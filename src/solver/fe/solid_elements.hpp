@@ -16,6 +16,7 @@ struct ElementPassResult {
   double critical_step = 0.0;  ///< min over elements of the element step (before TSSFAC)
   Index controlling = -1;      ///< element giving it (lowest index on ties)
   Index inverted = -1;         ///< lowest element with non-positive volume, or -1
+  Index non_finite = -1;       ///< lowest element with a NaN/Inf state (its step), or -1
   Index newly_eroded = 0;
   bool mass_changed = false;  ///< mass scaling added mass this pass
 };

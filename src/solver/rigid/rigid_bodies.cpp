@@ -32,7 +32,9 @@ struct DirectionConstraints {
 // ones (A = M I for translation, the inertia tensor for rotation).
 Vec3 constrained_solve(const Mat3& a, const Vec3& b, const DirectionConstraints& c) {
   if (c.dirs.cols() == 0) return a.ldlt().solve(b);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(c.dirs.transpose(), Eigen::ComputeFullV);
+  // solve() needs U as well as V (without U it reads an empty matrix).
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(c.dirs.transpose(),
+                                        Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Index rank = static_cast<Index>(svd.rank());
   const Eigen::VectorXd vals =
       Eigen::Map<const Eigen::VectorXd>(c.values.data(), static_cast<Index>(c.values.size()));
