@@ -220,11 +220,16 @@ class Bndout final : public HistoryFile {
     ascii(" velocity boundary condition forces/rigid body moments\n");
     Vec3 total = Vec3::Zero();
     double etotal = 0.0;
+    // One nd# line per prescribed node, as LS-DYNA prints them.
     for (const solver::NodalMotion& m : s.nodal_motions) {
-      ascii(" nd#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",
-            m.id, m.force[0], m.force[1], m.force[2], m.work);
-      csv("{:.9e},node_motion,{},{:.9e},{:.9e},{:.9e},0,0,0,{:.9e}\n", s.time, m.id, m.force[0],
-          m.force[1], m.force[2], m.work);
+      for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+        const auto f = m.node_force.col(static_cast<Index>(k));
+        const model::Id id = s.nodes.ids[static_cast<std::size_t>(m.nodes[k])];
+        ascii(" nd#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",
+              id, f[0], f[1], f[2], m.node_work[k]);
+        csv("{:.9e},node,{},{:.9e},{:.9e},{:.9e},0,0,0,{:.9e}\n", s.time, id, f[0], f[1], f[2],
+            m.node_work[k]);
+      }
       total += m.force;
       etotal += m.work;
     }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "solver/state.hpp"
 
@@ -33,19 +34,28 @@ class HistoryFile {
   [[nodiscard]] const std::string& name() const { return name_; }
 
  protected:
+  // The format strings are checked against the arguments at the call site; numbers are printed
+  // with -0 as 0 (a reaction of -0.0000E+00 reads like a sign error).
   template <typename... Args>
   void ascii(fmt::format_string<Args...> f, Args&&... args) {
-    fmt::print(ascii_.get(), f, std::forward<Args>(args)...);
+    fmt::print(ascii_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
   }
   template <typename... Args>
   void csv(fmt::format_string<Args...> f, Args&&... args) {
-    fmt::print(csv_.get(), f, std::forward<Args>(args)...);
+    fmt::print(csv_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
   }
   void flush();
   /// "{BEGIN LEGEND}" block listing entity IDs and titles.
   void legend(const std::vector<std::pair<long long, std::string>>& entities);
 
  private:
+  template <typename T>
+  static decltype(auto) without_negative_zero(const T& v) {
+    if constexpr (std::is_floating_point_v<T>)
+      return v + T(0);  // -0 + 0 = +0
+    else
+      return (v);
+  }
   struct Closer {
     void operator()(std::FILE* f) const {
       if (f) std::fclose(f);

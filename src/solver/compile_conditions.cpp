@@ -208,6 +208,8 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
     nm.birth = pm.birth;
     nm.death = death;
     if (dof == 4) nm.direction = vector_direction(m, pm.vector, pm.vector_loc, d);
+    nm.node_force.setZero(3, static_cast<Index>(nm.nodes.size()));
+    nm.node_work.assign(nm.nodes.size(), 0.0);
     s.nodal_motions.push_back(std::move(nm));
   }
 }

@@ -145,6 +145,8 @@ struct NodalMotion {
   double birth = 0.0, death = 1.0e28;
   Vec3 force = Vec3::Zero();  ///< reaction resultant this cycle (bndout)
   double work = 0.0;
+  Eigen::Matrix3Xd node_force;    ///< per node of `nodes`, this cycle (bndout nd# lines)
+  std::vector<double> node_work;  ///< per node of `nodes`, accumulated
 };
 
 struct RigidWallState {

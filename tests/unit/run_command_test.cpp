@@ -13,14 +13,9 @@ namespace mcdyna::test {
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // The .vtu files listed in a .pvd collection, in order.
 std::vector<std::string> collection(const std::filesystem::path& pvd) {
-  const std::string text = slurp(pvd);
+  const std::string text = read_text(pvd);
   std::vector<std::string> files;
   const std::string key = "file=\"";
   for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at)) {
@@ -52,6 +47,46 @@ void check_csv_whole(const std::filesystem::path& p) {
   CHECK(rows > 0);
 }
 
+// A CSV history as rows of named fields (numbers; text fields such as `kind` as NaN, kept raw
+// in `text`).
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  std::vector<std::vector<std::string>> text;
+  [[nodiscard]] std::size_t column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+    return static_cast<std::size_t>(it - header.begin());
+  }
+};
+
+CsvTable read_csv(const std::filesystem::path& p) {
+  CsvTable t;
+  std::ifstream in(p);
+  std::string line;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    for (std::size_t c = l.find(','); c != std::string::npos; c = l.find(',', start = c + 1))
+      out.push_back(l.substr(start, c - start));
+    out.push_back(l.substr(start));
+    return out;
+  };
+  REQUIRE(std::getline(in, line));
+  t.header = split(line);
+  while (std::getline(in, line)) {
+    t.text.push_back(split(line));
+    std::vector<double> row;
+    for (const std::string& f : t.text.back()) {
+      char* end = nullptr;
+      const double v = std::strtod(f.c_str(), &end);
+      row.push_back(end != f.c_str() && *end == '\0' ? v : std::nan(""));
+    }
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
 }  // namespace
 
 TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working directory") {
@@ -64,7 +99,7 @@ TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working di
   CHECK(r.output.find("Timing per phase") != std::string::npos);
   for (const char* f : {"d3hsp", "glstat", "glstat.csv", "d3plot.pvd"})
     CHECK_MESSAGE(std::filesystem::exists(dir.path() / f), f);
-  CHECK(slurp(dir.path() / "d3hsp").find("2 thread") != std::string::npos);
+  CHECK(read_text(dir.path() / "d3hsp").find("2 thread") != std::string::npos);
   const auto states = collection(dir.path() / "d3plot.pvd");
   CHECK(states.size() == 51);  // t = 0, 1 us, ..., 50 us
   const auto first = read_vtu(dir.path() / states.front());
@@ -83,7 +118,7 @@ TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working di
   CHECK(last->GetPointData()->GetArray("velocity")->GetComponent(26, 2) > 0.0);
   check_csv_whole(dir.path() / "rwforc.csv");
   check_csv_whole(dir.path() / "glstat.csv");
-  const std::string glstat = slurp(dir.path() / "glstat");
+  const std::string glstat = read_text(dir.path() / "glstat");
   CHECK(glstat.find(" kinetic energy.................") != std::string::npos);
   CHECK(glstat.find(" total energy / initial energy..") != std::string::npos);
 }
@@ -110,7 +145,8 @@ TEST_CASE("an unstable run exits 4, names the element and leaves readable output
 
 TEST_CASE("SIGINT stops the run with exit 5, a final state and whole files") {
   TempDir dir;
-  std::string deck = slurp(std::string(MCDYNA_SOURCE_DIR) + "/decks/taylor_bar/taylor_coarse.k");
+  std::string deck =
+      read_text(std::string(MCDYNA_SOURCE_DIR) + "/decks/taylor_bar/taylor_coarse.k");
   const auto at = deck.find("*CONTROL_TERMINATION\n");
   deck.replace(at, deck.find('\n', at + 21) - at, "*CONTROL_TERMINATION\n       1.0");  // long
   const auto path = dir.write("long.k", deck);
@@ -124,7 +160,140 @@ TEST_CASE("SIGINT stops the run with exit 5, a final state and whole files") {
     CHECK(read_vtu(dir.path() / "out" / s)->GetNumberOfCells() > 0);
   for (const char* f : {"glstat.csv", "matsum.csv", "rwforc.csv"})
     check_csv_whole(dir.path() / "out" / f);
-  CHECK(slurp(dir.path() / "out" / "d3hsp").find("interrupted by signal") != std::string::npos);
+  CHECK(read_text(dir.path() / "out" / "d3hsp").find("interrupted by signal") != std::string::npos);
+}
+
+}  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("history files: nodout, bndout, spcforc and matsum carry the motion they describe") {
+  TempDir dir;
+  // An elastic cube standing on a z-only SPC, its top pushed down by a prescribed displacement
+  // d = -0.01 t (VAD 2), and a separate rigid cube (mass 2) driven by the velocity ramp v = t.
+  std::string deck =
+      "*KEYWORD\n*TITLE\nhistories\n*CONTROL_TERMINATION\n0.5\n*CONTROL_TIMESTEP\n0.001\n"
+      "*DATABASE_NODOUT\n0.05\n*DATABASE_SPCFORC\n0.05\n*DATABASE_BNDOUT\n0.05\n"
+      "*DATABASE_MATSUM\n0.05\n*DATABASE_HISTORY_NODE\n25\n"
+      "*PART\ncube\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,1.0,100.0,0.3\n"
+      "*PART\nrigid\n2,1,2\n*MAT_RIGID\n2,2.0,100.0,0.3\n" +
+      box_mesh(2, 2, 2, 0.5) + box_mesh(1, 1, 1, 1.0, 101, 101, 2, 5.0) +
+      "*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8\n9\n*SET_NODE_LIST\n2\n19,20,21,22,23,24,25,26\n27\n"
+      "*BOUNDARY_SPC_SET\n1,0,0,0,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,3,2,1,1.0\n"
+      "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n2,3,0,2,1.0\n"
+      "*DEFINE_CURVE\n1\n0,0\n1,-0.01\n*DEFINE_CURVE\n2\n0,0\n10,10\n*END\n";
+  dir.write("deck.k", deck);
+  const Run r = run_mcdyna("run deck.k --out out -q", "cd " + dir.path().string() + " && ");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const std::filesystem::path out = dir.path() / "out";
+  for (const char* f : {"nodout", "bndout", "spcforc", "matsum"}) {
+    CHECK(std::filesystem::exists(out / f));
+    check_csv_whole(out / (std::string(f) + ".csv"));
+  }
+
+  // nodout: the top node follows the prescribed displacement exactly.
+  const CsvTable nodout = read_csv(out / "nodout.csv");
+  for (const auto& row : nodout.rows) {
+    CHECK(row[nodout.column("node")] == 25);
+    CHECK(row[nodout.column("z_disp")] ==
+          doctest::Approx(-0.01 * row[nodout.column("time")]).epsilon(1e-9));
+  }
+  CHECK(nodout.rows.size() >= 10);
+
+  // bndout: one line per prescribed node (19..27) and the rigid part's constraint force m a = 2.
+  const CsvTable bnd = read_csv(out / "bndout.csv");
+  int motion_rows = 0, node_rows = 0;
+  for (std::size_t k = 0; k < bnd.rows.size(); ++k) {
+    const std::string& kind = bnd.text[k][bnd.column("kind")];
+    const double id = bnd.rows[k][bnd.column("id")];
+    if (kind == "rigid_part") {
+      ++motion_rows;
+      CHECK(id == 2);
+      CHECK(bnd.rows[k][bnd.column("z_force")] == doctest::Approx(2.0).epsilon(1e-9));
+    } else {
+      ++node_rows;
+      CHECK(kind == "node");
+      CHECK((id >= 19 && id <= 27));
+    }
+  }
+  CHECK(node_rows == 9 * motion_rows);
+  CHECK(read_text(out / "bndout").find("mat#       2  xforce=") != std::string::npos);
+
+  // spcforc: the nine bottom nodes, z reactions only; the ASCII lines carry the CSV numbers.
+  const CsvTable spc = read_csv(out / "spcforc.csv");
+  double last_time = 0.0;
+  for (const auto& row : spc.rows) {
+    CHECK(row[spc.column("node")] <= 9);
+    CHECK(row[spc.column("x_force")] == 0.0);
+    CHECK(row[spc.column("y_force")] == 0.0);
+    last_time = row[spc.column("time")];
+  }
+  const std::string spc_ascii = read_text(out / "spcforc");
+  const auto& last = spc.rows.back();
+  CHECK(spc_ascii.find(fmt::format(" node={:8d} local x,y,z forces ={:14.4E}{:14.4E}{:14.4E}",
+                                   static_cast<int>(last[spc.column("node")]), 0.0, 0.0,
+                                   last[spc.column("z_force")])) != std::string::npos);
+  CHECK(spc_ascii.find(fmt::format(" output at time ={:14.5E}", last_time)) != std::string::npos);
+
+  // matsum: the rigid part's centre velocity follows the ramp v = t. The value shown is the mean
+  // of the half-step velocities v(t - dt_old / 2) and v(t + dt_new / 2), which differs from
+  // v(t) by (dt_new - dt_old) / 4, at most dt / 4 = 2.5e-4 with DTINIT = 0.001.
+  const CsvTable mat = read_csv(out / "matsum.csv");
+  int rigid_rows = 0;
+  for (const auto& row : mat.rows)
+    if (row[mat.column("part")] == 2) {
+      ++rigid_rows;
+      CHECK(std::abs(row[mat.column("z_rigid_velocity")] - row[mat.column("time")]) <= 2.5e-4);
+    }
+  CHECK(rigid_rows >= 10);
+}
+
+}  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("eroded elements vanish from the forces and the d3plot states; their mass stays") {
+  TempDir dir;
+  // A 6 x 1 x 1 bar of MAT_003 with FS = 0.05, its far end pulled at 5 length/time: it necks
+  // and fails.
+  std::string deck =
+      "*KEYWORD\n*CONTROL_TERMINATION\n0.2\n*DATABASE_BINARY_D3PLOT\n0.02\n"
+      "*PART\nbar\n1,1,1\n*SECTION_SOLID\n1,1\n"
+      "*MAT_PLASTIC_KINEMATIC\n1,1.0,100.0,0.3,0.5,1.0,1.0\n0,0,0.05\n" +
+      box_mesh(6, 1, 1, 0.5) +
+      "*SET_NODE_LIST\n1\n1,8,15,22\n*SET_NODE_LIST\n2\n7,14,21,28\n"
+      "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,3,1.0\n"
+      "*DEFINE_CURVE\n3\n0,5\n1,5\n*END\n";
+  Simulation sim = prepare(dir, deck);
+  double mass0 = 0.0;
+  for (double m : sim.state->nodes.mass)
+    mass0 += m;
+  run(sim);
+  int eroded = 0;
+  for (std::size_t e = 0; e < sim.state->solids.eroded.size(); ++e)
+    if (sim.state->solids.eroded[e]) {
+      ++eroded;
+      for (int k = 0; k < 24; ++k)
+        CHECK(sim.state->solids.corner_force[24 * e + static_cast<std::size_t>(k)] == 0.0);
+    }
+  double mass1 = 0.0;
+  for (double m : sim.state->nodes.mass)
+    mass1 += m;
+  MESSAGE(eroded, " of 6 elements eroded");
+  CHECK(eroded >= 1);
+  CHECK(mass1 == mass0);
+
+  // The same deck from the command line: the last state has fewer cells than the first.
+  const Run r = run_mcdyna("run " + (dir.path() / "deck.k").string() + " --out " +
+                           (dir.path() / "out").string() + " -q");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const auto files = collection(dir.path() / "out" / "d3plot.pvd");
+  REQUIRE(files.size() >= 2);
+  const auto first = read_vtu(dir.path() / "out" / files.front());
+  const auto last = read_vtu(dir.path() / "out" / files.back());
+  CHECK(first->GetNumberOfCells() == 6);
+  CHECK(last->GetNumberOfCells() == 6 - eroded);
+  CHECK(last->GetNumberOfPoints() == first->GetNumberOfPoints());
 }
 
 }  // namespace mcdyna::test

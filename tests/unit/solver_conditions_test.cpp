@@ -143,10 +143,7 @@ TEST_CASE("SPC reactions balance the load: the fixed end carries rho c v0 A") {
   TempDir dir;
   // Elastic-wave rod h = 0.2 to t = 8: the fixed end at x = 0 holds stress rho c |v0| = 1 over
   // the 1.2 x 1.2 section, so the reaction is +1.44 in x (pushing the rod back, which moves -x).
-  std::string deck = [] {
-    std::ifstream in(std::string(MCDYNA_SOURCE_DIR) + "/decks/elastic_wave/rod_h0.2.k");
-    return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  }();
+  std::string deck = source_text("decks/elastic_wave/rod_h0.2.k");
   deck.replace(deck.find("   80.0000"), 10, "    8.0000");  // ENDTIM
   Simulation sim = prepare(dir, deck);
   run(sim);

@@ -12,15 +12,6 @@ namespace mcdyna::test {
 
 namespace {
 
-std::string source_path(const std::string& rel) {
-  return std::string(MCDYNA_SOURCE_DIR) + "/" + rel;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 solver::Index node_at(const solver::State& s, double x, double y, double z) {
   for (solver::Index n = 0; n < s.nodes.count(); ++n)
     if ((s.nodes.initial.col(n) - solver::Vec3(x, y, z)).norm() < 1e-6) return n;
@@ -39,7 +30,7 @@ double rod_free_end(double t) {
 // Relative L2 error of the free-end displacement over 0 <= t <= 80, sampled every cycle.
 double rod_error(const std::string& deck) {
   TempDir dir;
-  Simulation sim = prepare(dir, read_text(source_path(deck)));
+  Simulation sim = prepare(dir, source_text(deck));
   const solver::Index tip = node_at(*sim.state, 10.0, 0.6, 0.6);
   REQUIRE(tip >= 0);
   double err = 0.0, norm = 0.0, last = 0.0;
@@ -127,7 +118,7 @@ TEST_CASE("free rigid body spinning about a non-principal axis keeps its angular
 TEST_CASE("results are bitwise identical for 1 and 2 threads") {
   auto simulate = [](int threads) {
     TempDir dir;
-    std::string deck = read_text(source_path("decks/taylor_bar/taylor_coarse.k"));
+    std::string deck = source_text("decks/taylor_bar/taylor_coarse.k");
     const auto at = deck.find("*CONTROL_TERMINATION\n");
     deck.insert(deck.find('\n', at + 21), "       300");  // ENDCYC = 300
     Simulation sim = prepare(dir, deck);

@@ -21,6 +21,17 @@
 namespace mcdyna::test {
 
 /// A fresh directory under the system temp dir, removed at scope exit.
+/// Whole contents of a text file ("" if it cannot be read).
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A file of the source tree, e.g. "decks/taylor_bar/taylor_coarse.k".
+inline std::string source_text(const std::string& relative) {
+  return read_text(std::filesystem::path(MCDYNA_SOURCE_DIR) / relative);
+}
+
 class TempDir {
  public:
   TempDir() {
