@@ -1,0 +1,166 @@
+// SPG approximation: kernel functions (value and gradient), neighbour search against brute force,
+// reproducing-kernel shape functions reproducing linear fields at every particle (boundary ones
+// too), degenerate neighbourhoods named, and particles generated from hexahedra.
+#include <doctest/doctest.h>
+#include <omp.h>
+
+#include <random>
+
+#include "solver/spg/particles.hpp"
+#include "solver/spg/shape_functions.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+
+constexpr KernelShape kShapes[] = {KernelShape::cubic_box, KernelShape::quadratic_box,
+                                   KernelShape::cubic_sphere};
+
+// An n x n x n lattice of spacing h, jittered by up to `jitter` h, and supports of `scale` h
+// varied by up to +-10 % per particle and direction.
+struct Cloud {
+  Eigen::Matrix3Xd x, support;
+};
+
+Cloud jittered_lattice(int n, double h, double jitter, double scale, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Cloud c;
+  c.x.resize(3, n * n * n);
+  c.support.resize(3, n * n * n);
+  int p = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i, ++p) {
+        c.x.col(p) =
+            h * Eigen::Vector3d(i + jitter * u(rng), j + jitter * u(rng), k + jitter * u(rng));
+        c.support.col(p) =
+            scale * h * Eigen::Vector3d(1 + 0.1 * u(rng), 1 + 0.1 * u(rng), 1 + 0.1 * u(rng));
+      }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("SPG kernels: continuous, zero outside the support, gradient = finite difference") {
+  const Eigen::Vector3d a(0.3, 0.4, 0.5);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.6, 0.6);
+  for (const KernelShape shape : kShapes) {
+    CHECK(kernel(shape, Eigen::Vector3d(0.31, 0.0, 0.0), a).w == 0.0);
+    CHECK(kernel(shape, Eigen::Vector3d::Zero(), a).w > 0.0);
+    double worst = 0.0;
+    for (int t = 0; t < 200; ++t) {
+      const Eigen::Vector3d r(u(rng) * 0.5, u(rng) * 0.6, u(rng) * 0.8);
+      const KernelValue k = kernel(shape, r, a);
+      CHECK(k.w >= 0.0);
+      CHECK((k.w > 0.0) == in_support(shape, r, a));
+      for (int d = 0; d < 3; ++d) {
+        const double e = 1e-6;
+        Eigen::Vector3d rp = r, rm = r;
+        rp[d] += e;
+        rm[d] -= e;
+        const double fd = (kernel(shape, rp, a).w - kernel(shape, rm, a).w) / (2 * e);
+        worst = std::max(worst, std::abs(fd - k.grad[d]));
+      }
+    }
+    // Central differences of a C1 piecewise polynomial: error O(e^2 / a^3) plus round-off.
+    CHECK(worst < 1e-6);
+  }
+}
+
+TEST_CASE("SPG neighbour search equals brute force for every kernel shape and thread count") {
+  const Cloud c = jittered_lattice(9, 0.1, 0.3, 1.6, 11);
+  for (const KernelShape shape : kShapes) {
+    const NeighbourList brute = find_neighbours_brute_force(c.x, c.support, shape);
+    omp_set_num_threads(1);
+    const NeighbourList one = find_neighbours(c.x, c.support, shape);
+    omp_set_num_threads(2);
+    const NeighbourList two = find_neighbours(c.x, c.support, shape);
+    omp_set_num_threads(omp_get_num_procs());
+    CHECK(one.offsets == brute.offsets);
+    CHECK(one.neighbours == brute.neighbours);
+    CHECK(two.neighbours == brute.neighbours);
+    // An interior particle of a box support of 1.6 h has about 3^3 neighbours.
+    CHECK(brute.count(9 * 9 * 4 + 9 * 4 + 4) >= 8);
+  }
+  // Inactive particles are in no list and have none.
+  std::vector<std::uint8_t> active(static_cast<std::size_t>(c.x.cols()), 1);
+  active[100] = 0;
+  const NeighbourList some = find_neighbours(c.x, c.support, KernelShape::cubic_box, active);
+  CHECK(some.count(100) == 0);
+  CHECK(std::find(some.neighbours.begin(), some.neighbours.end(), 100) == some.neighbours.end());
+}
+
+TEST_CASE("RK shape functions reproduce constant and linear fields and their gradients") {
+  const Cloud c = jittered_lattice(7, 0.2, 0.25, 1.6, 5);
+  for (const KernelShape shape : kShapes) {
+    const NeighbourList list = find_neighbours(c.x, c.support, shape);
+    std::vector<Index> degenerate;
+    const ShapeFunctions sf = shape_functions(c.x, c.support, shape, list, degenerate);
+    CHECK(degenerate.empty());
+    double worst_value = 0.0, worst_gradient = 0.0;
+    for (Index i = 0; i < c.x.cols(); ++i) {  // every particle, the boundary ones included
+      double sum = 0.0;
+      Eigen::Vector3d linear = Eigen::Vector3d::Zero(), grad_sum = Eigen::Vector3d::Zero();
+      Eigen::Matrix3d grad_linear = Eigen::Matrix3d::Zero();
+      for (Index p = list.offsets[static_cast<std::size_t>(i)];
+           p < list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+        const Index j = list.neighbours[static_cast<std::size_t>(p)];
+        const double phi = sf.value[static_cast<std::size_t>(p)];
+        sum += phi;
+        linear += phi * c.x.col(j);
+        grad_sum += sf.gradient.col(p);
+        grad_linear += c.x.col(j) * sf.gradient.col(p).transpose();
+      }
+      worst_value = std::max({worst_value, std::abs(sum - 1.0), (linear - c.x.col(i)).norm()});
+      worst_gradient = std::max(
+          {worst_gradient, grad_sum.norm(), (grad_linear - Eigen::Matrix3d::Identity()).norm()});
+    }
+    CHECK(worst_value < 1e-12);
+    CHECK(worst_gradient < 1e-10);
+  }
+}
+
+TEST_CASE("a degenerate (flat) particle neighbourhood is named, not silently used") {
+  // One layer of particles: every moment matrix is singular in z.
+  Cloud c = jittered_lattice(5, 0.2, 0.0, 1.6, 1);
+  Eigen::Matrix3Xd flat = c.x.leftCols(25);
+  Eigen::Matrix3Xd support = c.support.leftCols(25);
+  const NeighbourList list = find_neighbours(flat, support, KernelShape::cubic_box);
+  std::vector<Index> degenerate;
+  const ShapeFunctions sf =
+      shape_functions(flat, support, KernelShape::cubic_box, list, degenerate);
+  CHECK(degenerate.size() == 25);
+  for (double v : sf.value)
+    CHECK(v == 0.0);
+}
+
+TEST_CASE("particles from hexahedra: lumped volume, spacing from the longest incident edge") {
+  // Two unit cubes side by side in x, then scaled by 0.5 in z.
+  Eigen::Matrix3Xd x(3, 12);
+  int n = 0;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i)
+        x.col(n++) = Eigen::Vector3d(i, j, 0.5 * k);
+  auto id = [](int i, int j, int k) { return static_cast<Index>(i + 3 * (j + 2 * k)); };
+  std::vector<std::array<Index, 8>> hexes;
+  for (int i = 0; i < 2; ++i)
+    hexes.push_back({id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0), id(i, 1, 0), id(i, 0, 1),
+                     id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1)});
+  const GeneratedParticles p = particles_from_hexahedra(x, hexes, {0.5, 0.5});
+  REQUIRE(p.nodes.size() == 12);
+  double total = 0.0;
+  for (double v : p.volume)
+    total += v;
+  CHECK(total == doctest::Approx(1.0));
+  CHECK(p.volume[static_cast<std::size_t>(id(1, 0, 0))] == doctest::Approx(0.125));  // shared
+  CHECK(p.volume[static_cast<std::size_t>(id(0, 0, 0))] == doctest::Approx(0.0625));
+  for (double s : p.spacing)
+    CHECK(s == doctest::Approx(1.0));  // the longest edges are the unit ones
+  const Eigen::Matrix3Xd a = support_sizes(p, Eigen::Vector3d(1.5, 1.6, 1.7));
+  CHECK(a(2, 0) == doctest::Approx(1.7));
+}
+
+}  // namespace mcdyna::solver::spg
