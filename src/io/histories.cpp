@@ -230,8 +230,8 @@ class Bndout final : public HistoryFile {
         csv("{:.9e},node,{},{:.9e},{:.9e},{:.9e},0,0,0,{:.9e}\n", s.time, id, f[0], f[1], f[2],
             m.node_work[k]);
       }
-      total += m.force;
-      etotal += m.work;
+      total += m.force();
+      etotal += m.work();
     }
     for (const solver::RigidBody& b : s.rigid_bodies) {
       if (b.motions.empty() && b.fixed_translation == std::array<bool, 3>{} &&

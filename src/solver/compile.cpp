@@ -63,12 +63,6 @@ double exact_volume(const hex::Corners& x) {
   return v;
 }
 
-// Volume the formulation itself measures (so the relative volume starts at exactly 1).
-double formulation_volume(const hex::Corners& x, SolidFormulation f) {
-  if (f == SolidFormulation::one_point) return 8.0 * hex::centre_gradients(x).det;
-  return exact_volume(x);
-}
-
 // Number of distinct nodes of a connectivity: 8 for a hexahedron, 6 for a pentahedron (wedge)
 // and 4 for a tetrahedron written as degenerate hexahedra with repeated nodes.
 int distinct_nodes(const std::array<Index, 8>& conn) {
@@ -179,10 +173,13 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
             x[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] =
                 nd.initial(k, conn[static_cast<std::size_t>(c)]);
         }
-        const double v0 = formulation_volume(x, b.formulation);
-        // Mass from the exact volume: for a distorted or degenerate element the one-point
+        // The volume the formulation measures (so the relative volume starts at exactly 1);
+        // the mass from the exact volume: for a distorted or degenerate element the one-point
         // volume differs from it (a tetrahedron's by ~40 %), and mass must not.
-        const double mass = cm.density * exact_volume(x);
+        const double exact = exact_volume(x);
+        const double v0 =
+            b.formulation == SolidFormulation::one_point ? hex::centre_volume(x) : exact;
+        const double mass = cm.density * exact;
         const int distinct = distinct_nodes(conn);
         if (distinct < 8) ++degenerate[distinct == 4 ? 0 : (distinct == 6 ? 1 : 2)];
         if (!(v0 > 0.0)) {

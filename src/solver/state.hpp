@@ -143,10 +143,15 @@ struct NodalMotion {
   double scale = 1.0;
   Vec3 direction = Vec3::UnitX();
   double birth = 0.0, death = 1.0e28;
-  Vec3 force = Vec3::Zero();  ///< reaction resultant this cycle (bndout)
-  double work = 0.0;
   Eigen::Matrix3Xd node_force;    ///< per node of `nodes`, this cycle (bndout nd# lines)
   std::vector<double> node_work;  ///< per node of `nodes`, accumulated
+  [[nodiscard]] Vec3 force() const { return node_force.rowwise().sum(); }
+  [[nodiscard]] double work() const {
+    double w = 0.0;
+    for (double x : node_work)
+      w += x;
+    return w;
+  }
 };
 
 struct RigidWallState {

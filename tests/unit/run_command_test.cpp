@@ -163,10 +163,6 @@ TEST_CASE("SIGINT stops the run with exit 5, a final state and whole files") {
   CHECK(read_text(dir.path() / "out" / "d3hsp").find("interrupted by signal") != std::string::npos);
 }
 
-}  // namespace mcdyna::test
-
-namespace mcdyna::test {
-
 TEST_CASE("history files: nodout, bndout, spcforc and matsum carry the motion they describe") {
   TempDir dir;
   // An elastic cube standing on a z-only SPC, its top pushed down by a prescribed displacement
@@ -247,10 +243,6 @@ TEST_CASE("history files: nodout, bndout, spcforc and matsum carry the motion th
     }
   CHECK(rigid_rows >= 10);
 }
-
-}  // namespace mcdyna::test
-
-namespace mcdyna::test {
 
 TEST_CASE("eroded elements vanish from the forces and the d3plot states; their mass stays") {
   TempDir dir;

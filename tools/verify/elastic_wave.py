@@ -17,6 +17,8 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+from d3plot import read_state, states
+
 V0, L, C, RHO = -0.01, 10.0, 1.0, 100.0
 T_END = 80.0
 
@@ -25,7 +27,7 @@ def u_free_end(t):
     """Triangle wave of amplitude |v0| L / c and period 4 L / c."""
     p = np.mod(t, 4 * L / C)
     g = np.where(p <= L, p, np.where(p <= 3 * L, 2 * L - p, p - 4 * L))
-    return V0 * C * g / C
+    return V0 * g
 
 
 def sigma_mid(t, x=L / 2):
@@ -45,15 +47,10 @@ def read_nodout(results):
 
 
 def mid_stress(results):
-    with open(f"{results}/d3plot.pvd") as f:
-        entries = re.findall(r'timestep="([^"]+)".*?file="([^"]+)"', f.read())
     times, stress = [], []
     layers = None
-    for t, name in entries:
-        reader = vtk.vtkXMLUnstructuredGridReader()
-        reader.SetFileName(f"{results}/{name}")
-        reader.Update()
-        grid = reader.GetOutput()
+    for t, name in states(results):
+        grid = read_state(results, name)
         if layers is None:
             # Cells touching the plane x = 5 in the initial configuration: take the cell centres
             # of the first state (t = 0, undeformed) and keep the two layers nearest to x = 5.
@@ -64,7 +61,7 @@ def mid_stress(results):
             dist = np.round(np.abs(cx - L / 2), 9)
             layers = dist == dist.min()
         s = vtk_to_numpy(grid.GetCellData().GetArray("stress"))[:, 0]
-        times.append(float(t))
+        times.append(t)
         stress.append(s[layers].mean())
     return np.array(times), np.array(stress), int(layers.size)
 

@@ -6,23 +6,18 @@ Prints: final length Lf (max z - min z), footprint diameter Df (2 x largest radi
 that started on the impact face), and Lf against the references of benchmarks.md §1.1.
 """
 import argparse
-import re
 
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+
+from d3plot import read_state, states
 
 REFERENCES = {"OpenRadioss/DynELA (this model)": 15.95, "Wilkins & Guinan 1973 (test)": 16.51}
 
 
 def state(results, which):
-    with open(f"{results}/d3plot.pvd") as f:
-        entries = re.findall(r'timestep="([^"]+)".*?file="([^"]+)"', f.read())
-    t, name = entries[which]
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(f"{results}/{name}")
-    reader.Update()
-    return float(t), reader.GetOutput()
+    t, name = states(results)[which]
+    return t, read_state(results, name)
 
 
 def main():

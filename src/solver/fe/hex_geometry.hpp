@@ -11,13 +11,6 @@ namespace mcdyna::solver::hex {
 inline constexpr double kXi[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
 
-/// Hourglass base vectors: eta*zeta, xi*zeta, xi*eta, xi*eta*zeta at the corners; orthogonal
-/// to the constant and linear fields (Flanagan & Belytschko 1981).
-inline constexpr double kHourglass[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
-                                            {1, -1, -1, 1, -1, 1, 1, -1},
-                                            {1, -1, 1, -1, 1, -1, 1, -1},
-                                            {-1, 1, -1, 1, 1, -1, 1, -1}};
-
 /// Corner coordinates (or velocities): x[corner][component].
 using Corners = std::array<std::array<double, 3>, 8>;
 
@@ -93,20 +86,12 @@ inline const GaussPoints& gauss_points() {
   return kPoints;
 }
 
-/// Gradients at the element centre: the one-point quadrature of ELFORM 1. Volume = 8 det.
-inline Gradients centre_gradients(const Corners& x) {
-  double g[8][3];
-  for (int n = 0; n < 8; ++n)
-    for (int k = 0; k < 3; ++k)
-      g[n][k] = 0.125 * kXi[n][k];
-  return gradients(x, g);
-}
-
 /// Corner sign patterns of the parent cube, indexed by a 3-bit mask k (bit 0: xi, bit 1: eta,
 /// bit 2: zeta): pattern k at a corner is the product of the corner's parent coordinates named
 /// by k. k = 0 is the constant, 1 / 2 / 4 the linear patterns, 3 / 5 / 6 / 7 the hourglass
-/// patterns xi eta, xi zeta, eta zeta, xi eta zeta (the rows of kHourglass are 6, 5, 3, 7).
-/// kBinary[n] is corner n's position in binary order (bit set: parent coordinate +1).
+/// patterns xi eta, xi zeta, eta zeta, xi eta zeta (the Flanagan-Belytschko hourglass base vectors
+/// of 1981, in kHourglassPattern). kBinary[n] is corner n's position in binary order (bit set:
+/// parent coordinate +1).
 inline constexpr int kBinary[8] = {0, 1, 3, 2, 4, 5, 7, 6};
 inline constexpr int kHourglassPattern[4] = {6, 5, 3, 7};
 
@@ -146,6 +131,22 @@ inline void add_pattern_combination(double c[8][3], double* f) {
   for (int n = 0; n < 8; ++n)
     for (int i = 0; i < 3; ++i)
       f[3 * n + i] += c[kBinary[n]][i];
+}
+
+/// Jacobian at the element centre from the pattern sums of the corners: J[i][k] = hx[2^k][i] / 8.
+inline void centre_jacobian(const double hx[8][3], double jac[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      jac[i][k] = 0.125 * hx[1 << k][i];
+}
+
+/// The one-point (ELFORM 1) volume 8 det J(0), computed as the element pass computes it, so a
+/// relative volume starts at exactly 1.
+inline double centre_volume(const Corners& x) {
+  double hx[8][3], jac[3][3], inverse[3][3];
+  pattern_sums(x, hx);
+  centre_jacobian(hx, jac);
+  return 8.0 * invert(jac, inverse);
 }
 
 /// Largest face area (faces as quadrilaterals, area = |d1 x d2| / 2 from the diagonals).

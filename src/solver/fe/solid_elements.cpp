@@ -218,9 +218,7 @@ CentrePoint centre_point(const Corners& x, const Corners& v) {
   hex::pattern_sums(x, p.hx);
   hex::pattern_sums(v, p.hv);
   double jac[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      jac[i][k] = 0.125 * p.hx[1 << k][i];
+  hex::centre_jacobian(p.hx, jac);
   p.volume = 8.0 * hex::invert(jac, p.ji);
   if (!(p.volume > 0.0)) return p;
   for (int i = 0; i < 3; ++i)

@@ -41,7 +41,6 @@ void apply_nodal_constraints(State& state, const StepTimes& t) {
 void apply_nodal_motions(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
   for (NodalMotion& nm : state.nodal_motions) {
-    nm.force.setZero();
     nm.node_force.setZero();
     if (t.time < nm.birth || t.time > nm.death) continue;
     const Vec3 axis = nm.dof == 4 ? nm.direction : Vec3::Unit(nm.dof - 1);
@@ -65,11 +64,8 @@ void apply_nodal_motions(State& state, const StepTimes& t) {
       const Vec3 v_start = v - t.mean * Vec3(nd.acceleration.col(n));  // v^{n-1/2}
       nd.velocity.col(n) = v + dv;
       nd.acceleration.col(n) += dv / t.mean;
-      const double work = impulse_work(f * t.mean, v_start, v + dv);
       nm.node_force.col(static_cast<Index>(k)) = f;
-      nm.node_work[k] += work;
-      nm.force += f;
-      nm.work += work;
+      nm.node_work[k] += impulse_work(f * t.mean, v_start, v + dv);
     }
   }
 }
