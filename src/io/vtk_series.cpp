@@ -36,9 +36,11 @@ vtkNew<vtkFloatArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) 
   return a;
 }
 
-// Cell fields in cell order: deformable solids (not eroded), rigid solids, rigid shells.
+// Cell fields in cell order: deformable solids (not eroded), SPG particles (vertices), rigid
+// solids, rigid shells.
 struct CellFields {
   vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
+  vtkNew<vtkFloatArray> bond_damage;  ///< SPG: share of the particle's bonds broken (0 for FE)
   vtkNew<vtkIntArray> part, eroded;
   CellFields() {
     stress->SetName("stress");
@@ -51,10 +53,12 @@ struct CellFields {
     temperature->SetName("temperature");
     damage->SetName("damage");
     pressure->SetName("pressure");
+    bond_damage->SetName("bond_damage");
     part->SetName("part_id");
     eroded->SetName("erosion_state");
   }
-  void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id) {
+  void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id,
+           double bonds = 0.0) {
     const auto& s = r.stress;
     const float tuple[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                             static_cast<float>(s[2]), static_cast<float>(s[3]),
@@ -65,12 +69,14 @@ struct CellFields {
     temperature->InsertNextValue(static_cast<float>(temp));
     damage->InsertNextValue(static_cast<float>(r.damage));
     pressure->InsertNextValue(static_cast<float>(pressure_value));
+    bond_damage->InsertNextValue(static_cast<float>(bonds));
     part->InsertNextValue(part_id);
     eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
   }
   void attach(vtkUnstructuredGrid* g) {
-    for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
-             stress, von_mises, plastic_strain, temperature, damage, pressure, part, eroded})
+    for (vtkDataArray* a :
+         std::initializer_list<vtkDataArray*>{stress, von_mises, plastic_strain, temperature,
+                                              damage, pressure, bond_damage, part, eroded})
       g->GetCellData()->AddArray(a);
   }
 };
@@ -111,6 +117,16 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
         hex[c] = so.nodes[i][static_cast<std::size_t>(c)];
       grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
       fields.add(solver::element_result(s, block, e), so.pressure[i], so.temperature[i], part_id);
+    }
+  }
+  // SPG particles: one vertex cell each, with the fields of their integration point.
+  for (const solver::spg::Domain& d : s.spg) {
+    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(d.part)].id);
+    for (Index i = 0; i < d.count(); ++i) {
+      const vtkIdType vertex = d.nodes[static_cast<std::size_t>(i)];
+      grid->InsertNextCell(VTK_VERTEX, 1, &vertex);
+      fields.add(solver::particle_result(d, i), d.pressure[static_cast<std::size_t>(i)],
+                 d.temperature[static_cast<std::size_t>(i)], part_id, d.bonds.damage(i));
     }
   }
   const solver::DisplayCells& rc = s.rigid_cells;

@@ -54,15 +54,6 @@ HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& p
   return hg;
 }
 
-// Exact volume of the trilinear hexahedron (det J is at most quadratic in each parent
-// coordinate, so 2x2x2 Gauss points integrate it exactly), also for degenerate hexahedra.
-double exact_volume(const hex::Corners& x) {
-  double v = 0.0;
-  for (const auto& g : hex::gauss_points().gradients)
-    v += hex::gradients(x, g).det;
-  return v;
-}
-
 // Number of distinct nodes of a connectivity: 8 for a hexahedron, 6 for a pentahedron (wedge)
 // and 4 for a tetrahedron written as degenerate hexahedra with repeated nodes.
 int distinct_nodes(const std::array<Index, 8>& conn) {
@@ -142,13 +133,9 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
     const model::Material* mat = m.material(part.material);
     const model::Section* sec = m.section(part.section);
     const bool rigid = mat != nullptr && mat->kind == model::MaterialKind::rigid;
-    if (!rigid && !by_part[p].empty() && sec != nullptr) {
-      if (sec->kind == model::SectionKind::solid_spg) {
-        d.error(part.section_loc,
-                "part {}: SPG particles (ELFORM 47) are not run by this version "
-                "of the solver",
-                part.id);
-      }
+    // SPG parts become particles (compile_spg.cpp), not elements.
+    if (!rigid && !by_part[p].empty() && sec != nullptr &&
+        sec->kind != model::SectionKind::solid_spg) {
       SolidBlock b;
       b.part = static_cast<Index>(p);
       b.formulation = sec->element_formulation == 2 ? SolidFormulation::selective_reduced
@@ -176,7 +163,7 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
         // The volume the formulation measures (so the relative volume starts at exactly 1);
         // the mass from the exact volume: for a distorted or degenerate element the one-point
         // volume differs from it (a tetrahedron's by ~40 %), and mass must not.
-        const double exact = exact_volume(x);
+        const double exact = hex::exact_volume(x);
         const double v0 =
             b.formulation == SolidFormulation::one_point ? hex::centre_volume(x) : exact;
         const double mass = cm.density * exact;
@@ -235,6 +222,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_motions(m, *s, diags);
   detail::compile_initial_velocities(m, *s, diags);
   detail::compile_rigid_walls(m, *s, diags);
+  detail::compile_spg_parts(m, *s, diags);
 
   TimeControl& tc = s->time_control;
   if (m.controls.termination) {

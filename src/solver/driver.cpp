@@ -12,12 +12,21 @@
 #include "solver/fe/solid_elements.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
+#include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver {
 
 const char* PhaseTimes::name(int p) {
-  static const char* kNames[kCount] = {"elements", "boundary conditions", "rigid bodies", "output",
-                                       "other"};
+  static const char* kNames[kCount] = {"elements",
+                                       "boundary conditions",
+                                       "rigid bodies",
+                                       "output",
+                                       "other",
+                                       "SPG neighbour search",
+                                       "SPG shape functions",
+                                       "SPG smoothing",
+                                       "SPG stress",
+                                       "SPG forces"};
   return kNames[p];
 }
 
@@ -59,14 +68,63 @@ void refresh_added_mass(State& s) {
   }
 }
 
-// Element pass at the current positions: forces f^n and the critical step.
-ElementPassResult compute_forces(State& s) {
+std::string particle_name(const State& s, std::size_t domain, Index particle) {
+  const spg::Domain& d = s.spg[domain];
+  return fmt::format(
+      "SPG particle at node {} (part {})",
+      s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(particle)])],
+      s.parts[static_cast<std::size_t>(d.part)].id);
+}
+
+// Forces at t^n from the element and particle passes, and the critical step of both.
+struct ForcePass {
+  ElementPassResult elements;
+  double critical_step = std::numeric_limits<double>::infinity();
+  Index controlling_element = -1;
+  std::size_t controlling_domain = 0;
+  Index controlling_particle = -1;
+  std::string failure;  ///< inverted or non-finite element/particle, named
+  bool inverted = false;
+};
+
+ForcePass compute_forces(State& s) {
+  ForcePass r;
   s.nodes.force.setZero();
-  const ElementPassResult r = solid_element_pass(
+  r.elements = solid_element_pass(
       s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
   gather_solid_forces(s);
-  if (r.mass_changed) refresh_added_mass(s);
+  if (r.elements.mass_changed) refresh_added_mass(s);
+  r.critical_step = r.elements.critical_step;
+  r.controlling_element = r.elements.controlling;
+  if (r.elements.inverted >= 0) {
+    r.inverted = true;
+    r.failure = "negative volume in " + element_name(s, r.elements.inverted);
+  } else if (r.elements.non_finite >= 0) {
+    r.failure = "non-finite stress or wave speed in " + element_name(s, r.elements.non_finite);
+  }
+  for (std::size_t k = 0; k < s.spg.size(); ++k) {
+    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[k], s.step);
+    if (p.critical_step < r.critical_step) {
+      r.critical_step = p.critical_step;
+      r.controlling_element = -1;
+      r.controlling_domain = k;
+      r.controlling_particle = p.controlling;
+    }
+    if (r.failure.empty() && p.inverted >= 0) {
+      r.inverted = true;
+      r.failure = "non-positive Jacobian or volume at " + particle_name(s, k, p.inverted);
+    } else if (r.failure.empty() && p.non_finite >= 0) {
+      r.failure = "non-finite stress or wave speed at " + particle_name(s, k, p.non_finite);
+    }
+  }
   return r;
+}
+
+std::string controlling_name(const State& s, const ForcePass& r) {
+  if (r.controlling_element >= 0) return element_name(s, r.controlling_element);
+  if (r.controlling_particle >= 0)
+    return particle_name(s, r.controlling_domain, r.controlling_particle);
+  return "none";
 }
 
 // a = f / m and v += a dt for deformable nodes; returns the lowest node with a non-finite value.
@@ -76,7 +134,7 @@ Index free_velocity_update(State& s, double dt) {
 #pragma omp parallel for schedule(static) reduction(min : bad) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n) {
     const auto i = static_cast<std::size_t>(n);
-    if (nd.rigid_body[i] >= 0) continue;
+    if (nd.rigid_body[i] >= 0 || nd.smoothed[i]) continue;  // smoothed: spg::advance_velocities
     const double m = nd.mass[i] + nd.added_mass[i];
     if (!(m > 0.0)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -99,7 +157,7 @@ void advance_positions(State& s, double dt) {
   place_rigid_nodes(s, dt);
 }
 
-double choose_step(const State& s, const ElementPassResult& r, bool first) {
+double choose_step(const State& s, const ForcePass& r, bool first) {
   const TimeControl& tc = s.time_control;
   // Without deformable elements (rigid bodies only) DTINIT is the step.
   double dt = std::isfinite(r.critical_step) ? tc.scale_factor * r.critical_step
@@ -117,7 +175,12 @@ RunResult run(State& s, const RunHooks& hooks) {
   const auto start = Clock::now();
   PhaseClock clock(result.phases);
   const long elements = s.solids.count();
-  ElementPassResult pass = compute_forces(s);
+  long particles = 0;
+  for (spg::Domain& d : s.spg) {
+    if (d.renewals == 0) spg::initialise(s, d);
+    particles += d.count();
+  }
+  ForcePass pass = compute_forces(s);
   clock.charge(PhaseTimes::elements);
   const double first_step = choose_step(s, pass, true);
   // DTMIN: stop when the step falls below DTMIN x the first step; without it, a step below
@@ -135,21 +198,26 @@ RunResult run(State& s, const RunHooks& hooks) {
       result.message = fmt::format(
           "time step {:.4e} fell below the minimum {:.4e} at t = {:.6e} (cycle {}); controlling "
           "element: {}",
-          dt, min_step, s.time, s.cycle,
-          pass.controlling >= 0 ? element_name(s, pass.controlling) : "none");
+          dt, min_step, s.time, s.cycle, controlling_name(s, pass));
     }
     const bool stop = at_end || interrupted || result.reason == StopReason::step_collapse;
     const double step = dt > 0.0 ? dt : min_step;  // a collapsed step still closes the cycle
     const StepTimes t{s.time, step, 0.5 * (s.step + step)};
     const bool write = stop || (hooks.output_due && hooks.output_due(s));
     if (write) velocity_before = s.nodes.velocity;
-    const Index bad = free_velocity_update(s, t.mean);
+    Index bad = free_velocity_update(s, t.mean);
+    for (spg::Domain& d : s.spg) {
+      const Index b = spg::advance_velocities(s, d, t.mean);
+      if (bad < 0) bad = b;
+    }
     clock.charge(PhaseTimes::elements);
     advance_rigid_bodies(s, t);
     clock.charge(PhaseTimes::rigid);
     apply_nodal_constraints(s, t);
     apply_nodal_motions(s, t);
     apply_rigid_walls(s, t);
+    for (spg::Domain& d : s.spg)
+      spg::absorb_constraints(s, d);
     clock.charge(PhaseTimes::boundary);
     if (bad >= 0 && result.reason == StopReason::end_time) {
       result.reason = StopReason::non_finite;
@@ -175,20 +243,26 @@ RunResult run(State& s, const RunHooks& hooks) {
     clock.charge(PhaseTimes::other);
     pass = compute_forces(s);
     result.element_cycles += elements;
+    result.particle_cycles += particles;
     clock.charge(PhaseTimes::elements);
-    if (pass.inverted >= 0 || pass.non_finite >= 0) {
-      result.reason = pass.inverted >= 0 ? StopReason::inverted_element : StopReason::non_finite;
-      result.message =
-          pass.inverted >= 0
-              ? fmt::format("negative volume in {} at t = {:.6e} (cycle {})",
-                            element_name(s, pass.inverted), s.time, s.cycle)
-              : fmt::format("non-finite stress or wave speed in {} at t = {:.6e} (cycle {})",
-                            element_name(s, pass.non_finite), s.time, s.cycle);
+    if (!pass.failure.empty()) {
+      result.reason = pass.inverted ? StopReason::inverted_element : StopReason::non_finite;
+      result.message = fmt::format("{} at t = {:.6e} (cycle {})", pass.failure, s.time, s.cycle);
       if (hooks.write) hooks.write(s, s.nodes.velocity, true);
       break;
     }
-    s.controlling_element = pass.controlling;
+    s.controlling_element = pass.controlling_element;
     if (hooks.progress) hooks.progress(s);
+  }
+  // The SPG work ran inside the element phase; show it split (neighbour search, shape
+  // functions, smoothing, stress, forces).
+  for (const spg::Domain& d : s.spg) {
+    const double split[5] = {d.times.neighbours, d.times.shape_functions, d.times.smoothing,
+                             d.times.stress, d.times.force};
+    for (int k = 0; k < 5; ++k) {
+      result.phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
+      result.phases.seconds[PhaseTimes::elements] -= split[k];
+    }
   }
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

@@ -13,8 +13,19 @@ namespace mcdyna::solver {
 
 /// Wall-clock seconds per phase of the cycle.
 struct PhaseTimes {
-  static constexpr int kCount = 5;
-  enum Phase { elements, boundary, rigid, output, other };
+  static constexpr int kCount = 10;
+  enum Phase {
+    elements,
+    boundary,
+    rigid,
+    output,
+    other,
+    spg_neighbours,
+    spg_shape_functions,
+    spg_smoothing,
+    spg_stress,
+    spg_forces
+  };
   std::array<double, kCount> seconds{};
   static const char* name(int p);
 };
@@ -34,7 +45,8 @@ struct RunResult {
   std::string message;  ///< diagnostic for the abnormal stops (names element/node, part, time)
   PhaseTimes phases;
   double wall_seconds = 0.0;
-  long element_cycles = 0;  ///< deformable element updates performed
+  long element_cycles = 0;   ///< deformable element updates performed
+  long particle_cycles = 0;  ///< SPG particle updates performed
 };
 
 struct RunHooks {

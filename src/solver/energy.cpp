@@ -1,5 +1,7 @@
 #include "solver/energy.hpp"
 
+#include "solver/spg/spg_solver.hpp"
+
 namespace mcdyna::solver {
 
 namespace {
@@ -27,17 +29,27 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.momentum += b.mass * 0.5 * (b.velocity + b.previous_velocity);
     e.mass += b.mass;
   }
+  for (const spg::Domain& d : s.spg) {
+    for (std::size_t i = 0; i < d.internal_energy.size(); ++i)
+      e.internal += d.internal_energy[i];
+    e.damping += d.damping_energy;
+    const spg::SmoothedKinetic k = spg::smoothed_kinetic(s, d);
+    e.kinetic += k.kinetic;
+    e.momentum += k.momentum;
+    e.mass += k.mass;
+  }
   const Nodes& nd = s.nodes;
   for (Index n = 0; n < nd.count(); ++n) {
     const auto i = static_cast<std::size_t>(n);
     e.added_mass += nd.added_mass[i];
-    if (nd.rigid_body[i] >= 0) continue;
+    // MC-SPG particles count with their unsmoothed velocity and mass (above).
+    if (nd.rigid_body[i] >= 0 || nd.smoothed[i] == 1) continue;
     e.kinetic += 0.5 * nd.mass[i] * previous.col(n).dot(velocity.col(n));
     e.momentum += 0.5 * nd.mass[i] * (previous.col(n) + velocity.col(n));
     e.mass += nd.mass[i];
   }
-  e.total =
-      e.kinetic + e.internal + e.hourglass + e.stonewall + e.eroded_internal + e.eroded_hourglass;
+  e.total = e.kinetic + e.internal + e.hourglass + e.stonewall + e.damping + e.eroded_internal +
+            e.eroded_hourglass;
   return e;
 }
 
@@ -57,6 +69,20 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
       ps.kinetic += 0.5 * m * previous.col(n).dot(velocity.col(n));
       ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
     }
+  }
+  for (const spg::Domain& d : s.spg) {
+    PartSummary& ps = out[static_cast<std::size_t>(d.part)];
+    for (Index i = 0; i < d.count(); ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      ps.internal += d.internal_energy[ii];
+      const Index n = d.nodes[ii];
+      const bool mc = s.nodes.smoothed[static_cast<std::size_t>(n)] == 1;
+      const Vec3 before = mc ? Vec3(d.unsmoothed_previous.col(i)) : Vec3(previous.col(n));
+      const Vec3 after = mc ? Vec3(d.unsmoothed.col(i)) : Vec3(velocity.col(n));
+      ps.kinetic += 0.5 * d.mass[ii] * before.dot(after);
+      ps.momentum += 0.5 * d.mass[ii] * (before + after);
+    }
+    ps.internal += d.damping_energy;
   }
   for (std::size_t p = 0; p < s.parts.size(); ++p) {
     const Index b = s.parts[p].rigid_body;

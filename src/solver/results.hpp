@@ -16,6 +16,29 @@ struct ElementResult {
   double damage = 0.0;
 };
 
+/// Stress of a deviator and pressure as a result (Cauchy stress, von Mises).
+inline void set_stress(ElementResult& r, const std::array<double, 6>& dev, double pressure) {
+  r.stress = dev;
+  for (int k = 0; k < 3; ++k)
+    r.stress[static_cast<std::size_t>(k)] -= pressure;
+  const double j2 = 0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]) + dev[3] * dev[3] +
+                    dev[4] * dev[4] + dev[5] * dev[5];
+  r.von_mises = std::sqrt(3.0 * j2);
+}
+
+/// Result of particle `i` of an SPG domain (its one integration point).
+inline ElementResult particle_result(const spg::Domain& d, Index i) {
+  ElementResult r;
+  const auto ii = static_cast<std::size_t>(i);
+  std::array<double, 6> dev{};
+  for (int k = 0; k < 6; ++k)
+    dev[static_cast<std::size_t>(k)] = d.points.deviator(k, i);
+  set_stress(r, dev, d.pressure[ii]);
+  r.plastic_strain = d.points.plastic_strain[ii];
+  r.damage = d.points.damage[ii];
+  return r;
+}
+
 /// Result of element `e` of `block`.
 inline ElementResult element_result(const State& s, const SolidBlock& block, Index e) {
   ElementResult r;
@@ -29,13 +52,7 @@ inline ElementResult element_result(const State& s, const SolidBlock& block, Ind
     r.plastic_strain += pts.plastic_strain[static_cast<std::size_t>(p)] / np;
     r.damage = std::max(r.damage, pts.damage[static_cast<std::size_t>(p)]);
   }
-  const double p = s.solids.pressure[static_cast<std::size_t>(e)];
-  r.stress = dev;
-  for (int k = 0; k < 3; ++k)
-    r.stress[static_cast<std::size_t>(k)] -= p;
-  const double j2 = 0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]) + dev[3] * dev[3] +
-                    dev[4] * dev[4] + dev[5] * dev[5];
-  r.von_mises = std::sqrt(3.0 * j2);
+  set_stress(r, dev, s.solids.pressure[static_cast<std::size_t>(e)]);
   return r;
 }
 

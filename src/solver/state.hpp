@@ -13,6 +13,8 @@
 #include "model/entities.hpp"
 #include "solver/curve.hpp"
 #include "solver/material/material.hpp"
+#include "solver/material/point_kinematics.hpp"
+#include "solver/spg/domain.hpp"
 
 namespace mcdyna::solver {
 
@@ -27,6 +29,9 @@ struct Nodes {
   std::vector<double> mass;        ///< lumped physical mass
   std::vector<double> added_mass;  ///< DT2MS mass scaling (zero without it)
   std::vector<Index> rigid_body;   ///< owning rigid body or -1
+  /// SPG particles whose velocity comes from smoothing, not from f / m: 1 MC-SPG (Eq. 13; its
+  /// momentum is carried by the unsmoothed velocity), 2 direct smoothing (Eq. 7); 0 otherwise
+  std::vector<std::uint8_t> smoothed;
   /// Node -> (element * 8 + corner) of the deformable solids that touch it, in element order:
   /// the fixed summation order that makes the force gather bitwise reproducible.
   std::vector<Index> corner_offsets, corners;
@@ -42,11 +47,6 @@ struct HourglassParams {
   int type = 1;              ///< IHQ: 1-3 viscous, 4-5 stiffness
   double coefficient = 0.1;  ///< QM
   [[nodiscard]] bool stiffness() const { return type == 4 || type == 5; }
-};
-
-struct BulkViscosityParams {
-  double quadratic = 1.5;  ///< Q1
-  double linear = 0.06;    ///< Q2
 };
 
 /// Solid elements of one part: a contiguous range [begin, end) of the element arrays.
@@ -192,6 +192,7 @@ struct State {
   std::string title;
   Nodes nodes;
   Solids solids;
+  std::vector<spg::Domain> spg;  ///< one per SPG part
   std::vector<PartInfo> parts;
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;

@@ -5,7 +5,10 @@ Rod 0 <= x <= 10 with a 1.2 x 1.2 cross-section, E = 100, nu = 0, rho = 100, ini
 v0 = -0.01 along x, end x = 0 fixed, end x = 10 free. Hexahedra of edge h (the nodal distance).
 The deck is a pure function of its arguments, so regenerating it gives the same bytes.
 
-usage: elastic_wave.py H OUT.k [--elform 1|2] [--end 80]
+With --spg the rod is one MC-SPG part (*SECTION_SOLID_SPG, ELFORM 47, ITB 3, cubic box kernel,
+DX = 1.5, updated-Lagrangian kernel): its hexahedra only generate the particles.
+
+usage: elastic_wave.py H OUT.k [--elform 1|2] [--spg] [--end 80]
 """
 import argparse
 
@@ -15,6 +18,7 @@ def main():
     ap.add_argument("h", type=float, help="nodal distance (0.2, 0.1, 0.05)")
     ap.add_argument("out")
     ap.add_argument("--elform", type=int, default=1)
+    ap.add_argument("--spg", action="store_true", help="MC-SPG particles instead of hexahedra")
     ap.add_argument("--end", type=float, default=80.0)
     a = ap.parse_args()
     length, width = 10.0, 1.2
@@ -23,17 +27,19 @@ def main():
     out = []
     w = out.append
     w("$ " + "-" * 94)
-    w(f"$ elastic_wave h = {a.h:g} (ELFORM {a.elform}) - written by tools/decks/elastic_wave.py")
+    method = "MC-SPG, ELFORM 47" if a.spg else f"ELFORM {a.elform}"
+    name = f"rod_spg_h{a.h:g}" if a.spg else f"rod_h{a.h:g}"
+    w(f"$ elastic_wave h = {a.h:g} ({method}) - written by tools/decks/elastic_wave.py")
     w("$ What it shows: the 1-D elastic wave in a rod fixed at x = 0 and free at x = 10 (MC-SPG")
     w("$   paper Sec. 4.1): E = 100, nu = 0, rho = 100, c = 1, v0 = -0.01, hexahedra of edge h.")
-    w(f"$ How to run:   mcdyna run decks/elastic_wave/rod_h{a.h:g}.k --out results/h{a.h:g}")
+    w(f"$ How to run:   mcdyna run decks/elastic_wave/{name}.k --out results/{name}")
     w("$ Expected:     free-end displacement a triangle wave of amplitude 0.1 and period 40")
     w("$   (nodout.csv, node at the free-end centre); stress at x = 5 steps between 0 and -/+1.")
     w("$   tools/verify/elastic_wave.py compares both with the analytic solution.")
     w("$ " + "-" * 94)
     w("*KEYWORD")
     w("*TITLE")
-    w(f"elastic wave rod h = {a.h:g}")
+    w(f"elastic wave rod h = {a.h:g}" + (" MC-SPG" if a.spg else ""))
     w("*CONTROL_TERMINATION")
     w(f"{a.end:10.4f}")
     w("*CONTROL_TIMESTEP")
@@ -51,8 +57,17 @@ def main():
     w("*PART")
     w("rod")
     w("         1         1         1")
-    w("*SECTION_SOLID")
-    w(f"         1{a.elform:10d}")
+    if a.spg:
+        w("*SECTION_SOLID_SPG")
+        w("$    SECID    ELFORM")
+        w("         1        47")
+        w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
+        w("       1.5       1.5       1.5         0         0                  15       0.0")
+        w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
+        w("         1   1.0E+11   1.0E+10         3       1.0         0         0    -0.001")
+    else:
+        w("*SECTION_SOLID")
+        w(f"         1{a.elform:10d}")
     w("*MAT_ELASTIC")
     w("         1     100.0     100.0       0.0")
     w("*NODE")

@@ -167,4 +167,13 @@ inline double max_face_area(const Corners& x) {
   return 0.5 * std::sqrt(best);
 }
 
+// Exact volume of the trilinear hexahedron (det J is at most quadratic in each parent
+// coordinate, so 2x2x2 Gauss points integrate it exactly), also for degenerate hexahedra.
+inline double exact_volume(const Corners& x) {
+  double v = 0.0;
+  for (const auto& g : gauss_points().gradients)
+    v += gradients(x, g).det;
+  return v;
+}
+
 }  // namespace mcdyna::solver::hex

@@ -1,0 +1,120 @@
+#pragma once
+/// The state of one SPG part (*SECTION_SOLID_SPG, ELFORM 47): its particles, their kernels and
+/// shape functions in the current reference configuration, the unsmoothed velocities of MC-SPG,
+/// the bonds of the initial configuration, and the material state of the one integration point
+/// each particle carries. Indices are particle indices 0..count-1 unless named `node`.
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "solver/material/material.hpp"
+#include "solver/material/point_kinematics.hpp"
+#include "solver/spg/kernel.hpp"
+#include "solver/spg/neighbours.hpp"
+#include "solver/spg/shape_functions.hpp"
+
+namespace mcdyna::solver::spg {
+
+/// `--spg-stabilization`: how particle velocities are stabilised.
+enum class Stabilization {
+  none,                ///< plain direct nodal integration (Eq. 5), no smoothing
+  direct,              ///< the original SPG direct smoothing of Eq. 7 (not momentum-consistent)
+  momentum_consistent  ///< MC-SPG, Eqs. 13-31 (ITB = 3, the default)
+};
+
+/// Bonds: neighbour pairs of the initial configuration (either particle's support containing
+/// the other), stored for both ends in CSR form with the partner ascending. A broken bond is
+/// permanent and keeps the pair out of every later neighbour list (Eq. 36).
+struct Bonds {
+  std::vector<Index> offsets, partners;
+  std::vector<std::uint8_t> broken;
+  std::vector<double> length;  ///< |X_J - X_I| in the initial configuration
+  [[nodiscard]] bool is_broken(Index i, Index j) const;
+  [[nodiscard]] double damage(Index i) const;  ///< broken fraction of particle i's bonds
+};
+
+/// The transpose of the neighbour relation: for particle I, the pairs (J, I) of the row lists,
+/// i.e. the J whose evaluation point lies in I's support (X_J in supp(phi_I)), J ascending.
+/// The gather sums of the smoothing (Eqs. 13, 19, 20) and of the internal force run over it.
+struct Transpose {
+  std::vector<Index> offsets;
+  std::vector<Index> pairs;  ///< index into the row list (NeighbourList::neighbours)
+  std::vector<Index> rows;   ///< J, the row the pair belongs to
+};
+
+struct SpgSettings {
+  KernelShape shape = KernelShape::cubic_box;
+  int kernel_update = 0;  ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
+  int renewal_interval = 15;
+  Stabilization stabilization = Stabilization::momentum_consistent;
+  bool bond_failure = false;
+  double failure_strain = 1.0e11;   ///< bond: mean effective plastic strain (FS)
+  double failure_stretch = 1.0e10;  ///< bond: stretch ratio (STRETCH)
+  double damping = 0.0;             ///< |PDAMP|: share of neighbour velocity differences per step
+  double surface_factor = 1.0;      ///< MSFAC: quadrature weight factor of surface particles
+  BulkViscosityParams bulk_viscosity;
+};
+
+/// Wall-clock seconds of the SPG work, for the phase table.
+struct SpgTimes {
+  double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0, force = 0.0;
+};
+
+struct Domain {
+  Index part = 0;      ///< solver part index
+  Index material = 0;  ///< compiled material index
+  SpgSettings settings;
+
+  // Particles (generated from the part's hexahedra).
+  std::vector<Index> nodes;          ///< node of each particle, ascending
+  std::vector<double> mass;          ///< m-hat: lumped mass, constant (Eq. 20)
+  std::vector<double> base_mass;     ///< the node's lumped mass incl. FE elements sharing it
+  std::vector<std::uint8_t> shared;  ///< node also moved by FE elements, SPC or prescribed motion
+  std::vector<std::uint8_t> surface;
+  std::vector<double> initial_volume, volume;
+  Eigen::Matrix3Xd initial_position;  ///< X, for bond stretch (Eq. 35)
+  Eigen::Matrix3Xd initial_support;   ///< DX/DY/DZ x spacing
+
+  // Kernel in the current reference configuration (renewed every `renewal_interval` steps).
+  Eigen::Matrix3Xd reference;  ///< X-hat
+  Eigen::Matrix3Xd support;    ///< half-sizes in the reference configuration
+  Eigen::Matrix<double, 9, Eigen::Dynamic> reference_deformation;  ///< F^n (Eq. 32), col-major
+  NeighbourList list;
+  ShapeFunctions shape;
+  Transpose transpose;
+  std::vector<double> smoothed_mass;  ///< m_I (Eq. 20)
+  std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
+  std::vector<double> length;         ///< characteristic length at the renewal
+  std::vector<double> renewal_volume;  ///< volume at the renewal
+  int steps_since_renewal = 0;
+  long renewals = 0;
+  std::vector<Index> degenerate;       ///< particles whose moment matrix degenerated (last renewal)
+  std::vector<std::uint8_t> isolated;  ///< the same as flags: no shape functions, no stress
+  long degenerate_events = 0;          ///< renewals that found a degenerate particle
+  Index first_degenerate = -1;         ///< first such particle, and when
+  double first_degenerate_time = 0.0;
+
+  // Velocities (MC-SPG): unsmoothed u-hat at the half step and one step back; the smoothed
+  // velocity is the node velocity (it moves the particle, Eq. 28).
+  Eigen::Matrix3Xd unsmoothed, unsmoothed_previous;
+  Eigen::Matrix3Xd smoothed;  ///< node velocity as smoothing left it, before constraints
+
+  // One integration point per particle.
+  MaterialPoints points;
+  std::vector<double> pressure, eos_energy, temperature, viscosity;
+  std::vector<double> internal_energy;
+  std::vector<std::uint8_t> failed;  ///< material failure: no deviatoric stress, no tension
+  Eigen::Matrix<double, 9, Eigen::Dynamic> deformation;      ///< F-hat (Eq. 33), last pass
+  Eigen::Matrix<double, 9, Eigen::Dynamic> stress_gradient;  ///< w sigma F-hat^-T, last pass
+  double damping_energy = 0.0;                               ///< dissipated by PDAMP
+
+  Bonds bonds;
+  long broken_bonds = 0;
+  SpgTimes times;
+
+  [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
+};
+
+}  // namespace mcdyna::solver::spg

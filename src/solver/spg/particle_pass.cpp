@@ -1,0 +1,187 @@
+// Direct nodal integration at the particles (paper Eqs. 5-6) in the current reference
+// configuration: F-hat from Eq. 33, the velocity gradient of the smoothed velocity, the
+// updated-Lagrangian stress of the FE materials at one point per particle, density and volume
+// from Eqs. 26-27, and the internal force f_I = -sum_J w_J sigma_J grad_x phi_I(X_J), gathered
+// over the transposed neighbour lists so every particle writes only its own node.
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "solver/material/constitutive.hpp"
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Outcome {
+  double step = std::numeric_limits<double>::infinity();
+  bool inverted = false;
+};
+
+// Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.stress_gradient.
+Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, double dt) {
+  const auto jj = static_cast<std::size_t>(j);
+  Eigen::Map<Mat3> f_hat(d.deformation.col(j).data());
+  Eigen::Map<Mat3> p_j(d.stress_gradient.col(j).data());
+  const Index first = d.list.offsets[jj], last = d.list.offsets[jj + 1];
+  if (d.isolated[jj]) {  // degenerate neighbourhood: no strain measurable, no stress carried
+    p_j.setZero();
+    return {};
+  }
+  const Eigen::Matrix3Xd& x = s.nodes.position;
+  const Eigen::Matrix3Xd& v = s.nodes.velocity;
+  const Index node_j = d.nodes[jj];
+  // F-hat and the reference velocity gradient from differences to particle j (sum grad phi = 0
+  // makes them equal to Eq. 33's sums, with less round-off).
+  Mat3 f = Mat3::Zero(), lr = Mat3::Zero();
+  for (Index p = first; p < last; ++p) {
+    const auto pp = static_cast<std::size_t>(p);
+    const Index node_i = d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])];
+    const Vec3 g = d.shape.gradient.col(p);
+    f.noalias() += (x.col(node_i) - x.col(node_j)) * g.transpose();
+    lr.noalias() += (v.col(node_i) - v.col(node_j)) * g.transpose();
+  }
+  const double det = f.determinant();
+  if (!(det > 0.0)) return {0.0, true};
+  f_hat = f;
+  const Mat3 f_inv = f.inverse();
+  const Mat3 l = lr * f_inv;
+  double la[3][3];
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      la[a][b] = l(a, b);
+  const Kinematics k = kinematics_from_gradient(la);
+
+  // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho.
+  const double shrink = 1.0 - dt * k.trace;
+  if (!(shrink > 0.0)) return {0.0, true};
+  const double v_old = d.volume[jj];
+  const double volume = v_old / shrink;
+  const double v0 = d.initial_volume[jj];
+  const double rel = volume / v0;
+
+  // Deviator: Jaumann rotation, material update, deviatoric work (mid-step stress).
+  double* dev = d.points.deviator.col(j).data();
+  double* alpha = d.points.back_stress.size() > 0 ? d.points.back_stress.col(j).data() : nullptr;
+  jaumann_rotate(dev, k.w, dt);
+  if (alpha) jaumann_rotate(alpha, k.w, dt);
+  double dev_old[6];
+  std::copy(dev, dev + 6, dev_old);
+  double de[6];
+  const double rate = deviatoric_increment(k, dt, de);
+  const PointResult r =
+      update_deviator(mat, PointInput{de, rate, d.temperature[jj], d.pressure[jj]},
+                      PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]});
+  if (r.failed) d.failed[jj] = 1;
+  double mid[6];
+  for (int c = 0; c < 6; ++c)
+    mid[c] = 0.5 * (dev_old[c] + dev[c]);
+  const double dev_work = volume * contract(mid, de);
+
+  // Pressure, bulk viscosity, energy, temperature (as the FE point, solid_elements.cpp).
+  const double density = mat.density / rel;
+  const double c2 = wave_speed_squared(mat, rel);
+  const double sound = std::sqrt(c2);
+  const double length = d.length[jj] * std::cbrt(volume / d.renewal_volume[jj]);
+  const double q = bulk_viscosity(d.settings.bulk_viscosity, density, length, sound, k.trace);
+  const double q_mean = 0.5 * (d.viscosity[jj] + q);
+  d.viscosity[jj] = q;
+  const double p_old = d.pressure[jj];
+  update_pressure(mat,
+                  VolumeChange{rel, (volume - v_old) / v0, k.trace * dt, q_mean, dev_work / v0},
+                  d.pressure[jj], d.eos_energy[jj]);
+  bool zero_dev = apply_pressure_cutoff(mat, d.pressure[jj]);
+  d.internal_energy[jj] +=
+      dev_work - (0.5 * (p_old + d.pressure[jj]) + q_mean) * k.trace * dt * volume;
+  d.volume[jj] = volume;
+  if (mat.specific_heat > 0.0) {
+    d.temperature[jj] = mat.room_temperature + (d.eos_energy[jj] - mat.eos.initial_energy) /
+                                                   (mat.density * mat.specific_heat);
+  }
+  if (d.failed[jj]) {  // material failure (FS on MAT_003/024, JC damage): no shear, no tension
+    zero_dev = true;
+    d.pressure[jj] = std::max(d.pressure[jj], 0.0);
+  }
+  if (zero_dev)
+    for (int c = 0; c < 6; ++c)
+      dev[c] = 0.0;
+
+  // w sigma F-hat^-T, w = V (times MSFAC on the surface): f_I = -sum_J (w sigma F^-T)_J grad phi.
+  const double pq = d.pressure[jj] + q;
+  Mat3 sigma;
+  sigma << dev[0] - pq, dev[3], dev[5], dev[3], dev[1] - pq, dev[4], dev[5], dev[4], dev[2] - pq;
+  const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
+  p_j = weight * sigma * f_inv.transpose();
+  return {element_step(d.settings.bulk_viscosity, length, sound, k.trace), false};
+}
+
+}  // namespace
+
+ParticlePassResult particle_pass(State& s, Domain& d, double step) {
+  if (d.steps_since_renewal >= d.settings.renewal_interval) renew_kernel(s, d);
+  ++d.steps_since_renewal;
+  auto start = Clock::now();
+  const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
+  const Index n = d.count();
+  double best = std::numeric_limits<double>::infinity();
+  Index controlling = -1;
+  Index inverted = std::numeric_limits<Index>::max();
+  Index non_finite = std::numeric_limits<Index>::max();
+#pragma omp parallel if (n > 512)
+  {
+    double local_best = std::numeric_limits<double>::infinity();
+    Index local_controlling = -1;
+    Index local_inverted = std::numeric_limits<Index>::max();
+    Index local_non_finite = std::numeric_limits<Index>::max();
+#pragma omp for schedule(static, 128) nowait
+    for (Index j = 0; j < n; ++j) {
+      const Outcome o = particle_update(s, d, mat, j, step);
+      if (o.inverted) {
+        local_inverted = std::min(local_inverted, j);
+      } else if (std::isnan(o.step)) {
+        local_non_finite = std::min(local_non_finite, j);
+      } else if (o.step < local_best) {  // ascending j per thread: ties keep the lowest
+        local_best = o.step;
+        local_controlling = j;
+      }
+    }
+#pragma omp critical
+    {
+      if (local_best < best || (local_best == best && local_controlling >= 0 &&
+                                (controlling < 0 || local_controlling < controlling))) {
+        best = local_best;
+        controlling = local_controlling;
+      }
+      inverted = std::min(inverted, local_inverted);
+      non_finite = std::min(non_finite, local_non_finite);
+    }
+  }
+  d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
+  start = Clock::now();
+
+  // Internal forces, gathered per particle over the pairs (J, I) of its transpose.
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    Vec3 f = Vec3::Zero();
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      const Eigen::Map<const Mat3> p_j(d.stress_gradient.col(d.transpose.rows[tt]).data());
+      f.noalias() -= p_j * d.shape.gradient.col(d.transpose.pairs[tt]);
+    }
+    s.nodes.force.col(d.nodes[ii]) += f;
+  }
+  d.times.force += std::chrono::duration<double>(Clock::now() - start).count();
+
+  ParticlePassResult r;
+  r.critical_step = best;
+  r.controlling = controlling;
+  r.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
+  r.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
+  return r;
+}
+
+}  // namespace mcdyna::solver::spg

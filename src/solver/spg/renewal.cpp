@@ -1,0 +1,192 @@
+// Kernel renewal: the adaptive anisotropic Lagrangian kernel of paper §3.1. The shape functions
+// are built in a reference configuration X-hat (Eq. 33) and reused until the next renewal; every
+// SMSTEP steps the reference becomes the current configuration and F^n takes up F-hat (Eq. 32).
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// A smoothed mass below this share of the particle's own mass (a neighbourhood whose shape
+// functions nearly cancel, or only degenerate rows around it) would turn force / m into a huge
+// acceleration; such a particle is integrated plainly until the next renewal.
+constexpr double kMinimumSmoothedMassShare = 0.1;
+
+// Support growth and shrinkage relative to the initial support (KERNEL = 0): the support follows
+// the material (Eq. 34) within these bounds, so shear flow cannot grow the axis-aligned box
+// (and the neighbour count) without limit, nor compression shrink it to nothing.
+constexpr double kSupportMinimumScale = 0.5, kSupportMaximumScale = 2.0;
+
+Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
+  return Eigen::Map<Mat3>(m.col(i).data());
+}
+
+void update_supports(Domain& d) {
+  if (d.settings.kernel_update == 1) {  // Eulerian: the initial sizes in the current frame
+    d.support = d.initial_support;
+    return;
+  }
+  for (Index i = 0; i < d.count(); ++i) {
+    // Axis-aligned half-sizes of the deformed support ellipsoid F A0 (unit ball):
+    // a_k = sqrt((F A0^2 F^T)_kk).
+    const Mat3 f = mat(d.reference_deformation, i);
+    const Vec3 a0 = d.initial_support.col(i);
+    for (int k = 0; k < 3; ++k) {
+      double sq = 0.0;
+      for (int j = 0; j < 3; ++j)
+        sq += f(k, j) * f(k, j) * a0[j] * a0[j];
+      d.support(k, i) =
+          std::clamp(std::sqrt(sq), kSupportMinimumScale * a0[k], kSupportMaximumScale * a0[k]);
+    }
+  }
+}
+
+// Drops the pairs whose bond is broken (Eq. 36: phi = 0 for a disconnected pair, for good).
+void remove_broken_pairs(Domain& d) {
+  if (d.broken_bonds == 0) return;
+  NeighbourList& l = d.list;
+  std::vector<Index> offsets(l.offsets.size(), 0);
+  std::size_t out = 0;
+  for (Index i = 0; i < d.count(); ++i) {
+    const auto first = static_cast<std::size_t>(l.offsets[static_cast<std::size_t>(i)]);
+    const auto last = static_cast<std::size_t>(l.offsets[static_cast<std::size_t>(i) + 1]);
+    for (std::size_t p = first; p < last; ++p) {
+      const Index j = l.neighbours[p];
+      if (j != i && d.bonds.is_broken(i, j)) continue;
+      l.neighbours[out++] = j;
+    }
+    offsets[static_cast<std::size_t>(i) + 1] = static_cast<Index>(out);
+  }
+  l.neighbours.resize(out);
+  l.offsets = std::move(offsets);
+}
+
+Transpose transpose_of(const NeighbourList& l, Index n) {
+  Transpose t;
+  t.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const Index j : l.neighbours)
+    ++t.offsets[static_cast<std::size_t>(j) + 1];
+  for (Index i = 0; i < n; ++i)
+    t.offsets[static_cast<std::size_t>(i) + 1] += t.offsets[static_cast<std::size_t>(i)];
+  t.pairs.resize(l.neighbours.size());
+  t.rows.resize(l.neighbours.size());
+  std::vector<Index> fill(t.offsets.begin(), t.offsets.end() - 1);
+  for (Index row = 0; row < n; ++row)  // rows ascending: each transposed list is sorted
+    for (Index p = l.offsets[static_cast<std::size_t>(row)];
+         p < l.offsets[static_cast<std::size_t>(row) + 1]; ++p) {
+      const auto slot = static_cast<std::size_t>(
+          fill[static_cast<std::size_t>(l.neighbours[static_cast<std::size_t>(p)])]++);
+      t.pairs[slot] = p;
+      t.rows[slot] = row;
+    }
+  return t;
+}
+
+}  // namespace
+
+void renew_kernel(State& s, Domain& d) {
+  const Index n = d.count();
+  auto start = Clock::now();
+  Eigen::Matrix3Xd x(3, n);
+  for (Index i = 0; i < n; ++i)
+    x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
+  if (d.renewals > 0) {
+    // Eq. 32: F^{n+m} = F-hat F^n; the new reference starts from F-hat = I.
+    for (Index i = 0; i < n; ++i) {
+      const Mat3 total = mat(d.deformation, i) * mat(d.reference_deformation, i);
+      mat(d.reference_deformation, i) = total;
+      mat(d.deformation, i).setIdentity();
+    }
+    break_bonds(s, d);
+  }
+  d.reference = x;
+  update_supports(d);
+  d.list = find_neighbours(x, d.support, d.settings.shape);
+  remove_broken_pairs(d);
+  d.times.neighbours += seconds_since(start);
+  start = Clock::now();
+
+  std::vector<Index> degenerate;
+  d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate);
+  d.transpose = transpose_of(d.list, n);
+  if (!degenerate.empty()) {
+    ++d.degenerate_events;
+    if (d.first_degenerate < 0) {
+      d.first_degenerate = degenerate.front();
+      d.first_degenerate_time = s.time;
+    }
+  }
+  d.degenerate = std::move(degenerate);
+
+  // Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J).
+  const Stabilization mode = d.settings.stabilization;
+  d.isolated.assign(static_cast<std::size_t>(n), 0);
+  for (const Index i : d.degenerate)
+    d.isolated[static_cast<std::size_t>(i)] = 1;
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    double m = 0.0;
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      m += d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
+           d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])];
+    }
+    d.smoothed_mass[ii] = m;
+    // Characteristic length for the step: the nearest neighbour in the new reference.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+      if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
+    }
+    d.length[ii] = std::isfinite(nearest) ? nearest : d.initial_support.col(i).minCoeff();
+    d.renewal_volume[ii] = d.volume[ii];
+    const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
+                     (mode == Stabilization::momentum_consistent &&
+                      !(m > kMinimumSmoothedMassShare * d.mass[ii]));
+    d.pinned[ii] = pin ? 1 : 0;
+    const auto node = static_cast<std::size_t>(d.nodes[ii]);
+    s.nodes.smoothed[node] = pin ? 0 : (mode == Stabilization::momentum_consistent ? 1 : 2);
+    // Impulses of walls and constraints on a smoothed particle act on its smoothed momentum
+    // m_I u_I (Eq. 19), so they see the smoothed mass.
+    s.nodes.mass[node] =
+        pin ? d.base_mass[ii] : (mode == Stabilization::momentum_consistent ? m : d.mass[ii]);
+  }
+  d.steps_since_renewal = 0;
+  ++d.renewals;
+  d.times.shape_functions += seconds_since(start);
+}
+
+void initialise(State& s, Domain& d) {
+  const Index n = d.count();
+  d.reference_deformation.resize(9, n);
+  d.deformation.resize(9, n);
+  for (Index i = 0; i < n; ++i) {
+    mat(d.reference_deformation, i).setIdentity();
+    mat(d.deformation, i).setIdentity();
+  }
+  d.support = d.initial_support;
+  d.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
+  d.pinned.assign(static_cast<std::size_t>(n), 0);
+  d.length.assign(static_cast<std::size_t>(n), 0.0);
+  d.renewal_volume = d.volume;
+  d.stress_gradient.setZero(9, n);
+  d.unsmoothed.resize(3, n);
+  for (Index i = 0; i < n; ++i)
+    d.unsmoothed.col(i) = s.nodes.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
+  d.unsmoothed_previous = d.unsmoothed;
+  d.smoothed = d.unsmoothed;
+  renew_kernel(s, d);
+  d.bonds = initial_bonds(d);
+}
+
+}  // namespace mcdyna::solver::spg

@@ -1,0 +1,175 @@
+// Velocity update and smoothing of MC-SPG (paper §2, Eqs. 13-31).
+//
+// With S_IJ = phi_J(X_I) (scatter, Eq. 18/30) and T_IJ = psi_I(X_J) = m-hat_J phi_I(X_J) / m_I
+// (gather, Eq. 14), m-hat_I S_IJ = m_J T_JI. The update
+//   u-hat_I += dt sum_J phi_J(X_I) a_J,  a_J = f_J / m_J          (Eq. 30, m_J of Eq. 20)
+// is m-hat u-hat += dt T^T f, so sum m-hat u-hat changes by dt sum_J f_J (sum_I T_JI = 1):
+// linear momentum is kept to round-off (Eq. 31). The particles move with u_I = sum_J T_IJ u-hat_J
+// (Eqs. 13, 25, 28). Pinned particles (shared with FE elements, constrained, or with a
+// degenerate neighbourhood) keep one plain velocity v_c, smoothed as the identity: the block form
+// of the same argument gives them M_c v_c += dt (f_c + m-hat_c sum_J phi_J(X_c) a_J) over the
+// smoothed J, which keeps total momentum exact for coupled FE/SPG models as well.
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+
+// PDAMP: momentum-conserving damping of velocity differences between neighbouring smoothed
+// particles. Each row pair (I, J) exchanges the impulse k (u-hat_J - u-hat_I), with
+// k = |PDAMP| mu_IJ / n_I (mu the reduced mass, n_I the neighbours of I), equal and opposite, so
+// a uniform velocity is untouched and |PDAMP| is about the share of I's velocity difference to
+// its neighbours removed per step. Returns the kinetic energy removed.
+double damp(const State& s, Domain& d) {
+  const double alpha = d.settings.damping;
+  const Index n = d.count();
+  const Eigen::Matrix3Xd before = d.unsmoothed;
+  double removed = 0.0;
+  auto free_particle = [&](Index i) { return d.pinned[static_cast<std::size_t>(i)] == 0; };
+  auto coefficient = [&](Index row, Index other) {
+    const double mi = d.mass[static_cast<std::size_t>(row)],
+                 mj = d.mass[static_cast<std::size_t>(other)];
+    return alpha * mi * mj / (mi + mj) / std::max<Index>(d.list.count(row) - 1, 1);
+  };
+#pragma omp parallel for schedule(static) reduction(+ : removed) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (!free_particle(i)) continue;
+    Vec3 impulse = Vec3::Zero();
+    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+      if (j != i && free_particle(j))
+        impulse += coefficient(i, j) * (before.col(j) - before.col(i));
+    }
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+      if (j != i && free_particle(j))
+        impulse += coefficient(j, i) * (before.col(j) - before.col(i));
+    }
+    d.unsmoothed.col(i) += impulse / d.mass[ii];
+    removed += 0.5 * d.mass[ii] * (before.col(i).squaredNorm() - d.unsmoothed.col(i).squaredNorm());
+  }
+  (void)s;
+  return removed;
+}
+
+}  // namespace
+
+Index advance_velocities(State& s, Domain& d, double dt) {
+  const auto start = std::chrono::steady_clock::now();
+  Nodes& nd = s.nodes;
+  const Index n = d.count();
+  const Stabilization mode = d.settings.stabilization;
+  d.unsmoothed_previous = d.unsmoothed;
+  // Accelerations of the smoothed particles (zero for pinned ones).
+  Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n);
+  if (mode != Stabilization::none) {
+    for (Index i = 0; i < n; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      if (d.pinned[ii]) continue;
+      const double m =
+          mode == Stabilization::momentum_consistent ? d.smoothed_mass[ii] : d.mass[ii];
+      acc.col(i) = nd.force.col(d.nodes[ii]) / m;
+      nd.acceleration.col(d.nodes[ii]) = acc.col(i);
+    }
+  }
+  if (mode == Stabilization::momentum_consistent) {
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+    for (Index i = 0; i < n; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      Vec3 sum = Vec3::Zero();  // sum_J phi_J(X_I) a_J  (Eqs. 29-30)
+      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+        const auto pp = static_cast<std::size_t>(p);
+        sum += d.shape.value[pp] * acc.col(d.list.neighbours[pp]);
+      }
+      if (!d.pinned[ii]) {
+        d.unsmoothed.col(i) += dt * sum;
+      } else {
+        const auto node = static_cast<std::size_t>(d.nodes[ii]);
+        nd.velocity.col(d.nodes[ii]) +=
+            dt * d.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
+      }
+    }
+  } else if (mode == Stabilization::direct) {
+    for (Index i = 0; i < n; ++i)
+      if (!d.pinned[static_cast<std::size_t>(i)]) d.unsmoothed.col(i) += dt * acc.col(i);
+  }
+  if (d.settings.damping > 0.0 && mode != Stabilization::none) d.damping_energy += damp(s, d);
+
+  // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7).
+  auto source = [&](Index j) -> Vec3 {
+    return d.pinned[static_cast<std::size_t>(j)]
+               ? Vec3(nd.velocity.col(d.nodes[static_cast<std::size_t>(j)]))
+               : Vec3(d.unsmoothed.col(j));
+  };
+  Index bad = std::numeric_limits<Index>::max();
+  Eigen::Matrix3Xd smoothed(3, n);
+#pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    Vec3 u = source(i);
+    if (!d.pinned[ii] && mode == Stabilization::momentum_consistent) {
+      u.setZero();
+      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+        const auto tt = static_cast<std::size_t>(t);
+        const Index j = d.transpose.rows[tt];
+        u += d.mass[static_cast<std::size_t>(j)] *
+             d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] * source(j);
+      }
+      u /= d.smoothed_mass[ii];
+    } else if (!d.pinned[ii] && mode == Stabilization::direct) {
+      u.setZero();
+      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+        const auto pp = static_cast<std::size_t>(p);
+        u += d.shape.value[pp] * source(d.list.neighbours[pp]);
+      }
+    }
+    smoothed.col(i) = u;
+    if (!std::isfinite(u.sum())) bad = std::min(bad, d.nodes[ii]);
+  }
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    nd.velocity.col(d.nodes[ii]) = smoothed.col(i);
+    if (d.pinned[ii]) d.unsmoothed.col(i) = smoothed.col(i);
+  }
+  d.smoothed = smoothed;
+  d.times.smoothing +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return bad == std::numeric_limits<Index>::max() ? -1 : bad;
+}
+
+void absorb_constraints(State& s, Domain& d) {
+  const Nodes& nd = s.nodes;
+  const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
+  for (Index i = 0; i < d.count(); ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    const Vec3 v = nd.velocity.col(d.nodes[ii]);
+    if (d.pinned[ii]) {
+      d.unsmoothed.col(i) = v;
+    } else {
+      const Vec3 change = v - d.smoothed.col(i);
+      if (change.squaredNorm() > 0.0)
+        d.unsmoothed.col(i) += (mc ? d.smoothed_mass[ii] / d.mass[ii] : 1.0) * change;
+    }
+    d.smoothed.col(i) = v;
+  }
+}
+
+SmoothedKinetic smoothed_kinetic(const State& s, const Domain& d) {
+  SmoothedKinetic k;
+  for (Index i = 0; i < d.count(); ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (s.nodes.smoothed[static_cast<std::size_t>(d.nodes[ii])] != 1) continue;
+    const double m = d.mass[ii];
+    k.kinetic += 0.5 * m * d.unsmoothed_previous.col(i).dot(d.unsmoothed.col(i));
+    k.momentum += 0.5 * m * (d.unsmoothed_previous.col(i) + d.unsmoothed.col(i));
+    k.mass += m;
+  }
+  return k;
+}
+
+}  // namespace mcdyna::solver::spg

@@ -1,0 +1,62 @@
+#pragma once
+/// The MC-SPG particle solver, called by the time loop (solver/driver.cpp) beside the FE element
+/// pass. Per cycle, from t^n to t^{n+1}:
+///   advance_velocities   Eqs. 29-30 (scatter of accelerations into unsmoothed velocities) and
+///                        Eqs. 13/25 (gather smoothing into the node velocity that moves the
+///                        particle, Eq. 28)
+///   absorb_constraints   velocity changes made by SPC, prescribed motion and rigid walls go
+///                        back into the unsmoothed velocities, momentum-consistently
+///   particle_pass        kernel renewal when due (Eqs. 32-34, bond failure Eqs. 35-36), then
+///                        direct nodal integration (Eqs. 5-6, 26-27): stress and internal forces
+///
+/// Particles whose node is shared with FE elements or carries a constraint are "pinned": their
+/// velocity is integrated like an FE node's (one velocity for the node), they take part in the
+/// smoothing of their neighbours as an unsmoothed value, and receive their share of the
+/// neighbours' accelerations so that total momentum is kept exactly (see smoothing.cpp).
+#include "solver/state.hpp"
+
+namespace mcdyna::solver::spg {
+
+/// First kernel, bonds of the initial configuration, unsmoothed velocities = initial velocities.
+void initialise(State& s, Domain& d);
+
+struct ParticlePassResult {
+  double critical_step = 0.0;  ///< min over particles (before TSSFAC), +inf without particles
+  Index controlling = -1;      ///< particle giving it
+  Index inverted = -1;         ///< particle with a non-positive Jacobian or volume
+  Index non_finite = -1;       ///< particle with a NaN/Inf state
+};
+
+/// Renews the kernel when due, then stress update and internal forces (added to nodes.force).
+/// `step` is the step the current velocities were integrated over (0 at the start).
+ParticlePassResult particle_pass(State& s, Domain& d, double step);
+
+/// Velocity update of the domain's particles over `dt` from the nodal forces, after the FE
+/// velocity update (which integrated the pinned particles' own force). Returns the lowest node
+/// with a non-finite velocity, or -1.
+Index advance_velocities(State& s, Domain& d, double dt);
+
+/// After constraints and walls changed node velocities: carry the change into the unsmoothed
+/// velocities (MC-SPG: m_I / m-hat_I times the change, so momentum is the wall's impulse).
+void absorb_constraints(State& s, Domain& d);
+
+/// Kernel renewal (also called by particle_pass when due): reference = current positions,
+/// supports (KERNEL 0: deformed with F, Eq. 34; KERNEL 1: initial), bond failure check,
+/// neighbours without broken bonds, shape functions, transpose, smoothed masses, pinned set.
+void renew_kernel(State& s, Domain& d);
+
+/// Bonds of the initial configuration from the first neighbour list (both directions).
+Bonds initial_bonds(const Domain& d);
+
+/// Breaks the bonds that meet Eq. 36 at the current positions; returns how many broke.
+long break_bonds(const State& s, Domain& d);
+
+/// Kinetic energy (1/2 m u-hat^{n-1/2} . u-hat^{n+1/2}) and momentum of the particles whose
+/// velocity is smoothed (the quantities MC-SPG conserves); pinned particles count as nodes.
+struct SmoothedKinetic {
+  double kinetic = 0.0, mass = 0.0;
+  Vec3 momentum = Vec3::Zero();
+};
+SmoothedKinetic smoothed_kinetic(const State& s, const Domain& d);
+
+}  // namespace mcdyna::solver::spg
