@@ -94,6 +94,11 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");
   run_cmd->add_option("--max-messages", run.max_messages, "diagnostics printed (0: all)")
       ->capture_default_str();
+  run_cmd
+      ->add_option("--spg-stabilization", run.spg_stabilization,
+                   "SPG velocity stabilisation for studies: none (plain nodal integration), "
+                   "direct (Eq. 7 smoothing), mc (MC-SPG, default)")
+      ->check(CLI::IsMember({"none", "direct", "mc"}));
 
   std::string keyword_name;
   std::string markdown_dir;

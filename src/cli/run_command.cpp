@@ -123,6 +123,50 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
     fmt::print(log, "  mass scaling: target step {:.4e}, added mass so far {:.6e} ({:.3f} %)\n",
                s.mass_scaling_dt, added, mass > 0.0 ? 100.0 * added / mass : 0.0);
   }
+  static const char* kModes[] = {"none (plain nodal integration)", "direct smoothing (Eq. 7)",
+                                 "MC-SPG (Eqs. 13-31)"};
+  static const char* kShapes[] = {"cubic spline, box", "quadratic spline, box",
+                                  "cubic spline, sphere"};
+  for (const solver::spg::Domain& d : s.spg) {
+    const auto& st = d.settings;
+    long shared = 0, surface = 0;
+    for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+      shared += d.shared[i];
+      surface += d.surface[i];
+    }
+    fmt::print(log,
+               "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
+               "{}; kernel {}, {} renewed every {} steps; bond failure {}\n",
+               s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
+               kModes[static_cast<int>(st.stabilization)], kShapes[static_cast<int>(st.shape)],
+               st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
+               st.bond_failure
+                   ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
+                   : std::string("off"));
+  }
+}
+
+// After the run: what the particle kernels did (neighbours, renewals, bonds, degeneracy).
+void print_spg_summary(std::ostream& out, const solver::State& s) {
+  for (const solver::spg::Domain& d : s.spg) {
+    const double pairs = static_cast<double>(d.list.neighbours.size());
+    fmt::print(out,
+               "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals, "
+               "{} bonds broken\n",
+               s.parts[static_cast<std::size_t>(d.part)].id, d.count(),
+               d.count() > 0 ? pairs / d.count() : 0.0, d.renewals, d.broken_bonds);
+    if (d.first_degenerate >= 0) {
+      fmt::print(
+          out,
+          "  warning: SPG part {}: degenerate neighbourhoods (moment matrix singular: "
+          "neighbours on a plane or line) at {} renewals, first at node {} at t = {:.6e}; "
+          "such particles carry no stress until their neighbourhood is 3-D again\n",
+          s.parts[static_cast<std::size_t>(d.part)].id, d.degenerate_events,
+          s.nodes
+              .ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(d.first_degenerate)])],
+          d.first_degenerate_time);
+    }
+  }
 }
 
 }  // namespace
@@ -150,6 +194,14 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(err, "mcdyna: {} not run: {} error(s)\n", options.deck.string(),
                compile_diags.error_count());
     return kRunDeckErrors;
+  }
+  if (!options.spg_stabilization.empty()) {
+    const solver::spg::Stabilization mode =
+        options.spg_stabilization == "none"     ? solver::spg::Stabilization::none
+        : options.spg_stabilization == "direct" ? solver::spg::Stabilization::direct
+                                                : solver::spg::Stabilization::momentum_consistent;
+    for (solver::spg::Domain& dom : state->spg)
+      dom.settings.stabilization = mode;
   }
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   std::filesystem::create_directories(dir);
@@ -199,6 +251,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s))\n", omp_get_max_threads());
   for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
     const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
+    if (p >= solver::PhaseTimes::spg_neighbours && state->spg.empty()) continue;
     fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %\n", solver::PhaseTimes::name(p), sec,
                result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
   }
@@ -207,6 +260,11 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(summary, "  {:.3f} million element-cycles/s\n",
                1e-6 * result.element_cycles / result.wall_seconds);
   }
+  if (result.particle_cycles > 0) {
+    fmt::print(summary, "  {:.3f} million particle-steps/s\n",
+               1e-6 * result.particle_cycles / result.wall_seconds);
+  }
+  print_spg_summary(summary, *state);
   if (state->mass_scaling_dt > 0.0) {
     double added = 0.0;
     for (const double a : state->nodes.added_mass)

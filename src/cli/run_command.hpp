@@ -13,6 +13,8 @@ struct RunOptions {
   int threads = 0;  ///< 0: OpenMP default
   bool quiet = false;
   std::size_t max_messages = 50;
+  /// --spg-stabilization: "none", "direct" or "mc"; empty: as the deck says (MC-SPG)
+  std::string spg_stabilization;
 };
 
 /// Exit codes of `run` (README and manual list them).

@@ -26,29 +26,15 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const auto jj = static_cast<std::size_t>(j);
   Eigen::Map<Mat3> f_hat(d.deformation.col(j).data());
   Eigen::Map<Mat3> p_j(d.stress_gradient.col(j).data());
-  const Index first = d.list.offsets[jj], last = d.list.offsets[jj + 1];
   if (d.isolated[jj]) {  // degenerate neighbourhood: no strain measurable, no stress carried
     p_j.setZero();
     return {};
   }
-  const Eigen::Matrix3Xd& x = s.nodes.position;
-  const Eigen::Matrix3Xd& v = s.nodes.velocity;
-  const Index node_j = d.nodes[jj];
-  // F-hat and the reference velocity gradient from differences to particle j (sum grad phi = 0
-  // makes them equal to Eq. 33's sums, with less round-off).
-  Mat3 f = Mat3::Zero(), lr = Mat3::Zero();
-  for (Index p = first; p < last; ++p) {
-    const auto pp = static_cast<std::size_t>(p);
-    const Index node_i = d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])];
-    const Vec3 g = d.shape.gradient.col(p);
-    f.noalias() += (x.col(node_i) - x.col(node_j)) * g.transpose();
-    lr.noalias() += (v.col(node_i) - v.col(node_j)) * g.transpose();
-  }
-  const double det = f.determinant();
-  if (!(det > 0.0)) return {0.0, true};
-  f_hat = f;
-  const Mat3 f_inv = f.inverse();
-  const Mat3 l = lr * f_inv;
+  const ParticleKinematics pk = particle_kinematics(s, d, j);
+  if (!pk.invertible) return {0.0, true};
+  f_hat = pk.deformation;
+  const Mat3& f_inv = pk.inverse;
+  const Mat3& l = pk.velocity_gradient;
   double la[3][3];
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
@@ -119,6 +105,31 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
 }
 
 }  // namespace
+
+ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j) {
+  const auto jj = static_cast<std::size_t>(j);
+  const Eigen::Matrix3Xd& x = s.nodes.position;
+  const Eigen::Matrix3Xd& v = s.nodes.velocity;
+  const Index node_j = d.nodes[jj];
+  // F-hat and the reference velocity gradient from differences to particle j (sum grad phi = 0
+  // makes them equal to Eq. 33's sums, with less round-off).
+  Mat3 f = Mat3::Zero(), lr = Mat3::Zero();
+  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+    const auto pp = static_cast<std::size_t>(p);
+    const Index node_i = d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])];
+    const Vec3 g = d.shape.gradient.col(p);
+    f.noalias() += (x.col(node_i) - x.col(node_j)) * g.transpose();
+    lr.noalias() += (v.col(node_i) - v.col(node_j)) * g.transpose();
+  }
+  ParticleKinematics k;
+  k.deformation = f;
+  k.invertible = f.determinant() > 0.0;
+  if (k.invertible) {
+    k.inverse = f.inverse();
+    k.velocity_gradient = lr * k.inverse;
+  }
+  return k;
+}
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   if (d.steps_since_renewal >= d.settings.renewal_interval) renew_kernel(s, d);

@@ -19,11 +19,12 @@ namespace mcdyna::solver::spg {
 
 namespace {
 
-// PDAMP: momentum-conserving damping of velocity differences between neighbouring smoothed
-// particles. Each row pair (I, J) exchanges the impulse k (u-hat_J - u-hat_I), with
-// k = |PDAMP| mu_IJ / n_I (mu the reduced mass, n_I the neighbours of I), equal and opposite, so
-// a uniform velocity is untouched and |PDAMP| is about the share of I's velocity difference to
-// its neighbours removed per step. Returns the kinetic energy removed.
+// PDAMP: particle-to-particle damping of the smoothed particles' unsmoothed velocities. Each
+// row pair (I, J) exchanges the central impulse k ((u-hat_J - u-hat_I) . e) e, e the unit vector
+// from x_I to x_J, equal and opposite: linear and angular momentum are kept, translation and
+// rigid rotation are not damped (their relative velocity is normal to e), and
+// k = |PDAMP| mu_IJ / n_I (mu the reduced mass, n_I the neighbours of I) removes about |PDAMP|
+// of I's normal velocity difference to its neighbours per step. Returns the energy removed.
 double damp(const State& s, Domain& d) {
   const double alpha = d.settings.damping;
   const Index n = d.count();
@@ -35,6 +36,13 @@ double damp(const State& s, Domain& d) {
                  mj = d.mass[static_cast<std::size_t>(other)];
     return alpha * mi * mj / (mi + mj) / std::max<Index>(d.list.count(row) - 1, 1);
   };
+  const Eigen::Matrix3Xd& x = s.nodes.position;
+  auto normal_part = [&](Index i, Index j) -> Vec3 {
+    const Vec3 e =
+        (x.col(d.nodes[static_cast<std::size_t>(j)]) - x.col(d.nodes[static_cast<std::size_t>(i)]))
+            .normalized();
+    return (before.col(j) - before.col(i)).dot(e) * e;
+  };
 #pragma omp parallel for schedule(static) reduction(+ : removed) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -42,18 +50,15 @@ double damp(const State& s, Domain& d) {
     Vec3 impulse = Vec3::Zero();
     for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
       const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
-      if (j != i && free_particle(j))
-        impulse += coefficient(i, j) * (before.col(j) - before.col(i));
+      if (j != i && free_particle(j)) impulse += coefficient(i, j) * normal_part(i, j);
     }
     for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
       const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
-      if (j != i && free_particle(j))
-        impulse += coefficient(j, i) * (before.col(j) - before.col(i));
+      if (j != i && free_particle(j)) impulse += coefficient(j, i) * normal_part(i, j);
     }
     d.unsmoothed.col(i) += impulse / d.mass[ii];
     removed += 0.5 * d.mass[ii] * (before.col(i).squaredNorm() - d.unsmoothed.col(i).squaredNorm());
   }
-  (void)s;
   return removed;
 }
 

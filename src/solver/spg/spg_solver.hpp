@@ -31,6 +31,16 @@ struct ParticlePassResult {
 /// `step` is the step the current velocities were integrated over (0 at the start).
 ParticlePassResult particle_pass(State& s, Domain& d, double step);
 
+/// F-hat (Eq. 33) and the velocity gradient of the node velocities (the smoothed velocity) at
+/// particle j, over its current row of the neighbour list.
+struct ParticleKinematics {
+  Mat3 deformation = Mat3::Identity();
+  Mat3 inverse = Mat3::Identity();
+  Mat3 velocity_gradient = Mat3::Zero();
+  bool invertible = true;  ///< det F-hat > 0
+};
+ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j);
+
 /// Velocity update of the domain's particles over `dt` from the nodal forces, after the FE
 /// velocity update (which integrated the pinned particles' own force). Returns the lowest node
 /// with a non-finite velocity, or -1.
