@@ -5,7 +5,9 @@ set -eu
 cd "$(dirname "$0")/.."
 for h in 0.2 0.1 0.05; do
   /usr/bin/python3 tools/decks/elastic_wave.py "$h" "decks/elastic_wave/rod_h$h.k"
+  /usr/bin/python3 tools/decks/elastic_wave.py "$h" "decks/elastic_wave/rod_spg_h$h.k" --spg
 done
 for r in coarse medium fine; do
   /usr/bin/python3 tools/decks/taylor_bar.py "$r" "decks/taylor_bar/taylor_$r.k"
+  /usr/bin/python3 tools/decks/taylor_bar.py "$r" "decks/taylor_bar/taylor_spg_$r.k" --spg
 done

@@ -220,9 +220,9 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_rigid_bodies(m, *s, diags);
   detail::compile_constraints(m, *s, diags);
   detail::compile_motions(m, *s, diags);
+  detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles
   detail::compile_initial_velocities(m, *s, diags);
-  detail::compile_rigid_walls(m, *s, diags);
-  detail::compile_spg_parts(m, *s, diags);
+  detail::compile_rigid_walls(m, *s, diags);  // after SPG: walls track nodes that have mass
 
   TimeControl& tc = s->time_control;
   if (m.controls.termination) {

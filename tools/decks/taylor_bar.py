@@ -3,7 +3,11 @@
 373 m/s onto a rigid wall, Johnson-Cook set JC-1 with a Gruneisen EOS, hexahedra (butterfly mesh
 of the circular section). Units t, mm, s, N, MPa. Deterministic: same arguments, same bytes.
 
-usage: taylor_bar.py {coarse|medium|fine} OUT.k [--elform 1|2] [--end 8.0e-5]
+With --spg the bar is one MC-SPG part (ELFORM 47, ITB 3, cubic box kernel, DX = 1.5, updated-
+Lagrangian kernel renewed every 15 steps) at the paper's three nodal distances (§4.2): 0.49,
+0.33 and 0.25 mm, 11,809 / 38,380 / 86,500 particles (paper: 11,809 / 38,325 / 86,621).
+
+usage: taylor_bar.py {coarse|medium|fine} OUT.k [--elform 1|2] [--spg] [--end 8.0e-5]
 """
 import argparse
 import math
@@ -12,6 +16,11 @@ RESOLUTIONS = {  # cells across the half inner square, radial cells, axial cells
     "coarse": (3, 3, 35),
     "medium": (4, 4, 47),
     "fine": (6, 6, 70),
+}
+SPG_RESOLUTIONS = {  # nodes per section x layers: 241 x 49, 505 x 76, 865 x 100
+    "coarse": (4, 5, 48),
+    "medium": (6, 7, 75),
+    "fine": (8, 9, 99),
 }
 
 
@@ -69,9 +78,12 @@ def main():
     ap.add_argument("resolution", choices=RESOLUTIONS)
     ap.add_argument("out")
     ap.add_argument("--elform", type=int, default=1)
+    ap.add_argument("--spg", action="store_true", help="MC-SPG particles instead of hexahedra")
     ap.add_argument("--end", type=float, default=8.0e-5)
     a = ap.parse_args()
-    n, nr, nz = RESOLUTIONS[a.resolution]
+    n, nr, nz = (SPG_RESOLUTIONS if a.spg else RESOLUTIONS)[a.resolution]
+    name = f"taylor_spg_{a.resolution}" if a.spg else f"taylor_{a.resolution}"
+    method = "MC-SPG, ELFORM 47" if a.spg else f"ELFORM {a.elform}"
     radius, length = 3.91, 23.46
     pts, quads = section(n, nr, radius)
     # Orient every quad counter-clockwise so the hexahedra have positive volume.
@@ -84,18 +96,18 @@ def main():
     out = []
     w = out.append
     w("$ " + "-" * 94)
-    w(f"$ taylor_bar {a.resolution} (ELFORM {a.elform}) - written by tools/decks/taylor_bar.py")
+    w(f"$ taylor_bar {a.resolution} ({method}) - written by tools/decks/taylor_bar.py")
     w("$ What it shows: Taylor impact of a 6061-T6 bar, D = 7.82 mm, L = 23.46 mm, 373 m/s onto a")
     w("$   frictionless rigid wall; JC-1 (324/114/0.42/0.002/1.34, TM 925, TR 293, CP 896) with")
     w("$   Gruneisen EOS (C 5386 m/s, S1 1.339, GAMMA0 1.99), adiabatic heating. Units t-mm-s.")
-    w(f"$ How to run:   mcdyna run decks/taylor_bar/taylor_{a.resolution}.k --out results/taylor")
+    w(f"$ How to run:   mcdyna run decks/taylor_bar/{name}.k --out results/{name}")
     w("$ Expected:     final length about 15.95 mm (OpenRadioss 15.91, DynELA 15.98 for this")
     w("$   model); Wilkins & Guinan measured 16.51 mm (D0 = 7.62 mm). tools/verify/taylor_bar.py")
     w("$   prints length and footprint diameter from the last d3plot state.")
     w("$ " + "-" * 94)
     w("*KEYWORD")
     w("*TITLE")
-    w(f"Taylor bar 6061-T6 373 m/s {a.resolution}")
+    w(f"Taylor bar 6061-T6 373 m/s {a.resolution}" + (" MC-SPG" if a.spg else ""))
     w("*CONTROL_TERMINATION")
     w(f"{a.end:10.3E}")
     w("*CONTROL_TIMESTEP")
@@ -111,8 +123,17 @@ def main():
     w("*PART")
     w("bar")
     w("         1         1         1         1")
-    w("*SECTION_SOLID")
-    w(f"         1{a.elform:10d}")
+    if a.spg:
+        w("*SECTION_SOLID_SPG")
+        w("$    SECID    ELFORM")
+        w("         1        47")
+        w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
+        w("       1.5       1.5       1.5         0         0                  15       0.0")
+        w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
+        w("         1   1.0E+11   1.0E+10         3       1.0         0         0    -0.001")
+    else:
+        w("*SECTION_SOLID")
+        w(f"         1{a.elform:10d}")
     w("*MAT_JOHNSON_COOK_TITLE")
     w("AA6061-T6 JC-1")
     w("         1    2.7E-9   26000.0")

@@ -149,18 +149,42 @@ Index advance_velocities(State& s, Domain& d, double dt) {
 
 void absorb_constraints(State& s, Domain& d) {
   const Nodes& nd = s.nodes;
-  const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
-  for (Index i = 0; i < d.count(); ++i) {
+  const Index n = d.count();
+  // The change each constraint or wall made to a smoothed particle's velocity, as an impulse
+  // p_I = m_I change_I on that particle.
+  Eigen::Matrix3Xd change = Eigen::Matrix3Xd::Zero(3, n);
+  bool any = false;
+  for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     const Vec3 v = nd.velocity.col(d.nodes[ii]);
     if (d.pinned[ii]) {
       d.unsmoothed.col(i) = v;
     } else {
-      const Vec3 change = v - d.smoothed.col(i);
-      if (change.squaredNorm() > 0.0)
-        d.unsmoothed.col(i) += (mc ? d.smoothed_mass[ii] / d.mass[ii] : 1.0) * change;
+      change.col(i) = v - d.smoothed.col(i);
+      any = any || change.col(i).squaredNorm() > 0.0;
     }
     d.smoothed.col(i) = v;
+  }
+  if (!any) return;
+  if (d.settings.stabilization == Stabilization::direct) {
+    d.unsmoothed += change;
+    return;
+  }
+  // MC-SPG: an impulse enters like a force (Eq. 30), u-hat_J += sum_I phi_I(X_J) p_I / m_I, so
+  // total momentum changes by exactly the impulses and the wall's reaction is the momentum it
+  // takes. The smoothed velocity follows over the next steps; this step the particle moves
+  // with the constrained velocity (no penetration). The share that falls on pinned particles
+  // is not applied (they have their own constraints and FE forces).
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (d.pinned[jj]) continue;
+    Vec3 sum = Vec3::Zero();
+    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+      const auto pp = static_cast<std::size_t>(p);
+      sum += d.shape.value[pp] * change.col(d.list.neighbours[pp]);
+    }
+    d.unsmoothed.col(j) += sum;
   }
 }
 
