@@ -14,7 +14,7 @@ namespace mcdyna::solver {
 
 struct EnergySummary {
   double kinetic = 0.0, internal = 0.0, hourglass = 0.0, stonewall = 0.0;
-  double damping = 0.0;  ///< dissipated by SPG particle damping (PDAMP)
+  double damping = 0.0;        ///< dissipated by SPG particle damping (PDAMP)
   double external_work = 0.0;  ///< work of prescribed motions and rigid-body constraints
   double eroded_internal = 0.0, eroded_hourglass = 0.0;
   double total = 0.0;  ///< kinetic + internal + hourglass + stonewall + damping + eroded
