@@ -90,7 +90,7 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   const solver::Nodes& nd = s.nodes;
   vtkNew<vtkUnstructuredGrid> grid;
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();  // coordinates stay double: they are the deformed geometry
+  points->SetDataTypeToDouble();
   points->SetNumberOfPoints(nd.count());
   for (Index n = 0; n < nd.count(); ++n)
     points->SetPoint(n, nd.position(0, n), nd.position(1, n), nd.position(2, n));

@@ -24,6 +24,15 @@ std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set) 
 
 namespace detail {
 
+BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m) {
+  BulkViscosityParams q;
+  if (m.controls.bulk_viscosity) {
+    q.quadratic = m.controls.bulk_viscosity->quadratic;
+    q.linear = m.controls.bulk_viscosity->linear;
+  }
+  return q;
+}
+
 Index curve_index(const model::ModelDatabase& m, model::Id id) {
   const auto i = m.index.curves.find(id);
   return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
@@ -38,10 +47,7 @@ HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& p
     hg.type = m.controls.hourglass->type == 0 ? 1 : m.controls.hourglass->type;
     hg.coefficient = m.controls.hourglass->coefficient;
   }
-  if (m.controls.bulk_viscosity) {
-    q.quadratic = m.controls.bulk_viscosity->quadratic;
-    q.linear = m.controls.bulk_viscosity->linear;
-  }
+  q = control_bulk_viscosity(m);
   if (part.hourglass != 0) {
     for (const model::Hourglass& h : m.hourglasses) {
       if (h.id != part.hourglass) continue;

@@ -28,6 +28,8 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);
+/// Q1, Q2 of *CONTROL_BULK_VISCOSITY (defaults without it).
+BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m);
 }  // namespace detail
 
 }  // namespace mcdyna::solver

@@ -100,11 +100,7 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
       volumes.push_back(v);
     }
     if (elements.empty()) continue;
-    BulkViscosityParams q;
-    if (m.controls.bulk_viscosity) {
-      q.quadratic = m.controls.bulk_viscosity->quadratic;
-      q.linear = m.controls.bulk_viscosity->linear;
-    }
+    const BulkViscosityParams q = control_bulk_viscosity(m);
     const spg::GeneratedParticles gen =
         spg::particles_from_hexahedra(nd.initial, elements, volumes);
     spg::Domain dom;

@@ -12,6 +12,8 @@ usage: elastic_wave.py H OUT.k [--elform 1|2] [--spg] [--end 80]
 """
 import argparse
 
+from spg_section import spg_section
+
 
 def main():
     ap = argparse.ArgumentParser()
@@ -58,13 +60,7 @@ def main():
     w("rod")
     w("         1         1         1")
     if a.spg:
-        w("*SECTION_SOLID_SPG")
-        w("$    SECID    ELFORM")
-        w("         1        47")
-        w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
-        w("       1.5       1.5       1.5         0         0                  15       0.0")
-        w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
-        w("         1   1.0E+11   1.0E+10         3       1.0         0         0    -0.001")
+        out.extend(spg_section())
     else:
         w("*SECTION_SOLID")
         w(f"         1{a.elform:10d}")

@@ -12,6 +12,8 @@ usage: taylor_bar.py {coarse|medium|fine} OUT.k [--elform 1|2] [--spg] [--end 8.
 import argparse
 import math
 
+from spg_section import spg_section
+
 RESOLUTIONS = {  # cells across the half inner square, radial cells, axial cells
     "coarse": (3, 3, 35),
     "medium": (4, 4, 47),
@@ -124,13 +126,7 @@ def main():
     w("bar")
     w("         1         1         1         1")
     if a.spg:
-        w("*SECTION_SOLID_SPG")
-        w("$    SECID    ELFORM")
-        w("         1        47")
-        w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
-        w("       1.5       1.5       1.5         0         0                  15       0.0")
-        w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
-        w("         1   1.0E+11   1.0E+10         3       1.0         0         0    -0.001")
+        out.extend(spg_section())
     else:
         w("*SECTION_SOLID")
         w(f"         1{a.elform:10d}")

@@ -77,52 +77,25 @@ VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, do
                                    double dev_work, double length) {
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
-  const double dt = c.in.step;
-  const double v0 = s.initial_volume[i];
-  const double rel = volume / v0;
-  const double density = c.mat.density / rel;
-  const double c2 = wave_speed_squared(c.mat, rel);
-  const double sound = std::sqrt(c2);
-  const double q = bulk_viscosity(c.block.bulk_viscosity, density, length, sound, trace);
-  // The viscosity acting over the step is the mean of the last pass's and this one's, as for
-  // the pressure: the trapezoidal rule that matches the central-difference kinetic energy.
-  const double q_mean = 0.5 * (s.viscosity[i] + q);
-  s.viscosity[i] = q;
-  const VolumeChange vc{rel, (volume - s.volume[i]) / v0, trace * dt, q_mean, dev_work / v0};
-  const double p_old = s.pressure[i];
-  update_pressure(c.mat, vc, s.pressure[i], s.eos_energy[i]);
-  const bool zero_dev = apply_pressure_cutoff(c.mat, s.pressure[i]);
-  s.internal_energy[i] += dev_work - (0.5 * (p_old + s.pressure[i]) + q_mean) * trace * dt * volume;
+  const PointVolumetrics v =
+      volumetric_point_update(c.mat, c.block.bulk_viscosity, s.initial_volume[i], s.volume[i],
+                              volume, trace, c.in.step, dev_work, length,
+                              VolumetricState{s.pressure[i], s.eos_energy[i], s.temperature[i],
+                                              s.viscosity[i], s.internal_energy[i]});
   s.volume[i] = volume;
-  if (c.mat.specific_heat > 0.0) {
-    s.temperature[i] = c.mat.room_temperature + (s.eos_energy[i] - c.mat.eos.initial_energy) /
-                                                    (c.mat.density * c.mat.specific_heat);
-  }
-  return {s.pressure[i] + q, element_step(c.block.bulk_viscosity, length, sound, trace), zero_dev,
-          density, c2};
+  return {s.pressure[i] + v.viscosity, element_step(c.block.bulk_viscosity, length, v.sound, trace),
+          v.zero_deviator, v.density, v.wave_speed_squared};
 }
 
-// Deviatoric update of one point: rotate, integrate the material, return the work done.
+// Deviatoric update of one point; returns the work done per unit volume.
 double point_update(ElementContext& c, Index point, const Kinematics& k, double temperature,
                     double pressure, bool& failed) {
   MaterialPoints& mp = c.st.solids.points;
-  const double dt = c.in.step;
-  double* s = mp.deviator.col(point).data();
-  double* alpha = mp.back_stress.size() > 0 ? mp.back_stress.col(point).data() : nullptr;
-  jaumann_rotate(s, k.w, dt);
-  if (alpha) jaumann_rotate(alpha, k.w, dt);
-  double s_old[6];
-  std::copy(s, s + 6, s_old);
-  double de[6];
-  const double rate = deviatoric_increment(k, dt, de);
   const auto p = static_cast<std::size_t>(point);
-  const PointResult r = update_deviator(c.mat, PointInput{de, rate, temperature, pressure},
-                                        PointState{s, alpha, mp.plastic_strain[p], mp.damage[p]});
-  failed = failed || r.failed;
-  double mid[6];
-  for (int j = 0; j < 6; ++j)
-    mid[j] = 0.5 * (s_old[j] + s[j]);
-  return contract(mid, de);
+  double* alpha = mp.back_stress.size() > 0 ? mp.back_stress.col(point).data() : nullptr;
+  return deviatoric_point_update(
+      c.mat, k, c.in.step, temperature, pressure,
+      PointState{mp.deviator.col(point).data(), alpha, mp.plastic_strain[p], mp.damage[p]}, failed);
 }
 
 void zero_point_deviators(State& st, Index first, int count) {

@@ -1,7 +1,9 @@
 #pragma once
-/// What an integration point (hexahedron Gauss point or SPG particle) needs from its velocity
-/// gradient: rate of deformation, spin, Jaumann rotation, deviatoric increment; and the bulk
-/// viscosity and step of the point's characteristic length. Shared by fe/ and spg/.
+/// What an integration point (hexahedron Gauss point or SPG particle) does with its velocity
+/// gradient: rate of deformation, spin, Jaumann rotation, deviatoric increment, the deviatoric
+/// and volumetric updates of its state, and the bulk viscosity and step of its characteristic
+/// length. Shared by fe/ and spg/, so elements and particles integrate materials the same way.
+#include <algorithm>
 #include <cmath>
 
 #include "solver/material/constitutive.hpp"
@@ -75,6 +77,73 @@ inline double element_step(const BulkViscosityParams& q, double length, double s
                            double trace) {
   const double qv = q.linear * sound + (trace < 0.0 ? q.quadratic * length * (-trace) : 0.0);
   return length / (qv + std::sqrt(qv * qv + sound * sound));
+}
+
+/// Deviatoric update of one point over dt: Jaumann rotation of its stress (and back stress),
+/// the material update, and the deviatoric work per unit volume at the mid-step stress.
+inline double deviatoric_point_update(const Material& m, const Kinematics& k, double dt,
+                                      double temperature, double pressure, PointState st,
+                                      bool& failed) {
+  double* s = st.deviator;
+  jaumann_rotate(s, k.w, dt);
+  if (st.back_stress) jaumann_rotate(st.back_stress, k.w, dt);
+  double s_old[6];
+  std::copy(s, s + 6, s_old);
+  double de[6];
+  const double rate = deviatoric_increment(k, dt, de);
+  const PointResult r = update_deviator(m, PointInput{de, rate, temperature, pressure}, st);
+  failed = failed || r.failed;
+  double mid[6];
+  for (int j = 0; j < 6; ++j)
+    mid[j] = 0.5 * (s_old[j] + s[j]);
+  return contract(mid, de);
+}
+
+/// The per-point values a volumetric update changes (element or particle arrays).
+struct VolumetricState {
+  double& pressure;
+  double& eos_energy;       ///< per initial volume
+  double& temperature;      ///< JC adiabatic temperature
+  double& viscosity;        ///< bulk viscosity q of the last update
+  double& internal_energy;  ///< absolute
+};
+
+struct PointVolumetrics {
+  double viscosity;  ///< q of this update
+  double sound;      ///< current wave speed
+  double density;
+  double wave_speed_squared;
+  bool zero_deviator;  ///< pressure cutoff (spall) says the point carries no shear
+};
+
+/// Pressure (EOS or hypoelastic), bulk viscosity, internal energy and temperature of one point
+/// whose volume went from `old_volume` to `volume` over dt with rate tr D = `trace`.
+/// The viscosity acting over the step is the mean of the last update's and this one's, as for
+/// the pressure: the trapezoidal rule that matches the central-difference kinetic energy.
+inline PointVolumetrics volumetric_point_update(const Material& m, const BulkViscosityParams& bv,
+                                                double initial_volume, double old_volume,
+                                                double volume, double trace, double dt,
+                                                double dev_work, double length,
+                                                VolumetricState st) {
+  const double rel = volume / initial_volume;
+  PointVolumetrics r;
+  r.density = m.density / rel;
+  r.wave_speed_squared = wave_speed_squared(m, rel);
+  r.sound = std::sqrt(r.wave_speed_squared);
+  r.viscosity = bulk_viscosity(bv, r.density, length, r.sound, trace);
+  const double q_mean = 0.5 * (st.viscosity + r.viscosity);
+  st.viscosity = r.viscosity;
+  const VolumeChange vc{rel, (volume - old_volume) / initial_volume, trace * dt, q_mean,
+                        dev_work / initial_volume};
+  const double p_old = st.pressure;
+  update_pressure(m, vc, st.pressure, st.eos_energy);
+  r.zero_deviator = apply_pressure_cutoff(m, st.pressure);
+  st.internal_energy += dev_work - (0.5 * (p_old + st.pressure) + q_mean) * trace * dt * volume;
+  if (m.specific_heat > 0.0) {
+    st.temperature =
+        m.room_temperature + (st.eos_energy - m.eos.initial_energy) / (m.density * m.specific_heat);
+  }
+  return r;
 }
 
 }  // namespace mcdyna::solver

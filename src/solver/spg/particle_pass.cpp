@@ -44,49 +44,26 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho.
   const double shrink = 1.0 - dt * k.trace;
   if (!(shrink > 0.0)) return {0.0, true};
-  const double v_old = d.volume[jj];
-  const double volume = v_old / shrink;
-  const double v0 = d.initial_volume[jj];
-  const double rel = volume / v0;
+  const double volume = d.volume[jj] / shrink;
 
-  // Deviator: Jaumann rotation, material update, deviatoric work (mid-step stress).
+  // Deviator and volumetric state, as at an FE integration point (point_kinematics.hpp).
   double* dev = d.points.deviator.col(j).data();
   double* alpha = d.points.back_stress.size() > 0 ? d.points.back_stress.col(j).data() : nullptr;
-  jaumann_rotate(dev, k.w, dt);
-  if (alpha) jaumann_rotate(alpha, k.w, dt);
-  double dev_old[6];
-  std::copy(dev, dev + 6, dev_old);
-  double de[6];
-  const double rate = deviatoric_increment(k, dt, de);
-  const PointResult r =
-      update_deviator(mat, PointInput{de, rate, d.temperature[jj], d.pressure[jj]},
-                      PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]});
-  if (r.failed) d.failed[jj] = 1;
-  double mid[6];
-  for (int c = 0; c < 6; ++c)
-    mid[c] = 0.5 * (dev_old[c] + dev[c]);
-  const double dev_work = volume * contract(mid, de);
-
-  // Pressure, bulk viscosity, energy, temperature (as the FE point, solid_elements.cpp).
-  const double density = mat.density / rel;
-  const double c2 = wave_speed_squared(mat, rel);
-  const double sound = std::sqrt(c2);
+  bool failed = false;
+  const double dev_work =
+      volume * deviatoric_point_update(
+                   mat, k, dt, d.temperature[jj], d.pressure[jj],
+                   PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]},
+                   failed);
+  if (failed) d.failed[jj] = 1;
   const double length = d.length[jj] * std::cbrt(volume / d.renewal_volume[jj]);
-  const double q = bulk_viscosity(d.settings.bulk_viscosity, density, length, sound, k.trace);
-  const double q_mean = 0.5 * (d.viscosity[jj] + q);
-  d.viscosity[jj] = q;
-  const double p_old = d.pressure[jj];
-  update_pressure(mat,
-                  VolumeChange{rel, (volume - v_old) / v0, k.trace * dt, q_mean, dev_work / v0},
-                  d.pressure[jj], d.eos_energy[jj]);
-  bool zero_dev = apply_pressure_cutoff(mat, d.pressure[jj]);
-  d.internal_energy[jj] +=
-      dev_work - (0.5 * (p_old + d.pressure[jj]) + q_mean) * k.trace * dt * volume;
+  const PointVolumetrics vol =
+      volumetric_point_update(mat, d.settings.bulk_viscosity, d.initial_volume[jj], d.volume[jj],
+                              volume, k.trace, dt, dev_work, length,
+                              VolumetricState{d.pressure[jj], d.eos_energy[jj], d.temperature[jj],
+                                              d.viscosity[jj], d.internal_energy[jj]});
   d.volume[jj] = volume;
-  if (mat.specific_heat > 0.0) {
-    d.temperature[jj] = mat.room_temperature + (d.eos_energy[jj] - mat.eos.initial_energy) /
-                                                   (mat.density * mat.specific_heat);
-  }
+  bool zero_dev = vol.zero_deviator;
   if (d.failed[jj]) {  // material failure (FS on MAT_003/024, JC damage): no shear, no tension
     zero_dev = true;
     d.pressure[jj] = std::max(d.pressure[jj], 0.0);
@@ -96,12 +73,12 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
       dev[c] = 0.0;
 
   // w sigma F-hat^-T, w = V (times MSFAC on the surface): f_I = -sum_J (w sigma F^-T)_J grad phi.
-  const double pq = d.pressure[jj] + q;
+  const double pq = d.pressure[jj] + vol.viscosity;
   Mat3 sigma;
   sigma << dev[0] - pq, dev[3], dev[5], dev[3], dev[1] - pq, dev[4], dev[5], dev[4], dev[2] - pq;
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
-  return {element_step(d.settings.bulk_viscosity, length, sound, k.trace), false};
+  return {element_step(d.settings.bulk_viscosity, length, vol.sound, k.trace), false};
 }
 
 }  // namespace

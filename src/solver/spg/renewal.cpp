@@ -125,13 +125,12 @@ void renew_kernel(State& s, Domain& d) {
       d.first_degenerate_time = s.time;
     }
   }
-  d.degenerate = std::move(degenerate);
+  d.isolated.assign(static_cast<std::size_t>(n), 0);
+  for (const Index i : degenerate)
+    d.isolated[static_cast<std::size_t>(i)] = 1;
 
   // Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J).
   const Stabilization mode = d.settings.stabilization;
-  d.isolated.assign(static_cast<std::size_t>(n), 0);
-  for (const Index i : d.degenerate)
-    d.isolated[static_cast<std::size_t>(i)] = 1;
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);

@@ -112,7 +112,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
                : Vec3(d.unsmoothed.col(j));
   };
   Index bad = std::numeric_limits<Index>::max();
-  Eigen::Matrix3Xd smoothed(3, n);
+  // Written into d.smoothed: the gather reads only u-hat and pinned node velocities.
+  Eigen::Matrix3Xd& smoothed = d.smoothed;
 #pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -141,7 +142,6 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     nd.velocity.col(d.nodes[ii]) = smoothed.col(i);
     if (d.pinned[ii]) d.unsmoothed.col(i) = smoothed.col(i);
   }
-  d.smoothed = smoothed;
   d.times.smoothing +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
