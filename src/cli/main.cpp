@@ -99,6 +99,12 @@ int main(int argc, char** argv) {
                    "SPG velocity stabilisation for studies: none (plain nodal integration), "
                    "direct (Eq. 7 smoothing), mc (MC-SPG, default)")
       ->check(CLI::IsMember({"none", "direct", "mc"}));
+  run_cmd
+      ->add_option("--spg-renewal-strain", run.spg_renewal_strain,
+                   "KERNEL 0 SPG parts: renew the kernel at an SMSTEP check when a particle's "
+                   "Green strain since the last renewal exceeds this (default 0.1; 0: at every "
+                   "check)")
+      ->check(CLI::NonNegativeNumber);
 
   std::string keyword_name;
   std::string markdown_dir;

@@ -134,15 +134,19 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
       shared += d.shared[i];
       surface += d.surface[i];
     }
-    fmt::print(log,
-               "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
-               "{}; kernel {}, {} renewed every {} steps; bond failure {}\n",
-               s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
-               kModes[static_cast<int>(st.stabilization)], kShapes[static_cast<int>(st.shape)],
-               st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
-               st.bond_failure
-                   ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
-                   : std::string("off"));
+    fmt::print(
+        log,
+        "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
+        "{}; kernel {}, {}, checked every {} steps{}; bond failure {}\n",
+        s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
+        kModes[static_cast<int>(st.stabilization)], kShapes[static_cast<int>(st.shape)],
+        st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
+        st.kernel_update == 1 || !(st.renewal_strain > 0.0)
+            ? std::string(" and renewed at each check")
+            : fmt::format(" and renewed at Green strain {:g} or broken bonds", st.renewal_strain),
+        st.bond_failure
+            ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
+            : std::string("off"));
   }
 }
 
@@ -203,6 +207,9 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.stabilization = mode;
   }
+  if (options.spg_renewal_strain >= 0.0)
+    for (solver::spg::Domain& dom : state->spg)
+      dom.settings.renewal_strain = options.spg_renewal_strain;
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   std::filesystem::create_directories(dir);
   if (options.threads > 0) omp_set_num_threads(options.threads);

@@ -15,6 +15,9 @@ struct RunOptions {
   std::size_t max_messages = 50;
   /// --spg-stabilization: "none", "direct" or "mc"; empty: as the deck says (MC-SPG)
   std::string spg_stabilization;
+  /// --spg-renewal-strain: Green strain that renews an updated-Lagrangian kernel (0: at every
+  /// SMSTEP check); negative: the default of the solver
+  double spg_renewal_strain = -1.0;
 };
 
 /// Exit codes of `run` (README and manual list them).

@@ -46,8 +46,12 @@ struct Transpose {
 
 struct SpgSettings {
   KernelShape shape = KernelShape::cubic_box;
-  int kernel_update = 0;  ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
-  int renewal_interval = 15;
+  int kernel_update = 0;      ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
+  int renewal_interval = 15;  ///< SMSTEP: steps between kernel checks (bonds, distortion)
+  /// KERNEL 0: the kernel is renewed at a check when some particle's Green strain relative to
+  /// the reference (norm of 1/2 (F-hat^T F-hat - I)) exceeds this, or when bonds broke; 0 renews
+  /// at every check (see renewal.cpp for why not by default). KERNEL 1 renews at every check.
+  double renewal_strain = 0.1;
   Stabilization stabilization = Stabilization::momentum_consistent;
   bool bond_failure = false;
   double failure_strain = 1.0e11;   ///< bond: mean effective plastic strain (FS)
@@ -90,7 +94,6 @@ struct Domain {
   std::vector<double> renewal_volume;  ///< volume at the renewal
   int steps_since_renewal = 0;
   long renewals = 0;
-  std::vector<Index> degenerate;       ///< particles whose moment matrix degenerated (last renewal)
   std::vector<std::uint8_t> isolated;  ///< the same as flags: no shape functions, no stress
   long degenerate_events = 0;          ///< renewals that found a degenerate particle
   Index first_degenerate = -1;         ///< first such particle, and when

@@ -109,7 +109,13 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j)
 }
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
-  if (d.steps_since_renewal >= d.settings.renewal_interval) renew_kernel(s, d);
+  if (d.steps_since_renewal >= d.settings.renewal_interval) {
+    const long broke = break_bonds(s, d);
+    if (broke > 0 || kernel_distorted(d))
+      renew_kernel(s, d);
+    else
+      d.steps_since_renewal = 0;
+  }
   ++d.steps_since_renewal;
   auto start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];

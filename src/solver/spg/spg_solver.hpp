@@ -51,9 +51,14 @@ Index advance_velocities(State& s, Domain& d, double dt);
 void absorb_constraints(State& s, Domain& d);
 
 /// Kernel renewal (also called by particle_pass when due): reference = current positions,
-/// supports (KERNEL 0: deformed with F, Eq. 34; KERNEL 1: initial), bond failure check,
-/// neighbours without broken bonds, shape functions, transpose, smoothed masses, pinned set.
+/// supports (KERNEL 0: deformed with F, Eq. 34; KERNEL 1: initial), neighbours without broken
+/// bonds, shape functions, transpose, smoothed masses, pinned set.
 void renew_kernel(State& s, Domain& d);
+
+/// Whether the kernel is due for renewal at a check (every SMSTEP steps): always for the
+/// Eulerian kernel and for renewal_strain 0, else when a particle's Green strain relative to
+/// the reference configuration exceeds renewal_strain.
+bool kernel_distorted(const Domain& d);
 
 /// Bonds of the initial configuration from the first neighbour list (both directions).
 Bonds initial_bonds(const Domain& d);
