@@ -40,6 +40,20 @@ Cloud jittered_lattice(int n, double h, double jitter, double scale, unsigned se
   return c;
 }
 
+// The same supports deformed by a shear and a stretch (the updated-Lagrangian kernel, Eq. 34):
+// S = (F A0^2 F^T)^(1/2) as renewal.cpp builds it, different per particle.
+Supports deformed_supports(const Cloud& c, KernelShape shape) {
+  Eigen::Matrix<double, 9, Eigen::Dynamic> s(9, c.support.cols());
+  for (Eigen::Index j = 0; j < c.support.cols(); ++j) {
+    Eigen::Matrix3d f;
+    f << 1.2, 0.3 + 0.01 * static_cast<double>(j % 7), 0.0, 0.0, 0.9, 0.1, 0.05, 0.0, 1.1;
+    const Eigen::Matrix3d fa = f * c.support.col(j).asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(fa * fa.transpose());
+    Eigen::Map<Eigen::Matrix3d>(s.col(j).data()) = eig.operatorSqrt();
+  }
+  return deformed(shape, s);
+}
+
 }  // namespace
 
 TEST_CASE("SPG kernels: continuous, zero outside the support, gradient = finite difference") {
@@ -52,16 +66,22 @@ TEST_CASE("SPG kernels: continuous, zero outside the support, gradient = finite 
     double worst = 0.0;
     for (int t = 0; t < 200; ++t) {
       const Eigen::Vector3d r(u(rng) * 0.5, u(rng) * 0.6, u(rng) * 0.8);
-      const KernelValue k = kernel(shape, r, a);
-      CHECK(k.w >= 0.0);
-      CHECK((k.w > 0.0) == in_support(shape, r, a));
-      for (int d = 0; d < 3; ++d) {
-        const double e = 1e-6;
-        Eigen::Vector3d rp = r, rm = r;
-        rp[d] += e;
-        rm[d] -= e;
-        const double fd = (kernel(shape, rp, a).w - kernel(shape, rm, a).w) / (2 * e);
-        worst = std::max(worst, std::abs(fd - k.grad[d]));
+      // Axis-aligned (half-sizes a) and deformed (B = a general matrix) supports.
+      Eigen::Matrix3d sheared;
+      sheared << 1.0 / 0.3, 1.2, 0.0, -0.4, 1.0 / 0.4, 0.3, 0.2, 0.0, 1.0 / 0.5;
+      for (const Eigen::Matrix3d& b :
+           {Eigen::Matrix3d(a.cwiseInverse().asDiagonal()), Eigen::Matrix3d(sheared)}) {
+        const KernelValue k = kernel(shape, r, b);
+        CHECK(k.w >= 0.0);
+        CHECK((k.w > 0.0) == in_unit_support(shape, b * r));
+        for (int d = 0; d < 3; ++d) {
+          const double e = 1e-6;
+          Eigen::Vector3d rp = r, rm = r;
+          rp[d] += e;
+          rm[d] -= e;
+          const double fd = (kernel(shape, rp, b).w - kernel(shape, rm, b).w) / (2 * e);
+          worst = std::max(worst, std::abs(fd - k.grad[d]));
+        }
       }
     }
     // Central differences of a C1 piecewise polynomial: error O(e^2 / a^3) plus round-off.
@@ -71,62 +91,65 @@ TEST_CASE("SPG kernels: continuous, zero outside the support, gradient = finite 
 
 TEST_CASE("SPG neighbour search equals brute force for every kernel shape and thread count") {
   const Cloud c = jittered_lattice(9, 0.1, 0.3, 1.6, 11);
-  for (const KernelShape shape : kShapes) {
-    const NeighbourList brute = find_neighbours_brute_force(c.x, c.support, shape);
-    omp_set_num_threads(1);
-    const NeighbourList one = find_neighbours(c.x, c.support, shape);
-    omp_set_num_threads(2);
-    const NeighbourList two = find_neighbours(c.x, c.support, shape);
-    omp_set_num_threads(omp_get_num_procs());
-    CHECK(one.offsets == brute.offsets);
-    CHECK(one.neighbours == brute.neighbours);
-    CHECK(two.neighbours == brute.neighbours);
-    // An interior particle of a box support of 1.6 h has about 3^3 neighbours.
-    CHECK(brute.count(9 * 9 * 4 + 9 * 4 + 4) >= 8);
-  }
+  for (const KernelShape shape : kShapes)
+    for (const Supports& support : {axis_aligned(c.support), deformed_supports(c, shape)}) {
+      const NeighbourList brute = find_neighbours_brute_force(c.x, support, shape);
+      omp_set_num_threads(1);
+      const NeighbourList one = find_neighbours(c.x, support, shape);
+      omp_set_num_threads(2);
+      const NeighbourList two = find_neighbours(c.x, support, shape);
+      omp_set_num_threads(omp_get_num_procs());
+      CHECK(one.offsets == brute.offsets);
+      CHECK(one.neighbours == brute.neighbours);
+      CHECK(two.neighbours == brute.neighbours);
+      // An interior particle of a box support of 1.6 h has about 3^3 neighbours.
+      CHECK(brute.count(9 * 9 * 4 + 9 * 4 + 4) >= 8);
+    }
   // Inactive particles are in no list and have none.
   std::vector<std::uint8_t> active(static_cast<std::size_t>(c.x.cols()), 1);
   active[100] = 0;
-  const NeighbourList some = find_neighbours(c.x, c.support, KernelShape::cubic_box, active);
+  const NeighbourList some =
+      find_neighbours(c.x, axis_aligned(c.support), KernelShape::cubic_box, active);
   CHECK(some.count(100) == 0);
   CHECK(std::find(some.neighbours.begin(), some.neighbours.end(), 100) == some.neighbours.end());
 }
 
 TEST_CASE("RK shape functions reproduce constant and linear fields and their gradients") {
   const Cloud c = jittered_lattice(7, 0.2, 0.25, 1.6, 5);
-  for (const KernelShape shape : kShapes) {
-    const NeighbourList list = find_neighbours(c.x, c.support, shape);
-    std::vector<Index> degenerate;
-    const ShapeFunctions sf = shape_functions(c.x, c.support, shape, list, degenerate);
-    CHECK(degenerate.empty());
-    double worst_value = 0.0, worst_gradient = 0.0;
-    for (Index i = 0; i < c.x.cols(); ++i) {  // every particle, the boundary ones included
-      double sum = 0.0;
-      Eigen::Vector3d linear = Eigen::Vector3d::Zero(), grad_sum = Eigen::Vector3d::Zero();
-      Eigen::Matrix3d grad_linear = Eigen::Matrix3d::Zero();
-      for (Index p = list.offsets[static_cast<std::size_t>(i)];
-           p < list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-        const Index j = list.neighbours[static_cast<std::size_t>(p)];
-        const double phi = sf.value[static_cast<std::size_t>(p)];
-        sum += phi;
-        linear += phi * c.x.col(j);
-        grad_sum += sf.gradient.col(p);
-        grad_linear += c.x.col(j) * sf.gradient.col(p).transpose();
+  for (const KernelShape shape : kShapes)
+    for (const Supports& support : {axis_aligned(c.support), deformed_supports(c, shape)}) {
+      const NeighbourList list = find_neighbours(c.x, support, shape);
+      std::vector<Index> degenerate;
+      const ShapeFunctions sf = shape_functions(c.x, support, shape, list, degenerate);
+      CHECK(degenerate.empty());
+      double worst_value = 0.0, worst_gradient = 0.0;
+      for (Index i = 0; i < c.x.cols(); ++i) {  // every particle, the boundary ones included
+        double sum = 0.0;
+        Eigen::Vector3d linear = Eigen::Vector3d::Zero(), grad_sum = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d grad_linear = Eigen::Matrix3d::Zero();
+        for (Index p = list.offsets[static_cast<std::size_t>(i)];
+             p < list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+          const Index j = list.neighbours[static_cast<std::size_t>(p)];
+          const double phi = sf.value[static_cast<std::size_t>(p)];
+          sum += phi;
+          linear += phi * c.x.col(j);
+          grad_sum += sf.gradient.col(p);
+          grad_linear += c.x.col(j) * sf.gradient.col(p).transpose();
+        }
+        worst_value = std::max({worst_value, std::abs(sum - 1.0), (linear - c.x.col(i)).norm()});
+        worst_gradient = std::max(
+            {worst_gradient, grad_sum.norm(), (grad_linear - Eigen::Matrix3d::Identity()).norm()});
       }
-      worst_value = std::max({worst_value, std::abs(sum - 1.0), (linear - c.x.col(i)).norm()});
-      worst_gradient = std::max(
-          {worst_gradient, grad_sum.norm(), (grad_linear - Eigen::Matrix3d::Identity()).norm()});
+      CHECK(worst_value < 1e-12);
+      CHECK(worst_gradient < 1e-10);
     }
-    CHECK(worst_value < 1e-12);
-    CHECK(worst_gradient < 1e-10);
-  }
 }
 
 TEST_CASE("a degenerate (flat) particle neighbourhood is named, not silently used") {
   // One layer of particles: every moment matrix is singular in z.
   Cloud c = jittered_lattice(5, 0.2, 0.0, 1.6, 1);
   Eigen::Matrix3Xd flat = c.x.leftCols(25);
-  Eigen::Matrix3Xd support = c.support.leftCols(25);
+  const Supports support = axis_aligned(c.support.leftCols(25));
   const NeighbourList list = find_neighbours(flat, support, KernelShape::cubic_box);
   std::vector<Index> degenerate;
   const ShapeFunctions sf =

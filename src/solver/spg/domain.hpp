@@ -83,7 +83,7 @@ struct Domain {
 
   // Kernel in the current reference configuration (renewed every `renewal_interval` steps).
   Eigen::Matrix3Xd reference;  ///< X-hat
-  Eigen::Matrix3Xd support;    ///< half-sizes in the reference configuration
+  Supports support;            ///< in the reference configuration
   Eigen::Matrix<double, 9, Eigen::Dynamic> reference_deformation;  ///< F^n (Eq. 32), col-major
   NeighbourList list;
   ShapeFunctions shape;

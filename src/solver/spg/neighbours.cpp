@@ -75,13 +75,13 @@ NeighbourList to_csr(std::vector<std::vector<Index>>& lists) {
 
 }  // namespace
 
-NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support,
-                              KernelShape shape, const std::vector<std::uint8_t>& active) {
+NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
+                              const std::vector<std::uint8_t>& active) {
   const auto n = static_cast<Index>(x.cols());
   std::vector<std::vector<Index>> lists(static_cast<std::size_t>(n));
   if (n == 0) return to_csr(lists);
   // A neighbour J of I satisfies |X_I - X_J|_k < a_J,k <= edge: within one cell of I's cell.
-  const double edge = support.maxCoeff();
+  const double edge = support.reach.maxCoeff();
   const CellGrid g = build_grid(x, edge, active);
 #pragma omp parallel for schedule(dynamic, 256) if (n > 2048)
   for (Index i = 0; i < n; ++i) {
@@ -97,7 +97,7 @@ NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd&
           const std::size_t f = g.flat(cc);
           for (Index k = g.start[f]; k < g.start[f + 1]; ++k) {
             const Index j = g.items[static_cast<std::size_t>(k)];
-            if (in_support(shape, xi - x.col(j), support.col(j))) list.push_back(j);
+            if (in_support_of(support, shape, xi - x.col(j), j)) list.push_back(j);
           }
         }
     std::sort(list.begin(), list.end());
@@ -105,12 +105,12 @@ NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd&
   return to_csr(lists);
 }
 
-NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x,
-                                          const Eigen::Matrix3Xd& support, KernelShape shape) {
+NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x, const Supports& support,
+                                          KernelShape shape) {
   std::vector<std::vector<Index>> lists(static_cast<std::size_t>(x.cols()));
   for (Index i = 0; i < x.cols(); ++i)
     for (Index j = 0; j < x.cols(); ++j)
-      if (in_support(shape, x.col(i) - x.col(j), support.col(j)))
+      if (in_unit_support(shape, support.matrix(j) * (x.col(i) - x.col(j))))
         lists[static_cast<std::size_t>(i)].push_back(j);
   return to_csr(lists);
 }

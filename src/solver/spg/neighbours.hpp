@@ -7,6 +7,7 @@
 /// X_I; the order of the result does not depend on the cell layout or the thread count.
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -24,13 +25,21 @@ struct NeighbourList {
   }
 };
 
-/// x: particle positions (3 x N); support: half-sizes per particle (3 x N); `active` (size N or
-/// empty: all) leaves inactive particles out of every list and gives them an empty list.
-NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support,
-                              KernelShape shape, const std::vector<std::uint8_t>& active = {});
+/// x: particle positions (3 x N); support: per particle; `active` (size N or empty: all) leaves
+/// inactive particles out of every list and gives them an empty list.
+NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
+                              const std::vector<std::uint8_t>& active = {});
 
 /// The same by checking every pair (O(N^2)); for tests.
-NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x,
-                                          const Eigen::Matrix3Xd& support, KernelShape shape);
+NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x, const Supports& support,
+                                          KernelShape shape);
+
+/// Whether X_I = x lies in the support of particle j.
+inline bool in_support_of(const Supports& s, KernelShape shape, const Eigen::Vector3d& r,
+                          Eigen::Index j) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(r[k]) < s.reach(k, j))) return false;
+  return in_unit_support(shape, s.matrix(j) * r);
+}
 
 }  // namespace mcdyna::solver::spg

@@ -21,33 +21,41 @@ double seconds_since(Clock::time_point t) {
 // acceleration; such a particle is integrated plainly until the next renewal.
 constexpr double kMinimumSmoothedMassShare = 0.1;
 
-// Support growth and shrinkage relative to the initial support (KERNEL = 0): the support follows
-// the material (Eq. 34) within these bounds, so shear flow cannot grow the axis-aligned box
-// (and the neighbour count) without limit, nor compression shrink it to nothing.
-constexpr double kSupportMinimumScale = 0.5, kSupportMaximumScale = 2.0;
+// Bounds on the principal stretches of an updated-Lagrangian support relative to the initial
+// one: guards against a deformation gradient that has lost its meaning, not a modelling limit
+// (the support follows the particle spacing, which follows F).
+constexpr double kSupportMinimumStretch = 0.02, kSupportMaximumStretch = 50.0;
 
 Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
   return Eigen::Map<Mat3>(m.col(i).data());
 }
 
+// KERNEL 0 (Eq. 34): the initial support A0 (axis-aligned half-sizes) deformed with the
+// material, S = (F A0^2 F^T)^(1/2): the ellipsoid F A0 (unit ball) exactly, and for the box
+// kernels the box stretched along the principal axes of F A0 without its rotation. The support
+// keeps its size relative to the particle spacing, which deforms the same way: compression
+// along the axis of a Taylor bar shrinks it there (a support fixed in size would span many
+// compressed layers and let them collapse unseen), and it widens where the material spreads.
+// KERNEL 1 (Eulerian): the initial supports in the current configuration.
 void update_supports(Domain& d) {
-  if (d.settings.kernel_update == 1) {  // Eulerian: the initial sizes in the current frame
-    d.support = d.initial_support;
+  if (d.settings.kernel_update == 1) {
+    d.support = axis_aligned(d.initial_support);
     return;
   }
+  Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
   for (Index i = 0; i < d.count(); ++i) {
-    // Axis-aligned half-sizes of the deformed support ellipsoid F A0 (unit ball):
-    // a_k = sqrt((F A0^2 F^T)_kk).
     const Mat3 f = mat(d.reference_deformation, i);
     const Vec3 a0 = d.initial_support.col(i);
-    for (int k = 0; k < 3; ++k) {
-      double sq = 0.0;
-      for (int j = 0; j < 3; ++j)
-        sq += f(k, j) * f(k, j) * a0[j] * a0[j];
-      d.support(k, i) =
-          std::clamp(std::sqrt(sq), kSupportMinimumScale * a0[k], kSupportMaximumScale * a0[k]);
-    }
+    const Mat3 fa = f * a0.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Mat3> eig;
+    eig.computeDirect(fa * fa.transpose());
+    const double scale = a0.mean();
+    Vec3 half = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    for (int k = 0; k < 3; ++k)
+      half[k] = std::clamp(half[k], kSupportMinimumStretch * scale, kSupportMaximumStretch * scale);
+    mat(shapes, i) = eig.eigenvectors() * half.asDiagonal() * eig.eigenvectors().transpose();
   }
+  d.support = deformed(d.settings.shape, shapes);
 }
 
 // Drops the pairs whose bond is broken (Eq. 36: phi = 0 for a disconnected pair, for good).
@@ -146,7 +154,7 @@ void renew_kernel(State& s, Domain& d) {
       const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
       if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
     }
-    d.length[ii] = std::isfinite(nearest) ? nearest : d.initial_support.col(i).minCoeff();
+    d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
     d.renewal_volume[ii] = d.volume[ii];
     const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
                      (mode == Stabilization::momentum_consistent &&
@@ -194,7 +202,6 @@ void initialise(State& s, Domain& d) {
     mat(d.reference_deformation, i).setIdentity();
     mat(d.deformation, i).setIdentity();
   }
-  d.support = d.initial_support;
   d.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
   d.pinned.assign(static_cast<std::size_t>(n), 0);
   d.length.assign(static_cast<std::size_t>(n), 0.0);

@@ -12,18 +12,18 @@ using Vec4 = Eigen::Vector4d;
 using Mat4 = Eigen::Matrix4d;
 
 // Shape functions of one particle; false when its moment matrix is degenerate.
-bool particle_shape(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support, KernelShape shape,
+bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
                     const NeighbourList& list, Index i, ShapeFunctions& out) {
   const auto first = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i)]);
   const auto last = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i) + 1]);
-  const double s = support.col(i).mean();
+  const double s = support.reach.col(i).mean();
   const Eigen::Vector3d xi = x.col(i);
   Mat4 m = Mat4::Zero();
   Mat4 dm[3] = {Mat4::Zero(), Mat4::Zero(), Mat4::Zero()};
   for (std::size_t p = first; p < last; ++p) {
     const Index j = list.neighbours[p];
     const Eigen::Vector3d r = xi - x.col(j);
-    const KernelValue k = kernel(shape, r, support.col(j));
+    const KernelValue k = kernel(shape, r, Eigen::Matrix3d(support.matrix(j)));
     const Vec4 h(1.0, r.x() / s, r.y() / s, r.z() / s);
     m.noalias() += k.w * h * h.transpose();
     for (int d = 0; d < 3; ++d) {
@@ -68,7 +68,7 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support, 
 
 }  // namespace
 
-ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support,
+ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
                                std::vector<Index>& degenerate) {
   ShapeFunctions out;

@@ -3,7 +3,7 @@
 /// gradients. For particle I and each neighbour J (NeighbourList order):
 ///   phi_J(X_I) = b^T H(r) w_J(r),  r = X_I - X_J,  H(r) = [1, r / s],  b = M^-1 [1, 0, 0, 0]^T,
 ///   M(X_I) = sum_J w_J H H^T,
-/// where s is particle I's mean support half-size (scaling H keeps M well scaled and leaves phi
+/// where s is particle I's mean support reach (scaling H keeps M well scaled and leaves phi
 /// unchanged). They reproduce constant and linear fields exactly (sum_J phi_J = 1,
 /// sum_J phi_J X_J = X_I, sum_J grad phi_J = 0, sum_J X_J (x) grad phi_J = I) wherever M is
 /// invertible. Gradients: grad phi = grad w b^T H + w (grad b^T H + b^T grad H) with
@@ -28,7 +28,7 @@ inline constexpr double kMinimumMomentRatio = 1.0e-8;
 
 /// Computes the shape functions of every particle. Particles whose moment matrix is degenerate
 /// get zero values and are listed in `degenerate` (ascending), for a diagnostic that names them.
-ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& support,
+ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
                                std::vector<Index>& degenerate);
 
