@@ -11,3 +11,5 @@ for r in coarse medium fine; do
   /usr/bin/python3 tools/decks/taylor_bar.py "$r" "decks/taylor_bar/taylor_$r.k"
   /usr/bin/python3 tools/decks/taylor_bar.py "$r" "decks/taylor_bar/taylor_spg_$r.k" --spg
 done
+/usr/bin/python3 tools/decks/tension_fracture.py 1.0 decks/fracture/tension_spg_h1.k
+/usr/bin/python3 tools/decks/tension_fracture.py 0.5 decks/fracture/tension_spg_h0.5.k

@@ -18,6 +18,7 @@
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
+#include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::cli {
 
@@ -159,6 +160,13 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
                "{} bonds broken\n",
                s.parts[static_cast<std::size_t>(d.part)].id, d.count(),
                d.count() > 0 ? pairs / d.count() : 0.0, d.renewals, d.broken_bonds);
+    if (d.broken_bonds > 0) {
+      const solver::spg::Pieces p = solver::spg::count_pieces(d);
+      fmt::print(out,
+                 "  SPG part {}: {} separate piece(s) with no neighbours across ({} of them "
+                 "single particles; the largest has {} particles)\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, p.pieces, p.single, p.largest);
+    }
     if (d.first_degenerate >= 0) {
       fmt::print(
           out,

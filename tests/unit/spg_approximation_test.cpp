@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <omp.h>
 
+#include <cmath>
 #include <random>
 
 #include "solver/spg/particles.hpp"
@@ -159,7 +160,7 @@ TEST_CASE("a degenerate (flat) particle neighbourhood is named, not silently use
     CHECK(v == 0.0);
 }
 
-TEST_CASE("particles from hexahedra: lumped volume, spacing from the longest incident edge") {
+TEST_CASE("particles from hexahedra: lumped volume, spacing per axis from the incident edges") {
   // Two unit cubes side by side in x, then scaled by 0.5 in z.
   Eigen::Matrix3Xd x(3, 12);
   int n = 0;
@@ -180,10 +181,16 @@ TEST_CASE("particles from hexahedra: lumped volume, spacing from the longest inc
   CHECK(total == doctest::Approx(1.0));
   CHECK(p.volume[static_cast<std::size_t>(id(1, 0, 0))] == doctest::Approx(0.125));  // shared
   CHECK(p.volume[static_cast<std::size_t>(id(0, 0, 0))] == doctest::Approx(0.0625));
-  for (double s : p.spacing)
-    CHECK(s == doctest::Approx(1.0));  // the longest edges are the unit ones
+  for (Eigen::Index i = 0; i < p.spacing.cols(); ++i)  // edges of 1 in x and y, 0.5 in z
+    CHECK((p.spacing.col(i) - Eigen::Vector3d(1.0, 1.0, 0.5)).norm() == doctest::Approx(0.0));
   const Eigen::Matrix3Xd a = support_sizes(p, Eigen::Vector3d(1.5, 1.6, 1.7));
-  CHECK(a(2, 0) == doctest::Approx(1.7));
+  CHECK(a(2, 0) == doctest::Approx(0.85));
+  // A mesh turned by 45 degrees about z: the x and y extents of the diagonal edges.
+  const double c = std::sqrt(0.5);
+  Eigen::Matrix3d turn;
+  turn << c, -c, 0.0, c, c, 0.0, 0.0, 0.0, 1.0;
+  const GeneratedParticles q = particles_from_hexahedra(turn * x, hexes, {0.5, 0.5});
+  CHECK((q.spacing.col(0) - Eigen::Vector3d(c, c, 0.5)).norm() == doctest::Approx(0.0));
 }
 
 }  // namespace mcdyna::solver::spg

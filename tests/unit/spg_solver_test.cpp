@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <numeric>
 
 #include "solver/energy.hpp"
 #include "solver/spg/spg_solver.hpp"
@@ -248,6 +249,47 @@ TEST_CASE("MC-SPG results are bitwise identical on 1 and 2 threads") {
   }
   omp_set_num_threads(2);
   CHECK((positions[0].array() == positions[1].array()).all());
+}
+
+TEST_CASE("MC-SPG bond failure: a notched bar pulled apart breaks into pieces, mass kept") {
+  // decks/fracture/tension_spg_h1.k: 509 particles, FS 0.3 and STRETCH 1.1 (Eqs. 35-36).
+  TempDir dir;
+  Simulation sim = prepare(dir, source_text("decks/fracture/tension_spg_h1.k"));
+  solver::State& s = *sim.state;
+  const double mass0 = std::accumulate(s.spg.front().mass.begin(), s.spg.front().mass.end(), 0.0);
+  run(sim);
+  REQUIRE(sim.result.reason == solver::StopReason::end_time);
+  const spg::Domain& d = s.spg.front();
+  const spg::Pieces pieces = spg::count_pieces(d);
+  MESSAGE("broken bonds ", d.broken_bonds, ", pieces ", pieces.pieces, ", largest ",
+          pieces.largest);
+  // Measured: 154 bonds broken, 3 pieces (the two halves and the 9 particles of the notch's
+  // middle layer); the largest piece is a half of the bar.
+  CHECK(d.broken_bonds > 0);
+  CHECK(pieces.pieces >= 2);
+  CHECK(pieces.largest < d.count() * 3 / 5);
+  // Particles are never deleted, and the smoothed masses of the last kernel, built without the
+  // broken pairs, still sum to the particle masses (Eq. 21).
+  CHECK(std::accumulate(d.mass.begin(), d.mass.end(), 0.0) == mass0);
+  // Rows of degenerate (isolated) particles are zero, so their mass enters no m_I.
+  double smoothed = std::accumulate(d.smoothed_mass.begin(), d.smoothed_mass.end(), 0.0);
+  int isolated = 0;
+  for (Index j = 0; j < d.count(); ++j)
+    if (d.isolated[static_cast<std::size_t>(j)]) {
+      smoothed += d.mass[static_cast<std::size_t>(j)];
+      ++isolated;
+    }
+  MESSAGE("isolated particles ", isolated);
+  CHECK(smoothed == doctest::Approx(mass0).epsilon(1e-12));
+  // Broken bonds are out of every neighbour list (no healing).
+  long stale = 0;
+  for (Index i = 0; i < d.count(); ++i)
+    for (Index p = d.list.offsets[static_cast<std::size_t>(i)];
+         p < d.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+      if (j != i && d.bonds.is_broken(i, j)) ++stale;
+    }
+  CHECK(stale == 0);
 }
 
 }  // namespace mcdyna::test

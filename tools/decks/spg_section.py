@@ -1,9 +1,16 @@
 """The *SECTION_SOLID_SPG cards the verification decks share (keywords.md §2.6): ELFORM 47,
-cubic spline with box support, DX = DY = DZ = 1.5, updated-Lagrangian kernel renewed every 15
-steps, no bond failure, ITB 3 (MC-SPG), MSFAC 1, PDAMP -0.001."""
+cubic spline with box support, DX = DY = DZ = 1.5, updated-Lagrangian kernel checked every 15
+steps, ITB 3 (MC-SPG), MSFAC 1, PDAMP -0.001; no bond failure unless FS and STRETCH are given
+(IDAM 1: a bond breaks when its mean effective plastic strain exceeds FS and it is stretched
+beyond STRETCH)."""
 
 
-def spg_section(secid=1):
+def field(v):
+    """A real in a 10-column field: large values in E notation (1.0E+11), others plainly."""
+    return f"{v:10.1E}" if abs(v) >= 1.0e5 else f"{v:10g}"
+
+
+def spg_section(secid=1, fs=1.0e11, stretch=1.0e10):
     return [
         "*SECTION_SOLID_SPG",
         "$    SECID    ELFORM",
@@ -11,5 +18,5 @@ def spg_section(secid=1):
         "$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC",
         "       1.5       1.5       1.5         0         0                  15       0.0",
         "$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP",
-        "         1   1.0E+11   1.0E+10         3       1.0         0         0    -0.001",
+        f"         1{field(fs)}{field(stretch)}         3       1.0         0         0    -0.001",
     ]

@@ -1,5 +1,6 @@
 // Bonds of the initial configuration and their failure (paper §3.2, Eqs. 35-36).
 #include <algorithm>
+#include <numeric>
 
 #include "solver/spg/spg_solver.hpp"
 
@@ -85,6 +86,37 @@ long break_bonds(const State& s, Domain& d) {
   }
   d.broken_bonds += broken;
   return broken;
+}
+
+Pieces count_pieces(const Domain& d) {
+  // Union-find over the neighbour pairs, with path halving.
+  std::vector<Index> root(static_cast<std::size_t>(d.count()));
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](Index i) {
+    while (root[static_cast<std::size_t>(i)] != i) {
+      auto& r = root[static_cast<std::size_t>(i)];
+      r = root[static_cast<std::size_t>(r)];
+      i = r;
+    }
+    return i;
+  };
+  for (Index i = 0; i < d.count(); ++i)
+    for (Index p = d.list.offsets[static_cast<std::size_t>(i)];
+         p < d.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index a = find(i), c = find(d.list.neighbours[static_cast<std::size_t>(p)]);
+      if (a != c) root[static_cast<std::size_t>(std::max(a, c))] = std::min(a, c);
+    }
+  std::vector<Index> size(static_cast<std::size_t>(d.count()), 0);
+  for (Index i = 0; i < d.count(); ++i)
+    ++size[static_cast<std::size_t>(find(i))];
+  Pieces p;
+  for (const Index s : size) {
+    if (s == 0) continue;
+    ++p.pieces;
+    if (s == 1) ++p.single;
+    p.largest = std::max(p.largest, s);
+  }
+  return p;
 }
 
 }  // namespace mcdyna::solver::spg

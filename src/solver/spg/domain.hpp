@@ -42,6 +42,9 @@ struct Transpose {
   std::vector<Index> offsets;
   std::vector<Index> pairs;  ///< index into the row list (NeighbourList::neighbours)
   std::vector<Index> rows;   ///< J, the row the pair belongs to
+  // Per pair, in this order (contiguous for the per-step gathers):
+  std::vector<double> gather;  ///< psi_I(X_J) = m-hat_J phi_I(X_J) / m_I (Eq. 14), MC-SPG
+  Eigen::Matrix3Xd gradient;   ///< grad phi_I(X_J), for the internal force
 };
 
 struct SpgSettings {

@@ -164,7 +164,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
       const Eigen::Map<const Mat3> p_j(d.stress_gradient.col(d.transpose.rows[tt]).data());
-      f.noalias() -= p_j * d.shape.gradient.col(d.transpose.pairs[tt]);
+      f.noalias() -= p_j * d.transpose.gradient.col(t);
     }
     s.nodes.force.col(d.nodes[ii]) += f;
   }

@@ -19,7 +19,7 @@ GeneratedParticles particles_from_hexahedra(const Eigen::Matrix3Xd& positions,
                                     p.nodes.begin());
   };
   p.volume.assign(p.nodes.size(), 0.0);
-  p.spacing.assign(p.nodes.size(), 0.0);
+  p.spacing.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
   for (std::size_t k = 0; k < elements.size(); ++k) {
     const auto& e = elements[k];
     for (const Index n : e)  // a repeated node of a degenerate element gets each share
@@ -27,10 +27,10 @@ GeneratedParticles particles_from_hexahedra(const Eigen::Matrix3Xd& positions,
     for (const auto& edge : kEdges) {
       const Index a = e[static_cast<std::size_t>(edge[0])],
                   b = e[static_cast<std::size_t>(edge[1])];
-      const double length = (positions.col(a) - positions.col(b)).norm();
+      const Eigen::Vector3d extent = (positions.col(a) - positions.col(b)).cwiseAbs();
       for (const Index n : {a, b}) {
-        double& s = p.spacing[particle(n)];
-        s = std::max(s, length);
+        auto s = p.spacing.col(static_cast<Eigen::Index>(particle(n)));
+        s = s.cwiseMax(extent);
       }
     }
   }
@@ -40,7 +40,8 @@ GeneratedParticles particles_from_hexahedra(const Eigen::Matrix3Xd& positions,
 Eigen::Matrix3Xd support_sizes(const GeneratedParticles& p, const Eigen::Vector3d& scale) {
   Eigen::Matrix3Xd a(3, static_cast<Eigen::Index>(p.nodes.size()));
   for (std::size_t i = 0; i < p.nodes.size(); ++i)
-    a.col(static_cast<Eigen::Index>(i)) = scale * p.spacing[i];
+    a.col(static_cast<Eigen::Index>(i)) =
+        scale.cwiseProduct(p.spacing.col(static_cast<Eigen::Index>(i)));
   return a;
 }
 

@@ -1,8 +1,11 @@
 #pragma once
 /// Particles generated from the hexahedra of *SECTION_SOLID_SPG (ELFORM 47) parts: every node of
 /// those elements becomes a particle with a lumped volume (1/8 of each element it belongs to,
-/// as the FE lumped mass) and a nodal spacing (the longest element edge that meets it), from
-/// which the support half-sizes are DX/DY/DZ x spacing (keywords.md §2.6).
+/// as the FE lumped mass) and a nodal spacing per axis (the largest x, y and z extent of the
+/// element edges that meet it), from which the support half-sizes are DX/DY/DZ x spacing
+/// (keywords.md §2.6). Every mesh neighbour then lies inside the box support (DX >= 1), and a
+/// mesh whose edges are not axis-aligned (the butterfly mesh of a cylinder) does not get the
+/// oversized supports that the longest edge in every direction would give.
 #include <Eigen/Core>
 
 #include <array>
@@ -13,9 +16,9 @@
 namespace mcdyna::solver::spg {
 
 struct GeneratedParticles {
-  std::vector<Index> nodes;     ///< node index of each particle, ascending
-  std::vector<double> volume;   ///< lumped volume
-  std::vector<double> spacing;  ///< longest incident element edge
+  std::vector<Index> nodes;    ///< node index of each particle, ascending
+  std::vector<double> volume;  ///< lumped volume
+  Eigen::Matrix3Xd spacing;    ///< per axis: largest |edge_k| over the incident edges
 };
 
 /// positions: all node positions (3 x nodes); elements: corner node indices of the SPG hexahedra

@@ -87,6 +87,8 @@ Transpose transpose_of(const NeighbourList& l, Index n) {
     t.offsets[static_cast<std::size_t>(i) + 1] += t.offsets[static_cast<std::size_t>(i)];
   t.pairs.resize(l.neighbours.size());
   t.rows.resize(l.neighbours.size());
+  t.gather.resize(l.neighbours.size());
+  t.gradient.resize(3, static_cast<Eigen::Index>(l.neighbours.size()));
   std::vector<Index> fill(t.offsets.begin(), t.offsets.end() - 1);
   for (Index row = 0; row < n; ++row)  // rows ascending: each transposed list is sorted
     for (Index p = l.offsets[static_cast<std::size_t>(row)];
@@ -148,6 +150,13 @@ void renew_kernel(State& s, Domain& d) {
            d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])];
     }
     d.smoothed_mass[ii] = m;
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      const Index p = d.transpose.pairs[tt];
+      d.transpose.gather[tt] = d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
+                               d.shape.value[static_cast<std::size_t>(p)] / m;
+      d.transpose.gradient.col(t) = d.shape.gradient.col(p);
+    }
     // Characteristic length for the step: the nearest neighbour in the new reference.
     double nearest = std::numeric_limits<double>::infinity();
     for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {

@@ -106,32 +106,29 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   if (d.settings.damping > 0.0 && mode != Stabilization::none) d.damping_energy += damp(s, d);
 
   // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7).
-  auto source = [&](Index j) -> Vec3 {
-    return d.pinned[static_cast<std::size_t>(j)]
-               ? Vec3(nd.velocity.col(d.nodes[static_cast<std::size_t>(j)]))
-               : Vec3(d.unsmoothed.col(j));
-  };
+  // A pinned particle enters its neighbours' sums with its own (node) velocity.
+  for (Index i = 0; i < n; ++i)
+    if (d.pinned[static_cast<std::size_t>(i)])
+      d.unsmoothed.col(i) = nd.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
+  const Eigen::Matrix3Xd& source = d.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
   // Written into d.smoothed: the gather reads only u-hat and pinned node velocities.
   Eigen::Matrix3Xd& smoothed = d.smoothed;
 #pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    Vec3 u = source(i);
+    Vec3 u = source.col(i);
     if (!d.pinned[ii] && mode == Stabilization::momentum_consistent) {
       u.setZero();
       for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
         const auto tt = static_cast<std::size_t>(t);
-        const Index j = d.transpose.rows[tt];
-        u += d.mass[static_cast<std::size_t>(j)] *
-             d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] * source(j);
+        u += d.transpose.gather[tt] * source.col(d.transpose.rows[tt]);
       }
-      u /= d.smoothed_mass[ii];
     } else if (!d.pinned[ii] && mode == Stabilization::direct) {
       u.setZero();
       for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
-        u += d.shape.value[pp] * source(d.list.neighbours[pp]);
+        u += d.shape.value[pp] * source.col(d.list.neighbours[pp]);
       }
     }
     smoothed.col(i) = u;

@@ -66,6 +66,16 @@ Bonds initial_bonds(const Domain& d);
 /// Breaks the bonds that meet Eq. 36 at the current positions; returns how many broke.
 long break_bonds(const State& s, Domain& d);
 
+/// The particles split into pieces that no longer interact: connected components of the
+/// current neighbour lists (pairs in each other's support with an unbroken bond). A particle
+/// without neighbours is a piece of its own.
+struct Pieces {
+  Index pieces = 0;   ///< all components
+  Index single = 0;   ///< of them, single particles
+  Index largest = 0;  ///< particles in the largest
+};
+Pieces count_pieces(const Domain& d);
+
 /// Kinetic energy (1/2 m u-hat^{n-1/2} . u-hat^{n+1/2}) and momentum of the particles whose
 /// velocity is smoothed (the quantities MC-SPG conserves); pinned particles count as nodes.
 struct SmoothedKinetic {
