@@ -20,7 +20,8 @@ sed -e "/^\*CONTROL_TERMINATION/{n;s/.*/   8.0E-05$(printf '%10d' "$cycles")/}" 
 # One run; prints its rate and phase split, leaves the wall time in $wall.
 run() {
   local threads=$1 mode=$2 label=$3 out=$work/out_${threads}_$2
-  build/mcdyna run "$deck" --threads "$threads" --spg-stabilization "$mode" --out "$out" -q
+  build/mcdyna run "$deck" --threads "$threads" --spg-stabilization "$mode" --out "$out" -q \
+    >/dev/null 2>&1
   wall=$(awk '/^  total  /{print $2}' "$out/d3hsp")
   local rate split summary
   rate=$(grep -o '[0-9.]* million particle-steps/s' "$out/d3hsp")

@@ -28,36 +28,41 @@ namespace {
 double damp(const State& s, Domain& d) {
   const double alpha = d.settings.damping;
   const Index n = d.count();
-  const Eigen::Matrix3Xd before = d.unsmoothed;
-  double removed = 0.0;
-  auto free_particle = [&](Index i) { return d.pinned[static_cast<std::size_t>(i)] == 0; };
-  auto coefficient = [&](Index row, Index other) {
-    const double mi = d.mass[static_cast<std::size_t>(row)],
-                 mj = d.mass[static_cast<std::size_t>(other)];
-    return alpha * mi * mj / (mi + mj) / std::max<Index>(d.list.count(row) - 1, 1);
-  };
   const Eigen::Matrix3Xd& x = s.nodes.position;
-  auto normal_part = [&](Index i, Index j) -> Vec3 {
-    const Vec3 e =
-        (x.col(d.nodes[static_cast<std::size_t>(j)]) - x.col(d.nodes[static_cast<std::size_t>(i)]))
-            .normalized();
-    return (before.col(j) - before.col(i)).dot(e) * e;
-  };
-#pragma omp parallel for schedule(static) reduction(+ : removed) if (n > 4096)
+  const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
+  // The impulse of each row pair (I, J), once, from the velocities before damping.
+  Eigen::Matrix3Xd impulse(3, pairs);
+#pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (!free_particle(i)) continue;
-    Vec3 impulse = Vec3::Zero();
+    const bool free_i = d.pinned[ii] == 0;
+    const double share = alpha / std::max<Index>(d.list.count(i) - 1, 1);
+    const Vec3 xi = x.col(d.nodes[ii]);
     for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
       const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
-      if (j != i && free_particle(j)) impulse += coefficient(i, j) * normal_part(i, j);
+      const auto jj = static_cast<std::size_t>(j);
+      if (j == i || !free_i || d.pinned[jj]) {
+        impulse.col(p).setZero();
+        continue;
+      }
+      const Vec3 e = (x.col(d.nodes[jj]) - xi).normalized();
+      const double mu = d.mass[ii] * d.mass[jj] / (d.mass[ii] + d.mass[jj]);
+      impulse.col(p) = share * mu * (d.unsmoothed.col(j) - d.unsmoothed.col(i)).dot(e) * e;
     }
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
-      if (j != i && free_particle(j)) impulse += coefficient(j, i) * normal_part(i, j);
-    }
-    d.unsmoothed.col(i) += impulse / d.mass[ii];
-    removed += 0.5 * d.mass[ii] * (before.col(i).squaredNorm() - d.unsmoothed.col(i).squaredNorm());
+  }
+  double removed = 0.0;
+#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (d.pinned[ii]) continue;
+    Vec3 total = Vec3::Zero();
+    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
+      total += impulse.col(p);
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
+      total -= impulse.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
+    const Vec3 before = d.unsmoothed.col(i);
+    d.unsmoothed.col(i) += total / d.mass[ii];
+    removed += 0.5 * d.mass[ii] * (before.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
   }
   return removed;
 }
@@ -73,6 +78,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // Accelerations of the smoothed particles (zero for pinned ones).
   Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n);
   if (mode != Stabilization::none) {
+#pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
       if (d.pinned[ii]) continue;
@@ -134,6 +140,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     smoothed.col(i) = u;
     if (!std::isfinite(u.sum())) bad = std::min(bad, d.nodes[ii]);
   }
+#pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     nd.velocity.col(d.nodes[ii]) = smoothed.col(i);
