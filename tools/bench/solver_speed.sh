@@ -11,9 +11,7 @@ cycles=${2:-1500}
 work=${TMPDIR:-/tmp}/mcdyna_solver_bench
 mkdir -p "$work"
 deck=$work/taylor_${res}_${cycles}.k
-/usr/bin/python3 tools/decks/taylor_bar.py "$res" "$work/base.k"
-# ENDCYC on the termination card; outputs only at start and end.
-sed -e "/^\*CONTROL_TERMINATION/{n;s/.*/   8.0E-05$(printf '%10d' "$cycles")/}" "$work/base.k" > "$deck"
+/usr/bin/python3 tools/decks/taylor_bar.py "$res" "$deck" --cycles "$cycles"
 elements=$(awk '/^\*ELEMENT_SOLID/{f=1;next} /^\*/{f=0} f' "$deck" | wc -l)
 echo "deck: Taylor bar $res, $elements hexahedra, $cycles cycles"
 for threads in 1 2; do

@@ -13,9 +13,7 @@ cycles=${2:-1000}
 work=${TMPDIR:-/tmp}/mcdyna_spg_bench
 mkdir -p "$work"
 deck=$work/taylor_spg_${res}_${cycles}.k
-/usr/bin/python3 tools/decks/taylor_bar.py "$res" --spg "$work/base.k" >/dev/null
-# ENDCYC on the termination card; outputs only at start and end.
-sed -e "/^\*CONTROL_TERMINATION/{n;s/.*/   8.0E-05$(printf '%10d' "$cycles")/}" "$work/base.k" > "$deck"
+/usr/bin/python3 tools/decks/taylor_bar.py "$res" --spg "$deck" --cycles "$cycles" >/dev/null
 
 # One run; prints its rate and phase split, leaves the wall time in $wall.
 run() {

@@ -82,6 +82,8 @@ def main():
     ap.add_argument("--elform", type=int, default=1)
     ap.add_argument("--spg", action="store_true", help="MC-SPG particles instead of hexahedra")
     ap.add_argument("--end", type=float, default=8.0e-5)
+    ap.add_argument("--cycles", type=int, default=0,
+                    help="ENDCYC: stop after this many cycles (benchmarks; 0: at ENDTIM)")
     a = ap.parse_args()
     n, nr, nz = (SPG_RESOLUTIONS if a.spg else RESOLUTIONS)[a.resolution]
     name = f"taylor_spg_{a.resolution}" if a.spg else f"taylor_{a.resolution}"
@@ -111,7 +113,7 @@ def main():
     w("*TITLE")
     w(f"Taylor bar 6061-T6 373 m/s {a.resolution}" + (" MC-SPG" if a.spg else ""))
     w("*CONTROL_TERMINATION")
-    w(f"{a.end:10.3E}")
+    w(f"{a.end:10.3E}" + (f"{a.cycles:10d}" if a.cycles else ""))
     w("*CONTROL_TIMESTEP")
     w("       0.0       0.9")
     w("*DATABASE_BINARY_D3PLOT")

@@ -61,6 +61,13 @@ CellGrid build_grid(const Eigen::Matrix3Xd& x, double edge, const std::vector<st
   return g;
 }
 
+// Whether r = X_I - X_J lies in the support of particle j (the bounding box first).
+bool in_support_of(const Supports& s, KernelShape shape, const Eigen::Vector3d& r, Eigen::Index j) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(r[k]) < s.reach(k, j))) return false;
+  return in_unit_support(shape, s.matrix(j) * r);
+}
+
 // CSR from per-particle lists filled in parallel.
 NeighbourList to_csr(std::vector<std::vector<Index>>& lists) {
   NeighbourList out;

@@ -7,7 +7,6 @@
 /// X_I; the order of the result does not depend on the cell layout or the thread count.
 #include <Eigen/Core>
 
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -33,13 +32,5 @@ NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support
 /// The same by checking every pair (O(N^2)); for tests.
 NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x, const Supports& support,
                                           KernelShape shape);
-
-/// Whether X_I = x lies in the support of particle j.
-inline bool in_support_of(const Supports& s, KernelShape shape, const Eigen::Vector3d& r,
-                          Eigen::Index j) {
-  for (int k = 0; k < 3; ++k)
-    if (!(std::abs(r[k]) < s.reach(k, j))) return false;
-  return in_unit_support(shape, s.matrix(j) * r);
-}
 
 }  // namespace mcdyna::solver::spg

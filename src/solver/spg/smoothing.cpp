@@ -118,7 +118,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       d.unsmoothed.col(i) = nd.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
   const Eigen::Matrix3Xd& source = d.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
-  // Written into d.smoothed: the gather reads only u-hat and pinned node velocities.
+  // Written into d.smoothed: the gather reads only u-hat (which holds the pinned velocities).
   Eigen::Matrix3Xd& smoothed = d.smoothed;
 #pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
   for (Index i = 0; i < n; ++i) {
@@ -144,7 +144,6 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     nd.velocity.col(d.nodes[ii]) = smoothed.col(i);
-    if (d.pinned[ii]) d.unsmoothed.col(i) = smoothed.col(i);
   }
   d.times.smoothing +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
