@@ -101,9 +101,15 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"none", "direct", "mc"}));
   run_cmd
       ->add_option("--spg-renewal-strain", run.spg_renewal_strain,
-                   "KERNEL 0 SPG parts: renew the kernel at an SMSTEP check when a particle's "
-                   "Green strain since the last renewal exceeds this (default 0.1; 0: at every "
-                   "check)")
+                   "KERNEL 0 SPG parts: at an SMSTEP check, renew the kernel of the particles "
+                   "whose Green strain since their last renewal exceeds this (default 0.1; 0: "
+                   "all particles at every check)")
+      ->check(CLI::NonNegativeNumber);
+
+  run_cmd
+      ->add_option("--spg-mode-control", run.spg_mode_control,
+                   "SPG parts: coefficient of the low-energy-mode stiffness (default from the "
+                   "deck: 0.5 with MSC = 1, else 0; 0 turns it off)")
       ->check(CLI::NonNegativeNumber);
 
   std::string keyword_name;

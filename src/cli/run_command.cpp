@@ -135,19 +135,23 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
       shared += d.shared[i];
       surface += d.surface[i];
     }
-    fmt::print(
-        log,
-        "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
-        "{}; kernel {}, {}, checked every {} steps{}; bond failure {}\n",
-        s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
-        kModes[static_cast<int>(st.stabilization)], kShapes[static_cast<int>(st.shape)],
-        st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
-        st.kernel_update == 1 || !(st.renewal_strain > 0.0)
-            ? std::string(" and renewed at each check")
-            : fmt::format(" and renewed at Green strain {:g} or broken bonds", st.renewal_strain),
-        st.bond_failure
-            ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
-            : std::string("off"));
+    fmt::print(log,
+               "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
+               "{}{}; kernel {}, {}, checked every {} steps{}; bond failure {}\n",
+               s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
+               kModes[static_cast<int>(st.stabilization)],
+               st.mode_control > 0.0
+                   ? fmt::format(" with low-energy-mode control {:g} (MSC 1)", st.mode_control)
+                   : std::string(),
+               kShapes[static_cast<int>(st.shape)],
+               st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
+               st.kernel_update == 1 || !(st.renewal_strain > 0.0)
+                   ? std::string(" and renewed at each check")
+                   : fmt::format(" and renewed per particle at Green strain {:g} or broken bonds",
+                                 st.renewal_strain),
+               st.bond_failure
+                   ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
+                   : std::string("off"));
   }
 }
 
@@ -156,10 +160,14 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
   for (const solver::spg::Domain& d : s.spg) {
     const double pairs = static_cast<double>(d.list.neighbours.size());
     fmt::print(out,
-               "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals, "
-               "{} bonds broken\n",
+               "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals "
+               "({:.1f} % of the rows per renewal), {} bonds broken\n",
                s.parts[static_cast<std::size_t>(d.part)].id, d.count(),
-               d.count() > 0 ? pairs / d.count() : 0.0, d.renewals, d.broken_bonds);
+               d.count() > 0 ? pairs / d.count() : 0.0, d.renewals,
+               d.renewals > 0 && d.count() > 0 ? 100.0 * static_cast<double>(d.renewed_rows) /
+                                                     (static_cast<double>(d.renewals) * d.count())
+                                               : 0.0,
+               d.broken_bonds);
     if (d.broken_bonds > 0) {
       const solver::spg::Pieces p = solver::spg::count_pieces(d);
       fmt::print(out,
@@ -167,6 +175,12 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
                  "single particles; the largest has {} particles)\n",
                  s.parts[static_cast<std::size_t>(d.part)].id, p.pieces, p.single, p.largest);
     }
+    if (d.released > 0)
+      fmt::print(out,
+                 "  SPG part {}: {} time(s) a particle with broken bonds had its neighbourhood "
+                 "invert and was left without stress until its next kernel renewal (debris of "
+                 "the failed material)\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.released);
     if (d.first_degenerate >= 0) {
       fmt::print(
           out,
@@ -218,6 +232,9 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.spg_renewal_strain >= 0.0)
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.renewal_strain = options.spg_renewal_strain;
+  if (options.spg_mode_control >= 0.0)
+    for (solver::spg::Domain& dom : state->spg)
+      dom.settings.mode_control = options.spg_mode_control;
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   std::filesystem::create_directories(dir);
   if (options.threads > 0) omp_set_num_threads(options.threads);

@@ -18,6 +18,7 @@ struct RunOptions {
   /// --spg-renewal-strain: Green strain that renews an updated-Lagrangian kernel (0: at every
   /// SMSTEP check); negative: the default of the solver
   double spg_renewal_strain = -1.0;
+  double spg_mode_control = -1.0;  ///< < 0: from the deck (MSC)
 };
 
 /// Exit codes of `run` (README and manual list them).

@@ -52,6 +52,7 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
   st.bond_failure = in.damage_criterion == 1 && st.failure_strain < 1.0e10;
   st.damping = std::abs(in.particle_damping);
   st.surface_factor = in.surface_quadrature_factor > 0.0 ? in.surface_quadrature_factor : 1.0;
+  st.mode_control = in.smoothing_scheme == 1.0 ? spg::kModeControl : 0.0;
   st.bulk_viscosity = q;
   return st;
 }
@@ -116,9 +117,17 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
                 "STRETCH (Eq. 36), which is not given (1e10): no bond will break",
                 sec->id, dom.settings.failure_strain);
     }
-    if (sec->spg.smoothing_scheme != 0.0) {
-      d.note(sec->loc, "section {}: MSC = {:g} runs with the regular MC-SPG smoothing (MSC = 0)",
-             sec->id, sec->spg.smoothing_scheme);
+    if (sec->spg.smoothing_scheme == 1.0) {
+      d.note(sec->loc,
+             "section {}: MSC = 1 (control of low-energy modes): MC-SPG with mcdyna's stiffness "
+             "on the particle positions the neighbours do not reproduce, coefficient {:g} "
+             "(LS-DYNA's MSC 1 scheme is not published)",
+             sec->id, spg::kModeControl);
+    } else if (sec->spg.smoothing_scheme != 0.0) {
+      d.warning(sec->loc,
+                "section {}: MSC = {:g} is neither 0 (regular MC-SPG) nor 1 (low-energy-mode "
+                "control); runs as 0",
+                sec->id, sec->spg.smoothing_scheme);
     }
     dom.nodes = gen.nodes;
     const auto n = dom.nodes.size();

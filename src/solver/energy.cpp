@@ -33,6 +33,8 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     for (std::size_t i = 0; i < d.internal_energy.size(); ++i)
       e.internal += d.internal_energy[i];
     e.damping += d.damping_energy;
+    for (const double w : d.mode_energy)
+      e.hourglass += w;
     const spg::SmoothedKinetic k = spg::smoothed_kinetic(s, d);
     e.kinetic += k.kinetic;
     e.momentum += k.momentum;
@@ -83,6 +85,8 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
       ps.momentum += 0.5 * d.mass[ii] * (before + after);
     }
     ps.internal += d.damping_energy;
+    for (const double w : d.mode_energy)
+      ps.hourglass += w;
   }
   for (std::size_t p = 0; p < s.parts.size(); ++p) {
     const Index b = s.parts[p].rigid_body;

@@ -2,7 +2,8 @@
 cubic spline with box support, DX = DY = DZ = 1.5, updated-Lagrangian kernel checked every 15
 steps, ITB 3 (MC-SPG), MSFAC 1, PDAMP -0.001; no bond failure unless FS and STRETCH are given
 (IDAM 1: a bond breaks when its mean effective plastic strain exceeds FS and it is stretched
-beyond STRETCH)."""
+beyond STRETCH); MSC 0 (the paper's MC-SPG) unless msc=1 asks for the control of low-energy
+modes (src/solver/spg/mode_control.cpp)."""
 
 
 def field(v):
@@ -10,13 +11,13 @@ def field(v):
     return f"{v:10.1E}" if abs(v) >= 1.0e5 else f"{v:10g}"
 
 
-def spg_section(secid=1, fs=1.0e11, stretch=1.0e10):
+def spg_section(secid=1, fs=1.0e11, stretch=1.0e10, msc=0):
     return [
         "*SECTION_SOLID_SPG",
         "$    SECID    ELFORM",
         f"{secid:10d}        47",
         "$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC",
-        "       1.5       1.5       1.5         0         0                  15       0.0",
+        f"       1.5       1.5       1.5         0         0                  15{float(msc):10.1f}",
         "$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP",
         f"         1{field(fs)}{field(stretch)}         3       1.0         0         0    -0.001",
     ]

@@ -47,13 +47,20 @@ struct Transpose {
   Eigen::Matrix3Xd gradient;   ///< grad phi_I(X_J), for the internal force
 };
 
+/// MSC = 1: the coefficient c of the low-energy-mode stiffness c rho c^2 h (mode_control.cpp).
+/// Chosen on the h = 0.5 notched bar at 0.15 ms (layer gaps beside the notch): 0.05 still
+/// alternates (0.45/0.69 mm), 0.2 nearly smooth, 0.5 smooth and close to hex FE, 1.0 smooth but
+/// the neck spreads (gap at the notch 0.79 mm; FE 0.99, 0.5: 0.85).
+inline constexpr double kModeControl = 0.5;
+
 struct SpgSettings {
   KernelShape shape = KernelShape::cubic_box;
   int kernel_update = 0;      ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
   int renewal_interval = 15;  ///< SMSTEP: steps between kernel checks (bonds, distortion)
-  /// KERNEL 0: the kernel is renewed at a check when some particle's Green strain relative to
-  /// the reference (norm of 1/2 (F-hat^T F-hat - I)) exceeds this, or when bonds broke; 0 renews
-  /// at every check (see renewal.cpp for why not by default). KERNEL 1 renews at every check.
+  /// KERNEL 0: at a check, the rows of the particles whose Green strain relative to their
+  /// reference (norm of 1/2 (F-hat^T F-hat - I)) exceeds this are renewed, and the rows holding
+  /// a pair whose bond broke; 0 renews every row at every check (see renewal.cpp for why not by
+  /// default). KERNEL 1 renews every row at every check.
   double renewal_strain = 0.1;
   Stabilization stabilization = Stabilization::momentum_consistent;
   bool bond_failure = false;
@@ -61,6 +68,9 @@ struct SpgSettings {
   double failure_stretch = 1.0e10;  ///< bond: stretch ratio (STRETCH)
   double damping = 0.0;             ///< |PDAMP|: share of neighbour velocity differences per step
   double surface_factor = 1.0;      ///< MSFAC: quadrature weight factor of surface particles
+  /// MSC = 1: coefficient of the low-energy-mode stiffness (mode_control.cpp); 0 (MSC = 0): the
+  /// paper's MC-SPG alone.
+  double mode_control = 0.0;
   BulkViscosityParams bulk_viscosity;
 };
 
@@ -96,7 +106,8 @@ struct Domain {
   std::vector<double> length;         ///< characteristic length at the renewal
   std::vector<double> renewal_volume;  ///< volume at the renewal
   int steps_since_renewal = 0;
-  long renewals = 0;
+  long renewals = 0;      ///< renewal events (all rows or some)
+  long renewed_rows = 0;  ///< rows rebuilt over all renewals (count() per full renewal)
   std::vector<std::uint8_t> isolated;  ///< the same as flags: no shape functions, no stress
   long degenerate_events = 0;          ///< renewals that found a degenerate particle
   Index first_degenerate = -1;         ///< first such particle, and when
@@ -116,8 +127,18 @@ struct Domain {
   Eigen::Matrix<double, 9, Eigen::Dynamic> stress_gradient;  ///< w sigma F-hat^-T, last pass
   double damping_energy = 0.0;                               ///< dissipated by PDAMP
 
+  // Low-energy-mode control (MSC = 1, mode_control.cpp), per particle: k_J = m c^2 / h^2 from
+  // the last stress update, the residual r_J = x_J - sum_K phi_K(X_J) x_K and g_J = c k_J r_J.
+  std::vector<double> mode_stiffness;
+  Eigen::Matrix3Xd mode_residual, mode_force;
+  std::vector<double> mode_energy;  ///< work of the mode-control forces (hourglass energy)
+
   Bonds bonds;
   long broken_bonds = 0;
+  long released = 0;  ///< times a particle became debris
+  /// Particles with broken bonds whose neighbourhood inverted: no stress until their row is
+  /// renewed (particle_pass.cpp).
+  std::vector<std::uint8_t> debris;
   SpgTimes times;
 
   [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }

@@ -50,6 +50,12 @@ inline bool in_unit_support(KernelShape shape, const Eigen::Vector3d& z) {
   return std::abs(z.x()) < 1.0 && std::abs(z.y()) < 1.0 && std::abs(z.z()) < 1.0;
 }
 
+/// How far z = B r lies from the centre in units of the support: < 1 inside (|z| for the ball,
+/// max |z_k| for the box).
+inline double unit_distance(KernelShape shape, const Eigen::Vector3d& z) {
+  return shape == KernelShape::cubic_sphere ? z.norm() : z.cwiseAbs().maxCoeff();
+}
+
 /// Kernel value and gradient d/dr at z = B r (`to_unit` = B).
 inline KernelValue kernel(KernelShape shape, const Eigen::Vector3d& r,
                           const Eigen::Matrix3d& to_unit) {

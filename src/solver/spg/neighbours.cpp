@@ -83,7 +83,8 @@ NeighbourList to_csr(std::vector<std::vector<Index>>& lists) {
 }  // namespace
 
 NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
-                              const std::vector<std::uint8_t>& active) {
+                              const std::vector<std::uint8_t>& active,
+                              const std::vector<std::uint8_t>& rows) {
   const auto n = static_cast<Index>(x.cols());
   std::vector<std::vector<Index>> lists(static_cast<std::size_t>(n));
   if (n == 0) return to_csr(lists);
@@ -93,6 +94,7 @@ NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support
 #pragma omp parallel for schedule(dynamic, 256) if (n > 2048)
   for (Index i = 0; i < n; ++i) {
     if (!active.empty() && !active[static_cast<std::size_t>(i)]) continue;
+    if (!rows.empty() && !rows[static_cast<std::size_t>(i)]) continue;
     auto& list = lists[static_cast<std::size_t>(i)];
     const Eigen::Vector3d xi = x.col(i);
     const Eigen::Vector3i c = g.cell_of(xi);

@@ -25,9 +25,12 @@ struct NeighbourList {
 };
 
 /// x: particle positions (3 x N); support: per particle; `active` (size N or empty: all) leaves
-/// inactive particles out of every list and gives them an empty list.
+/// inactive particles out of every list and gives them an empty list; `rows` (size N or empty:
+/// all) limits the search to those particles' own lists, the others are left empty (a partial
+/// renewal of the kernel, renewal.cpp).
 NeighbourList find_neighbours(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
-                              const std::vector<std::uint8_t>& active = {});
+                              const std::vector<std::uint8_t>& active = {},
+                              const std::vector<std::uint8_t>& rows = {});
 
 /// The same by checking every pair (O(N^2)); for tests.
 NeighbourList find_neighbours_brute_force(const Eigen::Matrix3Xd& x, const Supports& support,

@@ -19,19 +19,31 @@ using Clock = std::chrono::steady_clock;
 struct Outcome {
   double step = std::numeric_limits<double>::infinity();
   bool inverted = false;
+  bool released = false;
 };
+
+// A particle that has lost bonds (Eq. 36) and whose neighbourhood then inverts is debris of the
+// failed material: what is left of its row is one-sided and no longer measures a deformation.
+// It carries no stress from then on, like an eroded element, until its row is renewed at the
+// next check (rows_to_renew); every other inversion is an instability and stops the run.
+Outcome release_or_invert(Domain& d, Index j) {
+  if (!d.settings.bond_failure || !(d.bonds.damage(j) > 0.0)) return {0.0, true, false};
+  d.debris[static_cast<std::size_t>(j)] = 1;
+  d.stress_gradient.col(j).setZero();
+  return {std::numeric_limits<double>::infinity(), false, true};
+}
 
 // Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.stress_gradient.
 Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, double dt) {
   const auto jj = static_cast<std::size_t>(j);
   Eigen::Map<Mat3> f_hat(d.deformation.col(j).data());
   Eigen::Map<Mat3> p_j(d.stress_gradient.col(j).data());
-  if (d.isolated[jj]) {  // degenerate neighbourhood: no strain measurable, no stress carried
+  if (d.isolated[jj] || d.debris[jj]) {  // no strain measurable, no stress carried
     p_j.setZero();
     return {};
   }
   const ParticleKinematics pk = particle_kinematics(s, d, j);
-  if (!pk.invertible) return {0.0, true};
+  if (!pk.invertible) return release_or_invert(d, j);
   f_hat = pk.deformation;
   const Mat3& f_inv = pk.inverse;
   const Mat3& l = pk.velocity_gradient;
@@ -43,7 +55,7 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
 
   // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho.
   const double shrink = 1.0 - dt * k.trace;
-  if (!(shrink > 0.0)) return {0.0, true};
+  if (!(shrink > 0.0)) return release_or_invert(d, j);
   const double volume = d.volume[jj] / shrink;
 
   // Deviator and volumetric state, as at an FE integration point (point_kinematics.hpp).
@@ -78,7 +90,8 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   sigma << dev[0] - pq, dev[3], dev[5], dev[3], dev[1] - pq, dev[4], dev[5], dev[4], dev[2] - pq;
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
-  return {element_step(d.settings.bulk_viscosity, length, vol.sound, k.trace), false};
+  d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
+  return {element_step(d.settings.bulk_viscosity, length, vol.sound, k.trace), false, false};
 }
 
 }  // namespace
@@ -111,8 +124,12 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j)
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   if (d.steps_since_renewal >= d.settings.renewal_interval) {
     const long broke = break_bonds(s, d);
-    if (broke > 0 || kernel_distorted(d))
+    std::vector<std::uint8_t> rows;
+    const Index due = rows_to_renew(s, d, broke > 0, rows);
+    if (due == d.count())
       renew_kernel(s, d);
+    else if (due > 0)
+      renew_kernel(s, d, rows);
     else
       d.steps_since_renewal = 0;
   }
@@ -124,7 +141,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   Index controlling = -1;
   Index inverted = std::numeric_limits<Index>::max();
   Index non_finite = std::numeric_limits<Index>::max();
-#pragma omp parallel if (n > 512)
+  long released = 0;
+#pragma omp parallel if (n > 512) reduction(+ : released)
   {
     double local_best = std::numeric_limits<double>::infinity();
     Index local_controlling = -1;
@@ -133,6 +151,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 #pragma omp for schedule(static, 128) nowait
     for (Index j = 0; j < n; ++j) {
       const Outcome o = particle_update(s, d, mat, j, step);
+      released += o.released ? 1 : 0;
       if (o.inverted) {
         local_inverted = std::min(local_inverted, j);
       } else if (std::isnan(o.step)) {
@@ -153,10 +172,14 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       non_finite = std::min(non_finite, local_non_finite);
     }
   }
+  d.released += released;
   d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
   start = Clock::now();
 
-  // Internal forces, gathered per particle over the pairs (J, I) of its transpose.
+  if (d.settings.mode_control > 0.0) mode_control_forces(s, d);
+  // Internal forces, gathered per particle over the pairs (J, I) of its transpose, with the
+  // mode-control force -(g_I - sum_J phi_I(X_J) g_J) = -(D^T g)_I (mode_control.cpp).
+  const bool control = d.settings.mode_control > 0.0;
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -165,7 +188,11 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       const auto tt = static_cast<std::size_t>(t);
       const Eigen::Map<const Mat3> p_j(d.stress_gradient.col(d.transpose.rows[tt]).data());
       f.noalias() -= p_j * d.transpose.gradient.col(t);
+      if (control)
+        f += d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] *
+             d.mode_force.col(d.transpose.rows[tt]);
     }
+    if (control) f -= d.mode_force.col(i);
     s.nodes.force.col(d.nodes[ii]) += f;
   }
   d.times.force += std::chrono::duration<double>(Clock::now() - start).count();

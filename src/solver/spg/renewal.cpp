@@ -31,20 +31,19 @@ Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
 }
 
 // KERNEL 0 (Eq. 34): the initial support A0 (axis-aligned half-sizes) deformed with the
-// material, S = (F A0^2 F^T)^(1/2): the ellipsoid F A0 (unit ball) exactly, and for the box
-// kernels the box stretched along the principal axes of F A0 without its rotation. The support
-// keeps its size relative to the particle spacing, which deforms the same way: compression
-// along the axis of a Taylor bar shrinks it there (a support fixed in size would span many
-// compressed layers and let them collapse unseen), and it widens where the material spreads.
-// KERNEL 1 (Eulerian): the initial supports in the current configuration.
-void update_supports(Domain& d) {
-  if (d.settings.kernel_update == 1) {
-    d.support = axis_aligned(d.initial_support);
-    return;
-  }
+// material, S = (F A0^2 F^T)^(1/2) with F = F-hat F^n the total deformation now: the ellipsoid
+// F A0 (unit ball) exactly, and for the box kernels the box stretched along the principal axes
+// of F A0 without its rotation. The support keeps its size relative to the particle spacing,
+// which deforms the same way: compression along the axis of a Taylor bar shrinks it there (a
+// support fixed in size would span many compressed layers and let them collapse unseen), and
+// it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
+Supports current_supports(const Domain& d) {
+  if (d.settings.kernel_update == 1) return axis_aligned(d.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
+#pragma omp parallel for schedule(static) if (d.count() > 4096)
   for (Index i = 0; i < d.count(); ++i) {
-    const Mat3 f = mat(d.reference_deformation, i);
+    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(i).data()) *
+                   Eigen::Map<const Mat3>(d.reference_deformation.col(i).data());
     const Vec3 a0 = d.initial_support.col(i);
     const Mat3 fa = f * a0.asDiagonal();
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
@@ -55,13 +54,12 @@ void update_supports(Domain& d) {
       half[k] = std::clamp(half[k], kSupportMinimumStretch * scale, kSupportMaximumStretch * scale);
     mat(shapes, i) = eig.eigenvectors() * half.asDiagonal() * eig.eigenvectors().transpose();
   }
-  d.support = deformed(d.settings.shape, shapes);
+  return deformed(d.settings.shape, shapes);
 }
 
 // Drops the pairs whose bond is broken (Eq. 36: phi = 0 for a disconnected pair, for good).
-void remove_broken_pairs(Domain& d) {
+void remove_broken_pairs(const Domain& d, NeighbourList& l) {
   if (d.broken_bonds == 0) return;
-  NeighbourList& l = d.list;
   std::vector<Index> offsets(l.offsets.size(), 0);
   std::size_t out = 0;
   for (Index i = 0; i < d.count(); ++i) {
@@ -101,31 +99,89 @@ Transpose transpose_of(const NeighbourList& l, Index n) {
   return t;
 }
 
+// The renewed rows of `fresh` (lists and shape functions computed for them alone) replace
+// those of the current lists; the other rows are kept as they are, in their own reference.
+void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fresh_shape,
+                const std::vector<std::uint8_t>& rows) {
+  const Index n = d.count();
+  NeighbourList list;
+  list.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (Index i = 0; i < n; ++i)
+    list.offsets[static_cast<std::size_t>(i) + 1] =
+        list.offsets[static_cast<std::size_t>(i)] +
+        (rows[static_cast<std::size_t>(i)] ? fresh.count(i) : d.list.count(i));
+  const auto pairs = static_cast<std::size_t>(list.offsets.back());
+  list.neighbours.resize(pairs);
+  ShapeFunctions shape;
+  shape.value.resize(pairs);
+  shape.gradient.resize(3, static_cast<Eigen::Index>(pairs));
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const bool renewed = rows[static_cast<std::size_t>(i)] != 0;
+    const NeighbourList& from = renewed ? fresh : d.list;
+    const ShapeFunctions& from_shape = renewed ? fresh_shape : d.shape;
+    Index q = list.offsets[static_cast<std::size_t>(i)];
+    for (Index p = from.offsets[static_cast<std::size_t>(i)];
+         p < from.offsets[static_cast<std::size_t>(i) + 1]; ++p, ++q) {
+      list.neighbours[static_cast<std::size_t>(q)] = from.neighbours[static_cast<std::size_t>(p)];
+      shape.value[static_cast<std::size_t>(q)] = from_shape.value[static_cast<std::size_t>(p)];
+      shape.gradient.col(q) = from_shape.gradient.col(p);
+    }
+  }
+  d.list = std::move(list);
+  d.shape = std::move(shape);
+}
+
 }  // namespace
 
 void renew_kernel(State& s, Domain& d) {
+  renew_kernel(s, d, {});
+}
+
+void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
+  const bool all = rows.empty() || d.renewals == 0;
+  auto renewed = [&](Index i) { return all || rows[static_cast<std::size_t>(i)] != 0; };
   auto start = Clock::now();
   Eigen::Matrix3Xd x(3, n);
   for (Index i = 0; i < n; ++i)
     x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
-  if (d.renewals > 0) {
-    // Eq. 32: F^{n+m} = F-hat F^n; the new reference starts from F-hat = I.
-    for (Index i = 0; i < n; ++i) {
-      const Mat3 total = mat(d.deformation, i) * mat(d.reference_deformation, i);
-      mat(d.reference_deformation, i) = total;
-      mat(d.deformation, i).setIdentity();
-    }
+  // Eq. 32: F^{n+m} = F-hat F^n; a renewed row starts again from F-hat = I.
+  for (Index i = 0; i < n; ++i) {
+    if (!renewed(i)) continue;
+    const Mat3 total = mat(d.deformation, i) * mat(d.reference_deformation, i);
+    mat(d.reference_deformation, i) = total;
+    mat(d.deformation, i).setIdentity();
+    d.reference.col(i) = x.col(i);
   }
-  d.reference = x;
-  update_supports(d);
-  d.list = find_neighbours(x, d.support, d.settings.shape);
-  remove_broken_pairs(d);
-  d.times.neighbours += seconds_since(start);
-  start = Clock::now();
-
+  d.support = current_supports(d);
   std::vector<Index> degenerate;
-  d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate);
+  if (all) {
+    d.list = find_neighbours(x, d.support, d.settings.shape);
+    remove_broken_pairs(d, d.list);
+    d.times.neighbours += seconds_since(start);
+    start = Clock::now();
+    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate);
+    d.isolated.assign(static_cast<std::size_t>(n), 0);
+  } else {
+    NeighbourList fresh = find_neighbours(x, d.support, d.settings.shape, {}, rows);
+    remove_broken_pairs(d, fresh);
+    d.times.neighbours += seconds_since(start);
+    start = Clock::now();
+    const ShapeFunctions fresh_shape =
+        shape_functions(x, d.support, d.settings.shape, fresh, degenerate);
+    merge_rows(d, fresh, fresh_shape, rows);
+    for (Index i = 0; i < n; ++i)
+      if (renewed(i)) d.isolated[static_cast<std::size_t>(i)] = 0;
+  }
+  for (Index i = 0; i < n; ++i)
+    if (renewed(i)) d.debris[static_cast<std::size_t>(i)] = 0;
+  // The new row sees the same positions through new shape functions: its residual changes
+  // without any motion, which is not work done (mode_control.cpp).
+  if (d.settings.mode_control > 0.0)
+    for (Index i = 0; i < n; ++i)
+      if (renewed(i)) d.mode_residual.col(i) = mode_residual(s, d, i);
+  d.renewed_rows += all ? n : static_cast<long>(std::count(rows.begin(), rows.end(), 1));
   d.transpose = transpose_of(d.list, n);
   if (!degenerate.empty()) {
     ++d.degenerate_events;
@@ -134,7 +190,6 @@ void renew_kernel(State& s, Domain& d) {
       d.first_degenerate_time = s.time;
     }
   }
-  d.isolated.assign(static_cast<std::size_t>(n), 0);
   for (const Index i : degenerate)
     d.isolated[static_cast<std::size_t>(i)] = 1;
 
@@ -157,14 +212,16 @@ void renew_kernel(State& s, Domain& d) {
                                d.shape.value[static_cast<std::size_t>(p)] / m;
       d.transpose.gradient.col(t) = d.shape.gradient.col(p);
     }
-    // Characteristic length for the step: the nearest neighbour in the new reference.
-    double nearest = std::numeric_limits<double>::infinity();
-    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
-      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
-      if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
+    if (renewed(i)) {
+      // Characteristic length for the step: the nearest neighbour in the new reference.
+      double nearest = std::numeric_limits<double>::infinity();
+      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+        const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+        if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
+      }
+      d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
+      d.renewal_volume[ii] = d.volume[ii];
     }
-    d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
-    d.renewal_volume[ii] = d.volume[ii];
     const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
                      (mode == Stabilization::momentum_consistent &&
                       !(m > kMinimumSmoothedMassShare * d.mass[ii]));
@@ -190,17 +247,40 @@ void renew_kernel(State& s, Domain& d) {
 // every 15 steps lets it grow about 1.8x per renewal interval and the free-end error reaches
 // 1.7; keeping the reference while the kernel is mildly deformed gives 0.015, as without
 // renewal. Large deformation still renews as often as every SMSTEP steps.
-bool kernel_distorted(const Domain& d) {
-  if (d.settings.kernel_update == 1 || !(d.settings.renewal_strain > 0.0)) return true;
+Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
+                    std::vector<std::uint8_t>& rows) {
+  const Index n = d.count();
+  rows.assign(static_cast<std::size_t>(n), 0);
+  if (d.settings.kernel_update == 1 || !(d.settings.renewal_strain > 0.0)) {
+    std::fill(rows.begin(), rows.end(), 1);
+    return n;
+  }
   const double limit = d.settings.renewal_strain;
-  bool distorted = false;
-#pragma omp parallel for schedule(static) reduction(|| : distorted) if (d.count() > 4096)
-  for (Index i = 0; i < d.count(); ++i) {
+  const Supports support = current_supports(d);
+  const Eigen::Matrix3Xd& x = s.nodes.position;
+  const KernelShape shape = d.settings.shape;
+  Index count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
     const Eigen::Map<const Mat3> f(d.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());
-    distorted = distorted || green.norm() > limit;
+    bool renew = green.norm() > limit || d.debris[ii];
+    // A row is also rebuilt when it holds a pair whose bond broke (Eq. 36), or a neighbour that
+    // has left its support by more than the strain limit: F-hat weights such a far neighbour
+    // so little that it does not show in the Green strain, yet the pair would keep the two
+    // particles connected (across a crack whose bonds at the other rows all broke) for good.
+    const Vec3 xi = x.col(d.nodes[ii]);
+    for (Index p = d.list.offsets[ii]; !renew && p < d.list.offsets[ii + 1]; ++p) {
+      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+      if (j == i) continue;
+      const Vec3 z = support.matrix(j) * (xi - x.col(d.nodes[static_cast<std::size_t>(j)]));
+      renew = unit_distance(shape, z) > 1.0 + limit || (bonds_broke && d.bonds.is_broken(i, j));
+    }
+    rows[ii] = renew ? 1 : 0;
+    count += renew ? 1 : 0;
   }
-  return distorted;
+  return count;
 }
 
 void initialise(State& s, Domain& d) {
@@ -211,6 +291,12 @@ void initialise(State& s, Domain& d) {
     mat(d.reference_deformation, i).setIdentity();
     mat(d.deformation, i).setIdentity();
   }
+  d.reference.resize(3, n);
+  d.debris.assign(static_cast<std::size_t>(n), 0);
+  d.mode_stiffness.assign(static_cast<std::size_t>(n), 0.0);
+  d.mode_residual.setZero(3, n);
+  d.mode_energy.assign(static_cast<std::size_t>(n), 0.0);
+  d.mode_force.setZero(3, n);
   d.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
   d.pinned.assign(static_cast<std::size_t>(n), 0);
   d.length.assign(static_cast<std::size_t>(n), 0.0);

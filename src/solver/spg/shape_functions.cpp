@@ -16,7 +16,10 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
                     const NeighbourList& list, Index i, ShapeFunctions& out) {
   const auto first = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i)]);
   const auto last = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i) + 1]);
-  const double s = support.reach.col(i).mean();
+  // The linear basis in particle I's own support coordinates B_I r: the span, and so phi, is
+  // that of [1, r], but the moment matrix no longer depends on how the support is stretched,
+  // so its conditioning measures how the neighbours are placed, not how the material deformed.
+  const Eigen::Matrix3d to_unit = support.matrix(i);
   const Eigen::Vector3d xi = x.col(i);
   Mat4 m = Mat4::Zero();
   Mat4 dm[3] = {Mat4::Zero(), Mat4::Zero(), Mat4::Zero()};
@@ -24,12 +27,13 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
     const Index j = list.neighbours[p];
     const Eigen::Vector3d r = xi - x.col(j);
     const KernelValue k = kernel(shape, r, Eigen::Matrix3d(support.matrix(j)));
-    const Vec4 h(1.0, r.x() / s, r.y() / s, r.z() / s);
+    Vec4 h;
+    h << 1.0, to_unit * r;
     m.noalias() += k.w * h * h.transpose();
     for (int d = 0; d < 3; ++d) {
-      // d_d (w H H^T) = (d_d w) H H^T + w (e H^T + H e^T) / s, e the unit vector of r_d.
-      Vec4 e = Vec4::Zero();
-      e[d + 1] = 1.0 / s;
+      // d_d (w H H^T) = (d_d w) H H^T + w (e H^T + H e^T), e = d_d H = [0, B_I e_d].
+      Vec4 e;
+      e << 0.0, to_unit.col(d);
       dm[d].noalias() +=
           k.grad[d] * h * h.transpose() + k.w * (e * h.transpose() + h * e.transpose());
     }
@@ -54,14 +58,15 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
   for (std::size_t p = first; p < last; ++p) {
     const Index j = list.neighbours[p];
     const Eigen::Vector3d r = xi - x.col(j);
-    const Vec4 h(1.0, r.x() / s, r.y() / s, r.z() / s);
+    Vec4 h;
+    h << 1.0, to_unit * r;
     const double w = out.value[p];
     const Eigen::Vector3d grad_w = out.gradient.col(static_cast<Eigen::Index>(p));
     const double bh = b.dot(h);
     out.value[p] = w * bh;
     for (int d = 0; d < 3; ++d)
       out.gradient(d, static_cast<Eigen::Index>(p)) =
-          grad_w[d] * bh + w * (db[d].dot(h) + b[d + 1] / s);
+          grad_w[d] * bh + w * (db[d].dot(h) + b.tail<3>().dot(to_unit.col(d)));
   }
   return true;
 }

@@ -24,7 +24,7 @@ struct ShapeFunctions {
 /// Smallest eigenvalue / largest of the scaled moment matrix below which the particle's
 /// neighbourhood is degenerate (all neighbours on a plane or a line): the linear basis cannot
 /// be reproduced there.
-inline constexpr double kMinimumMomentRatio = 1.0e-8;
+inline constexpr double kMinimumMomentRatio = 1.0e-4;
 
 /// Computes the shape functions of every particle. Particles whose moment matrix is degenerate
 /// get zero values and are listed in `degenerate` (ascending), for a diagnostic that names them.

@@ -55,10 +55,20 @@ void absorb_constraints(State& s, Domain& d);
 /// bonds, shape functions, transpose, smoothed masses, pinned set.
 void renew_kernel(State& s, Domain& d);
 
-/// Whether the kernel is due for renewal at a check (every SMSTEP steps): always for the
-/// Eulerian kernel and for renewal_strain 0, else when a particle's Green strain relative to
-/// the reference configuration exceeds renewal_strain.
-bool kernel_distorted(const Domain& d);
+/// The same for the rows flagged in `rows` only (size count()): their neighbours and shape
+/// functions are rebuilt in the current configuration and their F^n takes up F-hat; the other
+/// rows keep their own reference. The transpose, smoothed masses and gather weights, which mix
+/// rows, are rebuilt for all. Each row is consistent in its own reference (sum_J phi_J(X_I) = 1
+/// per row), which is all Eqs. 21-23 need.
+void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
+
+/// The rows due for renewal at a check (every SMSTEP steps), flagged in `rows`; returns how
+/// many. All of them for the Eulerian kernel and for renewal_strain 0; else the particles whose
+/// Green strain relative to their reference exceeds renewal_strain, the rows with a neighbour
+/// that is outside its (current) support by more than that share, and, when bonds broke, the
+/// rows that hold a broken pair.
+Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
+                    std::vector<std::uint8_t>& rows);
 
 /// Bonds of the initial configuration from the first neighbour list (both directions).
 Bonds initial_bonds(const Domain& d);
@@ -75,6 +85,13 @@ struct Pieces {
   Index largest = 0;  ///< particles in the largest
 };
 Pieces count_pieces(const Domain& d);
+
+/// Low-energy-mode control (MSC = 1): residuals and forces g_J of every particle into
+/// d.mode_force (the internal-force gather applies -(D^T g)), their work into d.mode_energy.
+void mode_control_forces(const State& s, Domain& d);
+
+/// r_J = x_J - sum_K phi_K(X_J) x_K over particle j's row (zero for degenerate rows).
+Vec3 mode_residual(const State& s, const Domain& d, Index j);
 
 /// Kinetic energy (1/2 m u-hat^{n-1/2} . u-hat^{n+1/2}) and momentum of the particles whose
 /// velocity is smoothed (the quantities MC-SPG conserves); pinned particles count as nodes.
