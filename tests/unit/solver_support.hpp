@@ -2,11 +2,16 @@
 // Helpers for solver tests: a box mesh as deck text and one-call simulation of a deck.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
+#include "solver/spg/domain.hpp"
 #include "test_support.hpp"
 
 namespace mcdyna::test {
@@ -51,6 +56,47 @@ inline Simulation prepare(const TempDir& dir, const std::string& text) {
 
 inline void run(Simulation& sim, const solver::RunHooks& hooks = {}) {
   sim.result = solver::run(*sim.state, hooks);
+}
+
+/// Replaces the first occurrence of `from` in `text` (which must hold it).
+inline std::string with(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+/// Gaps along z between consecutive layers (particles of equal initial z, mean current z) of
+/// the first SPG part's particles that `keep` selects, in order of initial z.
+template <class Keep>
+std::vector<double> layer_gaps(const solver::State& s, Keep keep) {
+  const solver::spg::Domain& d = s.spg.front();
+  std::map<long, std::pair<double, int>> layers;  // initial z in micrometres -> (sum z, count)
+  for (solver::Index i = 0; i < d.count(); ++i) {
+    if (!keep(i)) continue;
+    auto& l = layers[std::lround(1000.0 * d.initial_position(2, i))];
+    l.first += s.nodes.position(2, d.nodes[static_cast<std::size_t>(i)]);
+    ++l.second;
+  }
+  std::vector<double> mean, gaps;
+  for (const auto& [z, l] : layers)
+    mean.push_back(l.first / l.second);
+  for (std::size_t k = 1; k < mean.size(); ++k)
+    gaps.push_back(mean[k] - mean[k - 1]);
+  return gaps;
+}
+
+/// Layers that pair up show as gaps alternating long-short: the depth of the deepest local
+/// extremum of the gap sequence (the smaller of its two steps), 0 for a smooth (monotone or
+/// single-humped) sequence. Gaps skip_first..skip_last are left out (e.g. a notch).
+inline double deepest_extremum(const std::vector<double>& g, std::size_t skip_first = 1,
+                               std::size_t skip_last = 0) {
+  double worst = 0.0;
+  for (std::size_t k = 1; k + 1 < g.size(); ++k) {
+    if (k >= skip_first && k <= skip_last) continue;
+    const double below = g[k] - g[k - 1], above = g[k] - g[k + 1];
+    if (below * above > 0.0) worst = std::max(worst, std::min(std::abs(below), std::abs(above)));
+  }
+  return worst;
 }
 
 }  // namespace mcdyna::test

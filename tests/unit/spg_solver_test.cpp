@@ -5,7 +5,6 @@
 #include <omp.h>
 
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <vector>
 
@@ -321,30 +320,6 @@ TEST_CASE("MC-SPG bond failure: a notched bar pulled apart breaks into pieces, m
   CHECK(stale == 0);
 }
 
-// Replaces the first occurrence of `from` in `text` (which must hold it).
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
-
-// Gap between consecutive particle layers (by initial z) along the bar, in the current state.
-std::vector<double> layer_gaps(const solver::State& s) {
-  const spg::Domain& d = s.spg.front();
-  std::map<long, std::pair<double, int>> layers;  // initial z in micrometres -> (sum z, count)
-  for (Index i = 0; i < d.count(); ++i) {
-    auto& l = layers[std::lround(1000.0 * d.initial_position(2, i))];
-    l.first += s.nodes.position(2, d.nodes[static_cast<std::size_t>(i)]);
-    ++l.second;
-  }
-  std::vector<double> mean, gaps;
-  for (const auto& [z, l] : layers)
-    mean.push_back(l.first / l.second);
-  for (std::size_t k = 1; k < mean.size(); ++k)
-    gaps.push_back(mean[k] - mean[k - 1]);
-  return gaps;
-}
-
 TEST_CASE("MSC 1: low-energy-mode control keeps the layers beside a neck from pairing up") {
   // The notched bar of decks/fracture/tension_spg_h1.k without bond failure, to 0.25 ms: the
   // net section necks; the gaps between particle layers should vary smoothly beside it.
@@ -359,17 +334,9 @@ TEST_CASE("MSC 1: low-energy-mode control keeps the layers beside a neck from pa
     d.settings.mode_control = control;
     run(sim);
     REQUIRE(sim.result.reason == solver::StopReason::end_time);
-    // Pairing shows as gaps that alternate long-short: the depth of the deepest local
-    // extremum of the gap sequence (a smooth neck has none), away from the two gaps at the
-    // notch layer and their neighbours.
-    const std::vector<double> g = layer_gaps(*sim.state);
-    double worst = 0.0;
-    for (std::size_t k = 1; k + 1 < g.size(); ++k) {
-      if (k + 2 >= g.size() / 2 && k <= g.size() / 2 + 1) continue;
-      const double below = g[k] - g[k - 1], above = g[k] - g[k + 1];
-      if (below * above > 0.0) worst = std::max(worst, std::min(std::abs(below), std::abs(above)));
-    }
-    return worst;
+    // Away from the two gaps at the notch layer and their neighbours.
+    const std::vector<double> g = layer_gaps(*sim.state, [](Index) { return true; });
+    return deepest_extremum(g, g.size() / 2 - 2, g.size() / 2 + 1);
   };
   const double plain = alternation(0.0), controlled = alternation(spg::kModeControl);
   MESSAGE("layer-gap alternation (mm): MSC 0 ", plain, ", MSC 1 ", controlled);

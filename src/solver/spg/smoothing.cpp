@@ -24,47 +24,15 @@ namespace {
 // from x_I to x_J, equal and opposite: linear and angular momentum are kept, translation and
 // rigid rotation are not damped (their relative velocity is normal to e), and
 // k = |PDAMP| mu_IJ / n_I (mu the reduced mass, n_I the neighbours of I) removes about |PDAMP|
-// of I's normal velocity difference to its neighbours per step. Returns the energy removed.
-double damp(const State& s, Domain& d) {
-  const double alpha = d.settings.damping;
-  const Index n = d.count();
-  const Eigen::Matrix3Xd& x = s.nodes.position;
-  const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
-  // The impulse of each row pair (I, J), once, from the velocities before damping.
-  Eigen::Matrix3Xd impulse(3, pairs);
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
-    const bool free_i = d.pinned[ii] == 0;
-    const double share = alpha / std::max<Index>(d.list.count(i) - 1, 1);
-    const Vec3 xi = x.col(d.nodes[ii]);
-    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
-      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
-      const auto jj = static_cast<std::size_t>(j);
-      if (j == i || !free_i || d.pinned[jj]) {
-        impulse.col(p).setZero();
-        continue;
-      }
-      const Vec3 e = (x.col(d.nodes[jj]) - xi).normalized();
-      const double mu = d.mass[ii] * d.mass[jj] / (d.mass[ii] + d.mass[jj]);
-      impulse.col(p) = share * mu * (d.unsmoothed.col(j) - d.unsmoothed.col(i)).dot(e) * e;
-    }
-  }
-  double removed = 0.0;
-#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
-    if (d.pinned[ii]) continue;
-    Vec3 total = Vec3::Zero();
-    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
-      total += impulse.col(p);
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
-      total -= impulse.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
-    const Vec3 before = d.unsmoothed.col(i);
-    d.unsmoothed.col(i) += total / d.mass[ii];
-    removed += 0.5 * d.mass[ii] * (before.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
-  }
-  return removed;
+// of I's normal velocity difference to its neighbours per step. The impulses are taken from
+// the velocities of the previous half step, so they are computed in the same pass over the
+// rows as the velocity update (the whole update reads only old velocities).
+Vec3 pair_impulse(const State& s, const Domain& d, double share, Index i, Index j) {
+  const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
+  const Vec3 e =
+      (s.nodes.position.col(d.nodes[jj]) - s.nodes.position.col(d.nodes[ii])).normalized();
+  const double mu = d.mass[ii] * d.mass[jj] / (d.mass[ii] + d.mass[jj]);
+  return share * mu * (d.unsmoothed_previous.col(j) - d.unsmoothed_previous.col(i)).dot(e) * e;
 }
 
 }  // namespace
@@ -74,6 +42,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   Nodes& nd = s.nodes;
   const Index n = d.count();
   const Stabilization mode = d.settings.stabilization;
+  const bool mc = mode == Stabilization::momentum_consistent;
+  const bool damping = d.settings.damping > 0.0 && mode != Stabilization::none;
   d.unsmoothed_previous = d.unsmoothed;
   // Accelerations of the smoothed particles (zero for pinned ones).
   Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n);
@@ -82,49 +52,81 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
       if (d.pinned[ii]) continue;
-      const double m =
-          mode == Stabilization::momentum_consistent ? d.smoothed_mass[ii] : d.mass[ii];
-      acc.col(i) = nd.force.col(d.nodes[ii]) / m;
+      acc.col(i) = nd.force.col(d.nodes[ii]) / (mc ? d.smoothed_mass[ii] : d.mass[ii]);
       nd.acceleration.col(d.nodes[ii]) = acc.col(i);
     }
   }
-  if (mode == Stabilization::momentum_consistent) {
+  // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), plus the
+  // PDAMP impulses of row I's pairs; a pinned particle takes its share of the smoothed
+  // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
+  const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
+  Eigen::Matrix3Xd impulse, row_impulse;
+  if (damping) {
+    impulse.resize(3, pairs);
+    row_impulse.setZero(3, n);
+  }
+  if (mode != Stabilization::none) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      Vec3 sum = Vec3::Zero();  // sum_J phi_J(X_I) a_J  (Eqs. 29-30)
+      const bool free_i = d.pinned[ii] == 0;
+      const double share =
+          damping ? d.settings.damping / std::max<Index>(d.list.count(i) - 1, 1) : 0.0;
+      Vec3 sum = Vec3::Zero(), own = Vec3::Zero();
       for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
-        sum += d.shape.value[pp] * acc.col(d.list.neighbours[pp]);
+        const Index j = d.list.neighbours[pp];
+        if (mc) sum += d.shape.value[pp] * acc.col(j);
+        if (!damping) continue;
+        if (j == i || !free_i || d.pinned[static_cast<std::size_t>(j)]) {
+          impulse.col(p).setZero();
+          continue;
+        }
+        impulse.col(p) = pair_impulse(s, d, share, i, j);
+        own += impulse.col(p);
       }
-      if (!d.pinned[ii]) {
-        d.unsmoothed.col(i) += dt * sum;
+      if (!mc) sum = acc.col(i);
+      if (free_i) {
+        d.unsmoothed.col(i) += dt * sum + own / d.mass[ii];
+        if (damping) row_impulse.col(i) = own;
       } else {
         const auto node = static_cast<std::size_t>(d.nodes[ii]);
-        nd.velocity.col(d.nodes[ii]) +=
-            dt * d.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
+        if (mc)
+          nd.velocity.col(d.nodes[ii]) +=
+              dt * d.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
+        d.unsmoothed.col(i) = nd.velocity.col(d.nodes[ii]);
       }
     }
-  } else if (mode == Stabilization::direct) {
-    for (Index i = 0; i < n; ++i)
-      if (!d.pinned[static_cast<std::size_t>(i)]) d.unsmoothed.col(i) += dt * acc.col(i);
-  }
-  if (d.settings.damping > 0.0 && mode != Stabilization::none) d.damping_energy += damp(s, d);
-
-  // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7).
-  // A pinned particle enters its neighbours' sums with its own (node) velocity.
-  for (Index i = 0; i < n; ++i)
-    if (d.pinned[static_cast<std::size_t>(i)])
+  } else {
+    for (Index i = 0; i < n; ++i)  // plain nodal integration: every particle is pinned
       d.unsmoothed.col(i) = nd.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
+  }
+  // PDAMP, the other end of each pair: I receives minus the impulses of the pairs (J, I).
+  if (damping) {
+    double removed = 0.0;
+#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
+    for (Index i = 0; i < n; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      if (d.pinned[ii]) continue;
+      Vec3 total = row_impulse.col(i);
+      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
+        total -= impulse.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
+      const Vec3 undamped = d.unsmoothed.col(i) - row_impulse.col(i) / d.mass[ii];
+      d.unsmoothed.col(i) = undamped + total / d.mass[ii];
+      removed += 0.5 * d.mass[ii] * (undamped.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
+    }
+    d.damping_energy += removed;
+  }
+
+  // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7),
+  // from u-hat only (which holds the pinned particles' node velocities).
   const Eigen::Matrix3Xd& source = d.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
-  // Written into d.smoothed: the gather reads only u-hat (which holds the pinned velocities).
-  Eigen::Matrix3Xd& smoothed = d.smoothed;
 #pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     Vec3 u = source.col(i);
-    if (!d.pinned[ii] && mode == Stabilization::momentum_consistent) {
+    if (!d.pinned[ii] && mc) {
       u.setZero();
       for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
         const auto tt = static_cast<std::size_t>(t);
@@ -137,13 +139,9 @@ Index advance_velocities(State& s, Domain& d, double dt) {
         u += d.shape.value[pp] * source.col(d.list.neighbours[pp]);
       }
     }
-    smoothed.col(i) = u;
+    d.smoothed.col(i) = u;
+    nd.velocity.col(d.nodes[ii]) = u;
     if (!std::isfinite(u.sum())) bad = std::min(bad, d.nodes[ii]);
-  }
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
-    nd.velocity.col(d.nodes[ii]) = smoothed.col(i);
   }
   d.times.smoothing +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
