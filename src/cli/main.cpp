@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--spg-renewal-strain", run.spg_renewal_strain,
                    "KERNEL 0 SPG parts: at an SMSTEP check, renew the kernel of the particles "
-                   "whose Green strain since their last renewal exceeds this (default 0.1; 0: "
-                   "all particles at every check)")
+                   "whose Green strain since their last renewal exceeds this (a fifth of it "
+                   "under compression; default 0.1; 0: all particles at every check)")
       ->check(CLI::NonNegativeNumber);
 
   run_cmd

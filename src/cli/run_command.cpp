@@ -147,8 +147,10 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
                st.kernel_update == 1 || !(st.renewal_strain > 0.0)
                    ? std::string(" and renewed at each check")
-                   : fmt::format(" and renewed per particle at Green strain {:g} or broken bonds",
-                                 st.renewal_strain),
+                   : fmt::format(" and renewed per particle at Green strain {:g} ({:g} under "
+                                 "compression) or broken bonds",
+                                 st.renewal_strain,
+                                 solver::spg::kCompressionRenewalShare * st.renewal_strain),
                st.bond_failure
                    ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
                    : std::string("off"));

@@ -72,17 +72,17 @@ TEST_CASE("MC-SPG Taylor bar, first 10 us: energy kept, FE shortening, smooth ax
           " mm (MSC 1: ", controlled.shortening, "); energy ratio ", paper.energy_ratio, " (",
           controlled.energy_ratio, "); axis pairing ", paper.axis_pairing, " mm (",
           controlled.axis_pairing, ")");
-  // Measured: FE 3.4944 mm, MC-SPG 3.5001 mm (+0.16 %), MSC 1 3.5036 mm; energy ratio 1.00018
-  // both; deepest long-short alternation of the axis gaps 0.073 mm with MSC 0 (gaps 0.18 /
-  // 0.30 / 0.23 mm), none with MSC 1. The final lengths of the full runs differ by 0.8 %
-  // (15.93 vs 16.06 mm, 1.7 % of the shortening): 2 % of the shortening bounds the early one.
+  // Measured: FE 3.4944 mm, MC-SPG 3.4980 mm (+0.10 %), MSC 1 3.5021 mm; energy ratio 1.00022
+  // and 1.00007. The final lengths of the full runs differ from FE's by up to 3.6 % (15.49 vs
+  // 16.06 mm, 22 % of the shortening); early on, 2 % of the shortening bounds the difference.
   CHECK(std::abs(paper.shortening - fe_shortening) < 0.02 * fe_shortening);
   CHECK(std::abs(controlled.shortening - fe_shortening) < 0.02 * fe_shortening);
   CHECK(std::abs(paper.energy_ratio - 1.0) < 1e-3);
   CHECK(std::abs(controlled.energy_ratio - 1.0) < 1e-3);
-  // The alternation the metric is there to catch (MSC 0: the paper's scheme alone), and none
-  // with the low-energy-mode control.
-  CHECK(paper.axis_pairing > 0.02);
+  // No long-short alternation of the axis gaps with either (measured 0 and 0); with every row
+  // renewed at 0.1 strain also under compression, MSC 0 showed 0.073 mm (gaps 0.18 / 0.30 /
+  // 0.23 mm) and MSC 1 none.
+  CHECK(paper.axis_pairing < 0.01);
   CHECK(controlled.axis_pairing < 0.01);
 }
 

@@ -265,7 +265,13 @@ Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
     const auto ii = static_cast<std::size_t>(i);
     const Eigen::Map<const Mat3> f(d.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());
-    bool renew = green.norm() > limit || d.debris[ii];
+    // Under compression (pressure > 0) the tensile instability that argues against renewing
+    // (kernel_distorted's note) does not arise, and compression is what crowds a Lagrangian
+    // kernel's neighbours together: renew there at a fifth of the limit.
+    const double strain = green.norm();
+    bool renew = strain > limit ||
+                 (d.pressure[ii] > 0.0 && strain > kCompressionRenewalShare * limit) ||
+                 d.debris[ii];
     // A row is also rebuilt when it holds a pair whose bond broke (Eq. 36), or a neighbour that
     // has left its support by more than the strain limit: F-hat weights such a far neighbour
     // so little that it does not show in the Green strain, yet the pair would keep the two

@@ -64,9 +64,10 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
 
 /// The rows due for renewal at a check (every SMSTEP steps), flagged in `rows`; returns how
 /// many. All of them for the Eulerian kernel and for renewal_strain 0; else the particles whose
-/// Green strain relative to their reference exceeds renewal_strain, the rows with a neighbour
-/// that is outside its (current) support by more than that share, and, when bonds broke, the
-/// rows that hold a broken pair.
+/// Green strain relative to their reference exceeds renewal_strain (a fifth of it when the
+/// particle is under compression), the rows with a neighbour that is outside its (current)
+/// support by more than that share, debris rows, and, when bonds broke, the rows that hold a
+/// broken pair.
 Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
                     std::vector<std::uint8_t>& rows);
 
