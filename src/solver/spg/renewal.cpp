@@ -156,12 +156,18 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   }
   d.support = current_supports(d);
   std::vector<Index> degenerate;
+  std::vector<std::uint8_t> damaged;  // particles that lost bonds: the stricter conditioning
+  if (d.broken_bonds > 0) {
+    damaged.assign(static_cast<std::size_t>(n), 0);
+    for (Index i = 0; i < n; ++i)
+      damaged[static_cast<std::size_t>(i)] = d.bonds.damage(i) > 0.0 ? 1 : 0;
+  }
   if (all) {
     d.list = find_neighbours(x, d.support, d.settings.shape);
     remove_broken_pairs(d, d.list);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate);
+    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate, damaged);
     d.isolated.assign(static_cast<std::size_t>(n), 0);
   } else {
     NeighbourList fresh = find_neighbours(x, d.support, d.settings.shape, {}, rows);
@@ -169,7 +175,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
     const ShapeFunctions fresh_shape =
-        shape_functions(x, d.support, d.settings.shape, fresh, degenerate);
+        shape_functions(x, d.support, d.settings.shape, fresh, degenerate, damaged);
     merge_rows(d, fresh, fresh_shape, rows);
     for (Index i = 0; i < n; ++i)
       if (renewed(i)) d.isolated[static_cast<std::size_t>(i)] = 0;

@@ -13,7 +13,7 @@ using Mat4 = Eigen::Matrix4d;
 
 // Shape functions of one particle; false when its moment matrix is degenerate.
 bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
-                    const NeighbourList& list, Index i, ShapeFunctions& out) {
+                    const NeighbourList& list, Index i, double minimum_ratio, ShapeFunctions& out) {
   const auto first = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i)]);
   const auto last = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i) + 1]);
   // The linear basis in particle I's own support coordinates B_I r: the span, and so phi, is
@@ -43,7 +43,7 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
   // Degenerate when the neighbours do not span 3-D (ratio of extreme eigenvalues).
   const Eigen::SelfAdjointEigenSolver<Mat4> eig(m, Eigen::EigenvaluesOnly);
   const double lo = eig.eigenvalues()[0], hi = eig.eigenvalues()[3];
-  if (!(hi > 0.0) || !(lo > kMinimumMomentRatio * hi)) {
+  if (!(hi > 0.0) || !(lo > minimum_ratio * hi)) {
     for (std::size_t p = first; p < last; ++p) {
       out.value[p] = 0.0;
       out.gradient.col(static_cast<Eigen::Index>(p)).setZero();
@@ -75,7 +75,8 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
 
 ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
-                               std::vector<Index>& degenerate) {
+                               std::vector<Index>& degenerate,
+                               const std::vector<std::uint8_t>& damaged) {
   ShapeFunctions out;
   const std::size_t pairs = list.neighbours.size();
   out.value.assign(pairs, 0.0);
@@ -84,7 +85,12 @@ ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& suppor
   std::vector<std::uint8_t> bad(static_cast<std::size_t>(std::max<Index>(n, 0)), 0);
 #pragma omp parallel for schedule(dynamic, 256) if (n > 2048)
   for (Index i = 0; i < n; ++i)
-    if (list.count(i) > 0 && !particle_shape(x, support, shape, list, i, out))
+    if (list.count(i) > 0 &&
+        !particle_shape(x, support, shape, list, i,
+                        !damaged.empty() && damaged[static_cast<std::size_t>(i)]
+                            ? kMinimumDamagedMomentRatio
+                            : kMinimumMomentRatio,
+                        out))
       bad[static_cast<std::size_t>(i)] = 1;
   degenerate.clear();
   for (Index i = 0; i < n; ++i)

@@ -21,15 +21,24 @@ struct ShapeFunctions {
   Eigen::Matrix3Xd gradient;  ///< d phi_J / dx at X_I per neighbour pair
 };
 
-/// Smallest eigenvalue / largest of the scaled moment matrix below which the particle's
-/// neighbourhood is degenerate (all neighbours on a plane or a line): the linear basis cannot
-/// be reproduced there.
-inline constexpr double kMinimumMomentRatio = 1.0e-4;
+/// Smallest eigenvalue / largest of the moment matrix (basis in support coordinates) below
+/// which the particle's neighbourhood is degenerate (all neighbours on a plane or a line): the
+/// linear basis cannot be reproduced there.
+inline constexpr double kMinimumMomentRatio = 1.0e-8;
+
+/// The same for a particle that has lost bonds (Eq. 36). Intact lattices sit at 0.028, the
+/// impact face of the Taylor bar goes down to 5e-4 and below at irregular mesh points (flagging
+/// those squeezes them out along the wall), while the notch layer of the h = 0.5 bar, left with
+/// neighbours in its own plane once its bonds to both halves broke, came in at 1e-6 to 1e-5 and
+/// its gradients blew up (plastic strain 24 within 20 cycles).
+inline constexpr double kMinimumDamagedMomentRatio = 1.0e-4;
 
 /// Computes the shape functions of every particle. Particles whose moment matrix is degenerate
 /// get zero values and are listed in `degenerate` (ascending), for a diagnostic that names them.
+/// `damaged` (size N or empty) flags the particles held to kMinimumDamagedMomentRatio.
 ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
-                               std::vector<Index>& degenerate);
+                               std::vector<Index>& degenerate,
+                               const std::vector<std::uint8_t>& damaged = {});
 
 }  // namespace mcdyna::solver::spg
