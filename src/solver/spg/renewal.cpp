@@ -272,7 +272,7 @@ Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
     const Eigen::Map<const Mat3> f(d.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());
     // Under compression (pressure > 0) the tensile instability that argues against renewing
-    // (kernel_distorted's note) does not arise, and compression is what crowds a Lagrangian
+    // (the note above) does not arise, and compression is what crowds a Lagrangian
     // kernel's neighbours together: renew there at a fifth of the limit.
     const double strain = green.norm();
     bool renew = strain > limit ||
