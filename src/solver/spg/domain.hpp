@@ -102,9 +102,8 @@ struct Domain {
   Eigen::Matrix3Xd initial_position;  ///< X, for bond stretch (Eq. 35)
   Eigen::Matrix3Xd initial_support;   ///< DX/DY/DZ x spacing
 
-  // Kernel in the current reference configuration (renewed every `renewal_interval` steps).
-  Eigen::Matrix3Xd reference;  ///< X-hat
-  Supports support;            ///< in the reference configuration
+  // Kernel: each row in its own reference configuration (renewed per row, renewal.cpp).
+  Supports support;  ///< at the last renewal or check (S = (F A0^2 F^T)^(1/2), Eq. 34)
   Eigen::Matrix<double, 9, Eigen::Dynamic> reference_deformation;  ///< F^n (Eq. 32), col-major
   NeighbourList list;
   ShapeFunctions shape;

@@ -36,23 +36,24 @@ Vec3 mode_residual(const State& s, const Domain& d, Index j) {
   return r;
 }
 
-void mode_control_forces(const State& s, Domain& d) {
-  const double c = d.settings.mode_control;
-  const Index n = d.count();
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index j = 0; j < n; ++j) {
-    const auto jj = static_cast<std::size_t>(j);
-    if (d.isolated[jj] || d.debris[jj]) {  // no row to measure with: no force, energy kept
-      d.mode_force.col(j).setZero();
-      continue;
-    }
-    const Vec3 r = mode_residual(s, d, j);
-    const Vec3 g = c * d.mode_stiffness[jj] * r;
-    // Work of the forces from the last residual to this one (midpoint rule).
-    d.mode_energy[jj] += 0.5 * (d.mode_force.col(j) + g).dot(r - d.mode_residual.col(j));
-    d.mode_residual.col(j) = r;
-    d.mode_force.col(j) = g;
+void mode_control_update(const State& s, Domain& d, Index j) {
+  const auto jj = static_cast<std::size_t>(j);
+  if (d.isolated[jj] || d.debris[jj]) {  // no row to measure with: no force, energy kept
+    d.mode_force.col(j).setZero();
+    return;
   }
+  const Vec3 r = mode_residual(s, d, j);
+  const Vec3 g = d.settings.mode_control * d.mode_stiffness[jj] * r;
+  // Work of the forces from the last residual to this one (midpoint rule).
+  d.mode_energy[jj] += 0.5 * (d.mode_force.col(j) + g).dot(r - d.mode_residual.col(j));
+  d.mode_residual.col(j) = r;
+  d.mode_force.col(j) = g;
+}
+
+void mode_control_forces(const State& s, Domain& d) {
+#pragma omp parallel for schedule(static, 256) if (d.count() > 512)
+  for (Index j = 0; j < d.count(); ++j)
+    mode_control_update(s, d, j);
 }
 
 }  // namespace mcdyna::solver::spg

@@ -142,6 +142,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   Index inverted = std::numeric_limits<Index>::max();
   Index non_finite = std::numeric_limits<Index>::max();
   long released = 0;
+  const bool control = d.settings.mode_control > 0.0;
 #pragma omp parallel if (n > 512) reduction(+ : released)
   {
     double local_best = std::numeric_limits<double>::infinity();
@@ -151,6 +152,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 #pragma omp for schedule(static, 128) nowait
     for (Index j = 0; j < n; ++j) {
       const Outcome o = particle_update(s, d, mat, j, step);
+      if (control) mode_control_update(s, d, j);
       released += o.released ? 1 : 0;
       if (o.inverted) {
         local_inverted = std::min(local_inverted, j);
@@ -176,10 +178,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
   start = Clock::now();
 
-  if (d.settings.mode_control > 0.0) mode_control_forces(s, d);
   // Internal forces, gathered per particle over the pairs (J, I) of its transpose, with the
   // mode-control force -(g_I - sum_J phi_I(X_J) g_J) = -(D^T g)_I (mode_control.cpp).
-  const bool control = d.settings.mode_control > 0.0;
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);

@@ -152,9 +152,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     const Mat3 total = mat(d.deformation, i) * mat(d.reference_deformation, i);
     mat(d.reference_deformation, i) = total;
     mat(d.deformation, i).setIdentity();
-    d.reference.col(i) = x.col(i);
   }
-  d.support = current_supports(d);
+  if (all) d.support = current_supports(d);  // a partial renewal has them from rows_to_renew
   std::vector<Index> degenerate;
   std::vector<std::uint8_t> damaged;  // particles that lost bonds: the stricter conditioning
   if (d.broken_bonds > 0) {
@@ -253,16 +252,19 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
 // every 15 steps lets it grow about 1.8x per renewal interval and the free-end error reaches
 // 1.7; keeping the reference while the kernel is mildly deformed gives 0.015, as without
 // renewal. Large deformation still renews as often as every SMSTEP steps.
-Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
-                    std::vector<std::uint8_t>& rows) {
+Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
   rows.assign(static_cast<std::size_t>(n), 0);
   if (d.settings.kernel_update == 1 || !(d.settings.renewal_strain > 0.0)) {
     std::fill(rows.begin(), rows.end(), 1);
     return n;
   }
+  const auto start = Clock::now();
   const double limit = d.settings.renewal_strain;
-  const Supports support = current_supports(d);
+  // Renewing folds F-hat into F^n, which leaves F-hat F^n and so these supports as they are:
+  // the partial renewal that may follow uses them.
+  d.support = current_supports(d);
+  const Supports& support = d.support;
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const KernelShape shape = d.settings.shape;
   Index count = 0;
@@ -292,6 +294,7 @@ Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
     rows[ii] = renew ? 1 : 0;
     count += renew ? 1 : 0;
   }
+  d.times.neighbours += seconds_since(start);
   return count;
 }
 
@@ -303,7 +306,6 @@ void initialise(State& s, Domain& d) {
     mat(d.reference_deformation, i).setIdentity();
     mat(d.deformation, i).setIdentity();
   }
-  d.reference.resize(3, n);
   d.debris.assign(static_cast<std::size_t>(n), 0);
   d.mode_stiffness.assign(static_cast<std::size_t>(n), 0.0);
   d.mode_residual.setZero(3, n);

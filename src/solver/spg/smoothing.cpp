@@ -56,9 +56,10 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       nd.acceleration.col(d.nodes[ii]) = acc.col(i);
     }
   }
-  // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), plus the
-  // PDAMP impulses of row I's pairs; a pinned particle takes its share of the smoothed
-  // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
+  // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
+  // PDAMP impulses of row I's pairs (applied with the other ends below); a pinned particle takes
+  // its share of the smoothed accelerations into its one (node) velocity, which is also its u-hat
+  // in the smoothing.
   const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
   Eigen::Matrix3Xd impulse, row_impulse;
   if (damping) {
@@ -87,7 +88,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       }
       if (!mc) sum = acc.col(i);
       if (free_i) {
-        d.unsmoothed.col(i) += dt * sum + own / d.mass[ii];
+        d.unsmoothed.col(i) += dt * sum;
         if (damping) row_impulse.col(i) = own;
       } else {
         const auto node = static_cast<std::size_t>(d.nodes[ii]);
@@ -111,8 +112,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       Vec3 total = row_impulse.col(i);
       for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
         total -= impulse.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
-      const Vec3 undamped = d.unsmoothed.col(i) - row_impulse.col(i) / d.mass[ii];
-      d.unsmoothed.col(i) = undamped + total / d.mass[ii];
+      const Vec3 undamped = d.unsmoothed.col(i);
+      d.unsmoothed.col(i) += total / d.mass[ii];
       removed += 0.5 * d.mass[ii] * (undamped.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
     }
     d.damping_energy += removed;

@@ -55,8 +55,9 @@ void absorb_constraints(State& s, Domain& d);
 /// bonds, shape functions, transpose, smoothed masses, pinned set.
 void renew_kernel(State& s, Domain& d);
 
-/// The same for the rows flagged in `rows` only (size count()): their neighbours and shape
-/// functions are rebuilt in the current configuration and their F^n takes up F-hat; the other
+/// The same for the rows flagged in `rows` only (size count()), right after rows_to_renew, whose
+/// current supports it uses: their neighbours and shape functions are rebuilt in the current
+/// configuration and their F^n takes up F-hat; the other
 /// rows keep their own reference. The transpose, smoothed masses and gather weights, which mix
 /// rows, are rebuilt for all. Each row is consistent in its own reference (sum_J phi_J(X_I) = 1
 /// per row), which is all Eqs. 21-23 need.
@@ -67,9 +68,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
 /// Green strain relative to their reference exceeds renewal_strain (a fifth of it when the
 /// particle is under compression), the rows with a neighbour that is outside its (current)
 /// support by more than that share, debris rows, and, when bonds broke, the rows that hold a
-/// broken pair.
-Index rows_to_renew(const State& s, const Domain& d, bool bonds_broke,
-                    std::vector<std::uint8_t>& rows);
+/// broken pair. Measuring brings d.support to the current configuration.
+Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std::uint8_t>& rows);
 
 /// Bonds of the initial configuration from the first neighbour list (both directions).
 Bonds initial_bonds(const Domain& d);
@@ -87,8 +87,12 @@ struct Pieces {
 };
 Pieces count_pieces(const Domain& d);
 
-/// Low-energy-mode control (MSC = 1): residuals and forces g_J of every particle into
-/// d.mode_force (the internal-force gather applies -(D^T g)), their work into d.mode_energy.
+/// Low-energy-mode control (MSC = 1): residual and force g_J of particle j into d.mode_force
+/// (the internal-force gather applies -(D^T g)), their work into d.mode_energy. Run by the
+/// stress pass right after the particle's stress update (its row is then in cache).
+void mode_control_update(const State& s, Domain& d, Index j);
+
+/// The same for every particle.
 void mode_control_forces(const State& s, Domain& d);
 
 /// r_J = x_J - sum_K phi_K(X_J) x_K over particle j's row (zero for degenerate rows).
