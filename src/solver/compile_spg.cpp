@@ -133,7 +133,7 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
     const auto n = dom.nodes.size();
     dom.initial_volume = gen.volume;
     dom.volume = gen.volume;
-    dom.initial_support = spg::support_sizes(
+    dom.initial_support = spg::support_matrices(
         gen, Vec3(sec->spg.support_scale[0], sec->spg.support_scale[1], sec->spg.support_scale[2]));
     dom.surface = surface_flags(elements, dom.nodes);
     dom.initial_position.resize(3, static_cast<Eigen::Index>(n));

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -183,14 +184,57 @@ TEST_CASE("particles from hexahedra: lumped volume, spacing per axis from the in
   CHECK(p.volume[static_cast<std::size_t>(id(0, 0, 0))] == doctest::Approx(0.0625));
   for (Eigen::Index i = 0; i < p.spacing.cols(); ++i)  // edges of 1 in x and y, 0.5 in z
     CHECK((p.spacing.col(i) - Eigen::Vector3d(1.0, 1.0, 0.5)).norm() == doctest::Approx(0.0));
-  const Eigen::Matrix3Xd a = support_sizes(p, Eigen::Vector3d(1.5, 1.6, 1.7));
-  CHECK(a(2, 0) == doctest::Approx(0.85));
-  // A mesh turned by 45 degrees about z: the x and y extents of the diagonal edges.
+  // DX, DY, DZ differ: the global axes, half-sizes DX/DY/DZ x spacing.
+  const auto a = support_matrices(p, Eigen::Vector3d(1.5, 1.6, 1.7));
+  CHECK(Eigen::Map<const Eigen::Matrix3d>(a.col(0).data())
+            .isApprox(Eigen::Vector3d(1.5, 1.6, 0.85).asDiagonal().toDenseMatrix()));
+  // A mesh along x, y, z keeps the global frame, also with equal DX, DY, DZ.
+  const auto b = support_matrices(p, Eigen::Vector3d::Constant(1.5));
+  for (Eigen::Index i = 0; i < b.cols(); ++i)
+    CHECK(Eigen::Map<const Eigen::Matrix3d>(b.col(i).data())
+              .isApprox(Eigen::Vector3d(1.5, 1.5, 0.75).asDiagonal().toDenseMatrix()));
+  // The mesh turned by 45 degrees about z: the x and y extents of its edges shrink to 0.71.
   const double c = std::sqrt(0.5);
   Eigen::Matrix3d turn;
   turn << c, -c, 0.0, c, c, 0.0, 0.0, 0.0, 1.0;
   const GeneratedParticles q = particles_from_hexahedra(turn * x, hexes, {0.5, 0.5});
   CHECK((q.spacing.col(0) - Eigen::Vector3d(c, c, 0.5)).norm() == doctest::Approx(0.0));
+}
+
+TEST_CASE("particles from hexahedra: the support turns with a turned mesh") {
+  // 3 x 3 x 1 cells of 1 x 2 x 1 turned by 30 degrees about z: the four nodes inside the
+  // square in plane (4 elements around them) measure the spacing along the mesh lines, (1, 2,
+  // 1), and their support turns with the mesh: A0 = T diag(1.5, 3, 1.5) T^T.
+  const double angle = std::acos(-1.0) / 6.0;
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  Eigen::Matrix3Xd x(3, 32);
+  auto id = [](int i, int j, int k) { return static_cast<Index>(i + 4 * (j + 4 * k)); };
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        x.col(id(i, j, k)) = turn * Eigen::Vector3d(i, 2 * j, k);
+  std::vector<std::array<Index, 8>> hexes;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      hexes.push_back({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0),
+                       id(i, j, 1), id(i + 1, j, 1), id(i + 1, j + 1, 1), id(i, j + 1, 1)});
+  const GeneratedParticles p =
+      particles_from_hexahedra(x, hexes, std::vector<double>(hexes.size(), 1.0));
+  const auto a = support_matrices(p, Eigen::Vector3d::Constant(1.5));
+  const Eigen::Matrix3d expected =
+      turn * Eigen::Vector3d(1.5, 3.0, 1.5).asDiagonal() * turn.transpose();
+  for (int k = 0; k < 2; ++k)
+    for (int j = 1; j < 3; ++j)
+      for (int i = 1; i < 3; ++i) {
+        const Eigen::Index col = id(i, j, k);
+        Eigen::Vector3d sorted = p.frame_spacing.col(col);  // the frame's axes in any order
+        std::sort(sorted.begin(), sorted.end());
+        CHECK((sorted - Eigen::Vector3d(1.0, 1.0, 2.0)).norm() < 1e-12);
+        CHECK((Eigen::Map<const Eigen::Matrix3d>(a.col(col).data()) - expected).norm() < 1e-12);
+        // Along x the edges reach only 2 sin 30 = 1 (the y edge): the global box is smaller.
+        CHECK(p.spacing(0, col) == doctest::Approx(2.0 * std::sin(angle)));
+      }
 }
 
 }  // namespace mcdyna::solver::spg

@@ -100,7 +100,8 @@ struct Domain {
   std::vector<std::uint8_t> surface;
   std::vector<double> initial_volume, volume;
   Eigen::Matrix3Xd initial_position;  ///< X, for bond stretch (Eq. 35)
-  Eigen::Matrix3Xd initial_support;   ///< DX/DY/DZ x spacing
+  Eigen::Matrix<double, 9, Eigen::Dynamic>
+      initial_support;  ///< A0: DX/DY/DZ x spacing (particles.hpp)
 
   // Kernel: each row in its own reference configuration (renewed per row, renewal.cpp).
   Supports support;  ///< at the last renewal or check (S = (F A0^2 F^T)^(1/2), Eq. 34)

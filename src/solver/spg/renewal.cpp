@@ -30,25 +30,25 @@ Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
   return Eigen::Map<Mat3>(m.col(i).data());
 }
 
-// KERNEL 0 (Eq. 34): the initial support A0 (axis-aligned half-sizes) deformed with the
-// material, S = (F A0^2 F^T)^(1/2) with F = F-hat F^n the total deformation now: the ellipsoid
-// F A0 (unit ball) exactly, and for the box kernels the box stretched along the principal axes
-// of F A0 without its rotation. The support keeps its size relative to the particle spacing,
-// which deforms the same way: compression along the axis of a Taylor bar shrinks it there (a
-// support fixed in size would span many compressed layers and let them collapse unseen), and
-// it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
+// KERNEL 0 (Eq. 34): the initial support A0 (symmetric, particles.hpp) deformed with the
+// material, S = (F A0^2 F^T)^(1/2), the left stretch of F A0, with F = F-hat F^n the total
+// deformation now: the ellipsoid F A0 (unit ball) exactly, and for the box kernels the image of
+// the unit box under the stretch of F A0 without its rotation. The support keeps its size relative
+// to the particle spacing, which deforms the same way: compression along the axis of a Taylor bar
+// shrinks it there (a support fixed in size would span many compressed layers and let them collapse
+// unseen), and it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
 Supports current_supports(const Domain& d) {
-  if (d.settings.kernel_update == 1) return axis_aligned(d.initial_support);
+  if (d.settings.kernel_update == 1) return deformed(d.settings.shape, d.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
 #pragma omp parallel for schedule(static) if (d.count() > 4096)
   for (Index i = 0; i < d.count(); ++i) {
     const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(i).data()) *
                    Eigen::Map<const Mat3>(d.reference_deformation.col(i).data());
-    const Vec3 a0 = d.initial_support.col(i);
-    const Mat3 fa = f * a0.asDiagonal();
+    const Eigen::Map<const Mat3> a0(d.initial_support.col(i).data());
+    const Mat3 fa = f * a0;
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
     eig.computeDirect(fa * fa.transpose());
-    const double scale = a0.mean();
+    const double scale = a0.trace() / 3.0;
     Vec3 half = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
     for (int k = 0; k < 3; ++k)
       half[k] = std::clamp(half[k], kSupportMinimumStretch * scale, kSupportMaximumStretch * scale);
