@@ -50,7 +50,7 @@ class Glstat final : public HistoryFile {
             static_cast<int>(w + 1));
     ascii(" hourglass energy ..............{:14.5E}\n", e.hourglass);
     line("system damping energy", 0.0);
-    line("sliding interface energy", 0.0);
+    line("sliding interface energy", e.sliding);
     line("external work", e.external_work);
     line("eroded internal energy", e.eroded_internal);
     line("eroded hourglass energy", e.eroded_hourglass);
@@ -69,7 +69,7 @@ class Glstat final : public HistoryFile {
     }
     csv("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
         "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n",
-        s.time, s.step, e.kinetic, e.internal, e.stonewall, e.hourglass, 0.0, e.external_work,
+        s.time, s.step, e.kinetic, e.internal, e.stonewall, e.hourglass, e.sliding, e.external_work,
         e.eroded_internal, e.eroded_hourglass, e.total, ratio, v[0], v[1], v[2], e.added_mass,
         percent, ce_id);
     flush();
@@ -207,6 +207,43 @@ class Rwforc final : public HistoryFile {
   }
 };
 
+// rcforc (keywords.md §3.2): per contact and output time a slave and a master line, the
+// resultant of the contact forces on that side's nodes and its moment about the origin; "mass"
+// is the mass of the slave nodes in contact (on the master line too).
+class Rcforc final : public HistoryFile {
+ public:
+  Rcforc(const std::filesystem::path& dir, const State& s)
+      : HistoryFile(dir, "rcforc", s.title,
+                    "time,contact,side,x_force,y_force,z_force,mass,x_moment,y_moment,z_moment") {
+    ascii("\n r e s u l t a n t   i n t e r f a c e   f o r c e s\n\n");
+    ascii(" {:>12}  {}\n", "contact", "title");
+    for (const solver::contact::Interface& c : s.contacts)
+      ascii(" {:12d}  {}\n", c.id, c.heading);
+    ascii("\n");
+    flush();
+  }
+
+  void write(const OutputContext& c) override {
+    const State& s = c.state;
+    for (const solver::contact::Interface& in : s.contacts) {
+      side("slave ", s.time, in.id, in.force_a, in.moment_a, in.mass_in_contact);
+      side("master", s.time, in.id, in.force_b, in.moment_b, in.mass_in_contact);
+    }
+    flush();
+  }
+
+ private:
+  void side(const char* name, double time, model::Id id, const Vec3& f, const Vec3& m,
+            double mass) {
+    ascii(
+        "  {}{:11d} time{:12.5E}  x {:12.5E}  y {:12.5E}  z {:12.5E} mass {:12.5E}  mx "
+        "{:12.5E}  my {:12.5E}  mz {:12.5E}\n",
+        name, id, time, f[0], f[1], f[2], mass, m[0], m[1], m[2]);
+    csv("{:.9e},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", time, id,
+        name[0] == 's' ? "slave" : "master", f[0], f[1], f[2], mass, m[0], m[1], m[2]);
+  }
+};
+
 class Bndout final : public HistoryFile {
  public:
   Bndout(const std::filesystem::path& dir, const State& s)
@@ -264,6 +301,7 @@ std::unique_ptr<HistoryFile> make_history(const std::string& name, const std::fi
   if (name == "spcforc") return std::make_unique<Spcforc>(dir, state);
   if (name == "rwforc") return std::make_unique<Rwforc>(dir, state);
   if (name == "bndout") return std::make_unique<Bndout>(dir, state);
+  if (name == "rcforc") return std::make_unique<Rcforc>(dir, state);
   return nullptr;
 }
 

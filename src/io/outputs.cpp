@@ -51,8 +51,8 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
       notes.push_back("nodout requested but no *DATABASE_HISTORY_NODE nodes: not written");
       continue;
     }
-    if (name == "rcforc") {
-      notes.push_back("rcforc requested but this version runs no contact: not written");
+    if (name == "rcforc" && s.contacts.empty()) {
+      notes.push_back("rcforc requested but the deck has no contact: not written");
       continue;
     }
     auto h = make_history(name, dir, s, nodes);

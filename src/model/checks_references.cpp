@@ -230,6 +230,8 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
         break;
     }
   }
+  for (const BodyLoad& b : m.body_loads)
+    need(ix.curves, b.curve, b.curve_loc, "curve", "*LOAD_BODY", diags);
   for (const RigidWall& w : m.rigid_walls) {
     need(ix.node_sets, w.node_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);
     need(ix.node_sets, w.exempted_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);

@@ -40,6 +40,15 @@ struct Contact {
   core::SourceLoc loc;
 };
 
+/// *LOAD_BODY_X / _Y / _Z: a base acceleration SF x curve(t) along an axis; the body force on a
+/// node is -m a (gravity down -z is LOAD_BODY_Z with +9.81).
+struct BodyLoad {
+  int axis = 2;  ///< 0 x, 1 y, 2 z
+  Id curve = 0;
+  double scale = 1.0;
+  core::SourceLoc loc, curve_loc;
+};
+
 /// *BOUNDARY_SPC_NODE / _SET: one line.
 struct SpcConstraint {
   Id id = 0;

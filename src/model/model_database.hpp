@@ -35,6 +35,7 @@ struct ModelDatabase {
   std::vector<SpcConstraint> spcs;
   std::vector<PrescribedMotion> prescribed_motions;
   std::vector<InitialVelocity> initial_velocities;
+  std::vector<BodyLoad> body_loads;
   std::vector<RigidWall> rigid_walls;
 
   Controls controls;

@@ -219,9 +219,6 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   s->title = m.title;
   for (const model::Curve& c : m.curves)
     s->curves.emplace_back(c);
-  for (const model::Contact& c : m.contacts) {
-    diags.error(c.loc, "contact {} is not run by this version of the solver", c.id);
-  }
   detail::compile_nodes_and_solids(m, *s, diags);
   detail::compile_rigid_bodies(m, *s, diags);
   detail::compile_constraints(m, *s, diags);
@@ -229,6 +226,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles
   detail::compile_initial_velocities(m, *s, diags);
   detail::compile_rigid_walls(m, *s, diags);  // after SPG: walls track nodes that have mass
+  detail::compile_contacts(m, *s, diags);     // after SPG: particles are slave nodes
 
   TimeControl& tc = s->time_control;
   if (m.controls.termination) {

@@ -25,6 +25,7 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);

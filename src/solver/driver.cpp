@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/contact/contact.hpp"
 #include "solver/fe/solid_elements.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
@@ -26,7 +27,8 @@ const char* PhaseTimes::name(int p) {
                                        "SPG shape functions",
                                        "SPG smoothing",
                                        "SPG stress",
-                                       "SPG forces"};
+                                       "SPG forces",
+                                       "contact"};
   return kNames[p];
 }
 
@@ -117,6 +119,8 @@ ForcePass compute_forces(State& s) {
       r.failure = "non-finite stress or wave speed at " + particle_name(s, k, p.non_finite);
     }
   }
+  apply_body_loads(s);
+  contact::contact_pass(s);  // after the internal forces: SPG particles and rigid nodes included
   return r;
 }
 
@@ -263,6 +267,10 @@ RunResult run(State& s, const RunHooks& hooks) {
       result.phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
       result.phases.seconds[PhaseTimes::elements] -= split[k];
     }
+  }
+  for (const contact::Interface& c : s.contacts) {
+    result.phases.seconds[PhaseTimes::contact] += c.seconds;
+    result.phases.seconds[PhaseTimes::elements] -= c.seconds;
   }
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

@@ -13,7 +13,7 @@ namespace mcdyna::solver {
 
 /// Wall-clock seconds per phase of the cycle.
 struct PhaseTimes {
-  static constexpr int kCount = 10;
+  static constexpr int kCount = 11;
   enum Phase {
     elements,
     boundary,
@@ -24,7 +24,8 @@ struct PhaseTimes {
     spg_shape_functions,
     spg_smoothing,
     spg_stress,
-    spg_forces
+    spg_forces,
+    contact
   };
   std::array<double, kCount> seconds{};
   static const char* name(int p);

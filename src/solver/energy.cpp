@@ -21,6 +21,8 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
   }
   for (const RigidWallState& w : s.rigid_walls)
     e.stonewall += w.energy;
+  for (const contact::Interface& c : s.contacts)
+    e.sliding += c.energy;
   for (const NodalMotion& m : s.nodal_motions)
     e.external_work += m.work();
   for (const RigidBody& b : s.rigid_bodies) {
@@ -50,8 +52,8 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.momentum += 0.5 * nd.mass[i] * (previous.col(n) + velocity.col(n));
     e.mass += nd.mass[i];
   }
-  e.total = e.kinetic + e.internal + e.hourglass + e.stonewall + e.damping + e.eroded_internal +
-            e.eroded_hourglass;
+  e.total = e.kinetic + e.internal + e.hourglass + e.stonewall + e.sliding + e.damping +
+            e.eroded_internal + e.eroded_hourglass;
   return e;
 }
 

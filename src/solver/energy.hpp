@@ -14,10 +14,11 @@ namespace mcdyna::solver {
 
 struct EnergySummary {
   double kinetic = 0.0, internal = 0.0, hourglass = 0.0, stonewall = 0.0;
+  double sliding = 0.0;        ///< work the contact interfaces took (penalty springs and friction)
   double damping = 0.0;        ///< dissipated by SPG particle damping (PDAMP)
   double external_work = 0.0;  ///< work of prescribed motions and rigid-body constraints
   double eroded_internal = 0.0, eroded_hourglass = 0.0;
-  double total = 0.0;  ///< kinetic + internal + hourglass + stonewall + damping + eroded
+  double total = 0.0;  ///< kinetic + internal + hourglass + stonewall + sliding + damping + eroded
   Vec3 momentum = Vec3::Zero();
   double mass = 0.0, added_mass = 0.0;
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model/entities.hpp"
+#include "solver/contact/interface.hpp"
 #include "solver/curve.hpp"
 #include "solver/material/material.hpp"
 #include "solver/material/point_kinematics.hpp"
@@ -117,8 +118,9 @@ struct RigidBody {
   Eigen::Matrix3Xd offsets;  ///< node position - centre at t = 0
   std::array<bool, 3> fixed_translation{}, fixed_rotation{};
   std::vector<RigidMotion> motions;
-  Vec3 force = Vec3::Zero();   ///< resultant of element, contact and wall forces on the body
-  Vec3 moment = Vec3::Zero();  ///< about the centre
+  Vec3 body_force = Vec3::Zero();  ///< *LOAD_BODY on the whole mass, at the centre, this cycle
+  Vec3 force = Vec3::Zero();       ///< resultant of element, contact and wall forces on the body
+  Vec3 moment = Vec3::Zero();      ///< about the centre
   Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
   Vec3 constraint_moment = Vec3::Zero();
   double constraint_work = 0.0;
@@ -170,6 +172,13 @@ struct RigidWallState {
   double energy = 0.0;        ///< work the wall has absorbed
 };
 
+/// *LOAD_BODY_X / _Y / _Z: base acceleration scale x curve(t) along `axis`; force -m a.
+struct BodyLoadState {
+  int axis = 2;
+  Index curve = -1;
+  double scale = 1.0;
+};
+
 /// Elements drawn but not integrated: those of rigid parts (solids and shells).
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
@@ -201,6 +210,8 @@ struct State {
   NodalConstraints constraints;
   std::vector<NodalMotion> nodal_motions;
   std::vector<RigidWallState> rigid_walls;
+  std::vector<contact::Interface> contacts;
+  std::vector<BodyLoadState> body_loads;
   TimeControl time_control;
 
   double time = 0.0;

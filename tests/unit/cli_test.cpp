@@ -16,7 +16,7 @@ TEST_CASE("check: a clean deck exits 0 with summary and migration report") {
   const Run r = run_mcdyna("check " + kDataDir + "all_keywords.k");
   CHECK(r.exit_code == 0);
   CHECK(r.output.find("nodes            12") != std::string::npos);
-  CHECK(r.output.find("Migration report: 63 keywords") != std::string::npos);
+  CHECK(r.output.find("Migration report: 66 keywords") != std::string::npos);
   CHECK(r.output.find("ready to run") != std::string::npos);
 }
 
@@ -39,11 +39,11 @@ TEST_CASE("unsupported physics fails check unless --allow-unsupported; no-effect
   const std::string body = "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
   const auto deck = d.write("deck.k",
                             "*KEYWORD\n*CONTROL_MPP_IO_NODUMP\n*DATABASE_ELOUT\n0.1\n"
-                            "*LOAD_BODY_Z\n1\n" +
+                            "*LOAD_NODE_POINT\n1,3,1\n" +
                                 body);
   const Run strict = run_mcdyna("check " + deck.string());
   CHECK(strict.exit_code == 1);
-  CHECK(strict.output.find("UNSUPPORTED        *LOAD_BODY_Z (deck.k: 5)") != std::string::npos);
+  CHECK(strict.output.find("UNSUPPORTED        *LOAD_NODE_POINT (deck.k: 5)") != std::string::npos);
   CHECK(strict.output.find("read, no effect    *CONTROL_MPP_IO_NODUMP (deck.k: 2): MPP") !=
         std::string::npos);
   CHECK(strict.output.find("unsupported output *DATABASE_ELOUT") != std::string::npos);

@@ -89,6 +89,27 @@ void boundary_prescribed_motion(KeywordRecord& r, model::ModelDatabase& m) {
   }
 }
 
+void load_body(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::BodyLoad b;
+  const std::string& name = r.schema().name;
+  b.axis = name.back() - 'X';
+  b.curve = c.integer("LCID");
+  b.scale = c.real("SF");
+  b.loc = c.loc();
+  b.curve_loc = c.loc("LCID");
+  if (c.integer("CID") != 0) {
+    r.diags().error(c.loc("CID"), "{}: local coordinate system CID = {} is not supported",
+                    r.display_name(), c.integer("CID"));
+  }
+  if (c.integer("LCIDDR") != 0) {
+    r.diags().note(c.loc("LCIDDR"),
+                   "{}: LCIDDR = {}: mcdyna runs no dynamic relaxation; the curve is not used",
+                   r.display_name(), c.integer("LCIDDR"));
+  }
+  m.body_loads.push_back(b);
+}
+
 void initial_velocity(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c1 = r.card("1");
   const Row& c2 = r.card("2");

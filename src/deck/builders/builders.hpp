@@ -56,6 +56,7 @@ void contact(KeywordRecord& r, model::ModelDatabase& m);
 // boundary.cpp
 void boundary_spc(KeywordRecord& r, model::ModelDatabase& m);
 void boundary_prescribed_motion(KeywordRecord& r, model::ModelDatabase& m);
+void load_body(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_node(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_generation(KeywordRecord& r, model::ModelDatabase& m);

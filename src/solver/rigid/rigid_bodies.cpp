@@ -92,6 +92,7 @@ void advance_rigid_bodies(State& state, const StepTimes& t) {
       force += f;
       moment += (Vec3(nd.position.col(n)) - b.center).cross(f);
     }
+    force += b.body_force;  // at the centre of mass: no moment
     b.force = force;
     b.moment = moment;
     const Vec3 v_free = b.velocity + t.mean * force / b.mass;

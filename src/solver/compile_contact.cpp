@@ -1,0 +1,399 @@
+// *CONTACT_[AUTOMATIC_]NODES_TO_SURFACE / SURFACE_TO_SURFACE -> contact::Interface: the nodes
+// and segments of each side and the penalty stiffness of every node and segment as LS-DYNA's
+// standard penalty formulation computes it (keywords.md §2.15, §2.25): a solid's free face
+// K A^2 / V, a shell K A / (longest diagonal), scaled by SLSFAC and SFS / SFM. Runs after the
+// SPG parts: their particles are slave nodes.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "solver/compile.hpp"
+#include "solver/fe/hex_geometry.hpp"
+
+namespace mcdyna::solver::detail {
+
+namespace {
+
+using contact::Interface;
+using contact::Pass;
+using contact::Surface;
+using Face = std::array<Index, 4>;
+
+// The LS-DYNA hexahedron's faces, node order giving the outward normal of a positive element.
+constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// The segments a part offers a contact side, and its particles.
+struct PartSurface {
+  Surface surface;  ///< free faces of its hexahedra, then its shells (stiffness before scaling)
+  std::vector<double> shell_thickness;  ///< per segment, 0 for solid faces
+  std::vector<Index> particles;
+};
+
+struct Element {
+  std::array<Index, 8> nodes;
+  double volume;
+};
+
+double hex_volume(const State& s, const std::array<Index, 8>& conn) {
+  hex::Corners x{};
+  for (std::size_t c = 0; c < 8; ++c)
+    for (std::size_t k = 0; k < 3; ++k)
+      x[c][k] = s.nodes.initial(static_cast<Index>(k), conn[c]);
+  const hex::GaussPoints& gauss = hex::gauss_points();
+  double v = 0.0;
+  for (int q = 0; q < 8; ++q)
+    v += std::abs(hex::gradients(x, gauss.gradients[q]).det);
+  return v;
+}
+
+double area_of(const State& s, const Face& f) {
+  const auto x = [&](std::size_t k) { return Vec3(s.nodes.initial.col(f[k])); };
+  return 0.5 * ((x(2) - x(0)).cross(x(3) - x(1))).norm();
+}
+
+double longest_diagonal(const State& s, const Face& f) {
+  const auto x = [&](std::size_t k) { return Vec3(s.nodes.initial.col(f[k])); };
+  return std::max((x(2) - x(0)).norm(), (x(3) - x(1)).norm());
+}
+
+Face sorted(Face f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+void add_segment(Surface& out, const Face& f, double stiffness, double area, bool rigid) {
+  out.segments.push_back(f);
+  out.stiffness.push_back(stiffness);
+  out.half_thickness.push_back(0.0);
+  out.two_sided.push_back(0);
+  out.area.push_back(area);
+  out.smallest_node_mass.push_back(rigid ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
+// Free faces (used once within the part) with outward normals; repeated nodes of degenerate
+// hexahedra make triangles, or drop the face when fewer than three remain.
+void add_free_faces(const State& s, const std::vector<Element>& solids, double bulk, bool rigid,
+                    PartSurface& out) {
+  std::map<Face, int> uses;
+  auto face_of = [](const Element& e, const int(&face)[4]) {
+    Face f{};
+    for (std::size_t k = 0; k < 4; ++k)
+      f[k] = e.nodes[static_cast<std::size_t>(face[k])];
+    return f;
+  };
+  for (const Element& e : solids)
+    for (const auto& face : kFaces)
+      ++uses[sorted(face_of(e, face))];
+  for (const Element& e : solids) {
+    Vec3 centre = Vec3::Zero();
+    for (const Index n : e.nodes)
+      centre += s.nodes.initial.col(n) / 8.0;
+    for (const auto& face : kFaces) {
+      const Face f = face_of(e, face);
+      if (uses[sorted(f)] != 1) continue;
+      Face seg{};
+      std::size_t distinct = 0;
+      for (const Index n : f)
+        if (std::find(seg.begin(), seg.begin() + static_cast<long>(distinct), n) ==
+            seg.begin() + static_cast<long>(distinct))
+          seg[distinct++] = n;
+      if (distinct < 3) continue;
+      if (distinct == 3) seg[3] = seg[2];
+      const double area = area_of(s, seg);
+      if (!(area > 0.0)) continue;
+      out.surface.segments.push_back(seg);  // orientation checked just below
+      Vec3 middle = Vec3::Zero();
+      for (const Index n : seg)
+        middle += s.nodes.initial.col(n) / 4.0;
+      const auto x = [&](std::size_t k) { return Vec3(s.nodes.initial.col(seg[k])); };
+      if (((x(2) - x(0)).cross(x(3) - x(1))).dot(middle - centre) < 0.0) {
+        std::reverse(seg.begin(), seg.begin() + static_cast<long>(distinct));
+        if (distinct == 3) seg[3] = seg[2];
+      }
+      out.surface.segments.pop_back();
+      add_segment(out.surface, seg, bulk * area * area / e.volume, area, rigid);
+      out.shell_thickness.push_back(0.0);
+    }
+  }
+}
+
+std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const State& s) {
+  const std::size_t parts = s.parts.size();
+  std::vector<double> bulk(parts, 0.0);
+  for (std::size_t p = 0; p < parts; ++p) {
+    const PartInfo& info = s.parts[p];
+    if (info.material >= 0) {
+      bulk[p] = s.materials[static_cast<std::size_t>(info.material)].bulk_modulus;
+    } else if (const model::Material* mat = m.material(info.material_id)) {
+      const double e = mat->rigid.youngs_modulus, nu = mat->rigid.poisson_ratio;
+      bulk[p] = e / (3.0 * (1.0 - 2.0 * nu));
+    }
+  }
+  std::vector<std::vector<Element>> solids(parts);
+  for (Index e = 0; e < s.solids.count(); ++e) {
+    const auto ee = static_cast<std::size_t>(e);
+    solids[static_cast<std::size_t>(s.solids.part[ee])].push_back(
+        {s.solids.nodes[ee], s.solids.initial_volume[ee]});
+  }
+  for (std::size_t k = 0; k < s.rigid_cells.solids.size(); ++k)
+    solids[static_cast<std::size_t>(s.rigid_cells.solid_parts[k])].push_back(
+        {s.rigid_cells.solids[k], hex_volume(s, s.rigid_cells.solids[k])});
+  std::vector<PartSurface> out(parts);
+  for (std::size_t p = 0; p < parts; ++p)
+    add_free_faces(s, solids[p], bulk[p], s.parts[p].rigid_body >= 0, out[p]);
+  // Rigid shells, in m.shells' order as compile_rigid_bodies put them in rigid_cells.
+  std::size_t next = 0;
+  for (const model::ShellElement& el : m.shells) {
+    const auto p = static_cast<std::size_t>(m.index.parts.find(el.part));
+    if (s.parts[p].rigid_body < 0) continue;
+    const Face& seg = s.rigid_cells.shells[next++];
+    const model::Section* sec = m.section(m.parts[p].section);
+    double t = 0.0;
+    for (std::size_t c = 0; c < 4; ++c)
+      t += 0.25 * (el.thickness[c] > 0.0 ? el.thickness[c] : (sec ? sec->shell.thickness[c] : 0.0));
+    const double area = area_of(s, seg);
+    if (!(area > 0.0)) continue;
+    add_segment(out[p].surface, seg, bulk[p] * area / longest_diagonal(s, seg), area, true);
+    out[p].shell_thickness.push_back(t);
+  }
+  for (const spg::Domain& d : s.spg)
+    out[static_cast<std::size_t>(d.part)].particles = d.nodes;
+  return out;
+}
+
+// Penalty of a node standing alone (node sets, particles): K V^(1/3) of the largest element
+// holding it (K A^2 / V of a cube), or of the particle's volume; a shell node takes its shells'.
+std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface>& parts) {
+  std::vector<double> k(static_cast<std::size_t>(s.nodes.count()), 0.0);
+  for (const PartSurface& p : parts)
+    for (std::size_t j = 0; j < p.surface.segments.size(); ++j)
+      for (const Index n : p.surface.segments[j]) {
+        double& kn = k[static_cast<std::size_t>(n)];
+        kn = std::max(kn, p.surface.stiffness[j]);
+      }
+  for (const spg::Domain& d : s.spg) {
+    const double bulk =
+        s.materials[static_cast<std::size_t>(s.parts[static_cast<std::size_t>(d.part)].material)]
+            .bulk_modulus;
+    for (std::size_t i = 0; i < d.nodes.size(); ++i)
+      k[static_cast<std::size_t>(d.nodes[i])] = bulk * std::cbrt(d.initial_volume[i]);
+  }
+  return k;
+}
+
+struct Side {
+  std::vector<Index> nodes;
+  Surface surface;
+  std::vector<double> shell_thickness;
+  bool has_particles = false;
+};
+
+}  // namespace
+
+void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  if (m.contacts.empty()) return;
+  const std::vector<PartSurface> parts = part_surfaces(m, s);
+  const std::vector<double> node_k = node_stiffness(s, parts);
+  std::map<Face, std::pair<std::size_t, std::size_t>> face_owner;  // for segment sets
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
+      face_owner.emplace(sorted(parts[p].surface.segments[j]), std::make_pair(p, j));
+  const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
+  const double slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
+
+  for (const model::Contact& c : m.contacts) {
+    if (c.kind == model::ContactKind::automatic_single_surface) {
+      d.error(c.loc,
+              "contact {}: *CONTACT_AUTOMATIC_SINGLE_SURFACE is not run by this version; model the "
+              "pairs as *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
+              c.id);
+      continue;
+    }
+    const bool automatic = c.kind == model::ContactKind::automatic_nodes_to_surface ||
+                           c.kind == model::ContactKind::automatic_surface_to_surface;
+    const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
+                         c.kind == model::ContactKind::surface_to_surface;
+    bool ok = true;
+    auto resolve = [&](const model::ContactSide& side, const char* name) {
+      Side out;
+      std::vector<std::size_t> members;
+      auto add_part = [&](model::Id id) {
+        const auto p = m.index.parts.find(id);
+        if (p == model::IdIndex::kNone) {
+          d.error(c.loc, "contact {}: side {}: part {} is not defined", c.id, name, id);
+          ok = false;
+        } else {
+          members.push_back(static_cast<std::size_t>(p));
+        }
+      };
+      if (side.type == 3) {
+        add_part(side.id);
+      } else if (side.type == 2) {
+        const model::PartSet* ps = m.part_set(side.id);
+        if (ps == nullptr) {
+          d.error(c.loc, "contact {}: side {}: part set {} is not defined", c.id, name, side.id);
+          ok = false;
+        } else {
+          for (const model::Id id : ps->parts)
+            add_part(id);
+        }
+      } else if (side.type == 5) {
+        for (std::size_t p = 0; p < parts.size(); ++p)
+          members.push_back(p);
+      } else if (side.type == 4) {
+        out.nodes = node_set_nodes(m, side.id);
+        if (out.nodes.empty()) {
+          d.error(c.loc, "contact {}: side {}: node set {} is not defined or empty", c.id, name,
+                  side.id);
+          ok = false;
+        }
+      } else if (side.type == 0) {
+        const auto set = m.index.segment_sets.find(side.id);
+        if (set == model::IdIndex::kNone) {
+          d.error(c.loc, "contact {}: side {}: segment set {} is not defined", c.id, name, side.id);
+          ok = false;
+        } else {
+          for (const auto& ids : m.segment_sets[static_cast<std::size_t>(set)].segments) {
+            Face f{};
+            for (std::size_t k = 0; k < 4; ++k)
+              f[k] = static_cast<Index>(m.index.nodes.find(ids[k]));
+            const auto owner = face_owner.find(sorted(f));
+            if (owner == face_owner.end()) {
+              d.error(c.loc,
+                      "contact {}: side {}: segment {} {} {} {} of set {} is not a free face of a "
+                      "solid or a rigid shell, so its penalty stiffness is unknown",
+                      c.id, name, ids[0], ids[1], ids[2], ids[3], side.id);
+              ok = false;
+              continue;
+            }
+            const PartSurface& ps = parts[owner->second.first];
+            const std::size_t j = owner->second.second;
+            add_segment(out.surface, f, ps.surface.stiffness[j], ps.surface.area[j],
+                        std::isinf(ps.surface.smallest_node_mass[j]));
+            out.shell_thickness.push_back(ps.shell_thickness[j]);
+            out.nodes.insert(out.nodes.end(), f.begin(), f.end());
+          }
+        }
+      } else {
+        d.error(c.loc,
+                "contact {}: side {} type {} is not supported (0 segment set, 2 part set, 3 part, "
+                "4 node set, 5 all parts)",
+                c.id, name, side.type);
+        ok = false;
+      }
+      for (const std::size_t p : members) {
+        const PartSurface& ps = parts[p];
+        for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
+          add_segment(out.surface, ps.surface.segments[j], ps.surface.stiffness[j],
+                      ps.surface.area[j], std::isinf(ps.surface.smallest_node_mass[j]));
+          out.shell_thickness.push_back(ps.shell_thickness[j]);
+          out.nodes.insert(out.nodes.end(), ps.surface.segments[j].begin(),
+                           ps.surface.segments[j].end());
+        }
+        out.nodes.insert(out.nodes.end(), ps.particles.begin(), ps.particles.end());
+        out.has_particles = out.has_particles || !ps.particles.empty();
+      }
+      std::sort(out.nodes.begin(), out.nodes.end());
+      out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end()), out.nodes.end());
+      return out;
+    };
+    Side a = resolve(c.a, "A (slave)");
+    Side b = resolve(c.b, "B (master)");
+    if (!ok) continue;
+    if (b.surface.segments.empty()) {
+      d.error(c.loc,
+              "contact {}: side B (master) has no segments (an SPG part or a node set cannot be "
+              "the master surface: make it side A)",
+              c.id);
+      continue;
+    }
+
+    Interface in;
+    in.id = c.id;
+    in.heading = c.heading;
+    in.automatic = automatic;
+    in.static_friction = c.static_friction * c.friction_scale;
+    in.dynamic_friction = c.dynamic_friction * c.friction_scale;
+    in.decay = c.decay;
+    in.viscous_friction = c.viscous_friction * c.viscous_friction_scale;
+    in.damping = c.viscous_damping / 100.0;
+    in.birth = c.birth;
+    in.death = c.death > 0.0 ? c.death : 1.0e20;
+    in.soft = c.soft;
+    in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
+    in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
+    in.penalty_option = control.penalty_option;
+    if (in.penalty_option < 1 || in.penalty_option > 3) {
+      d.warning(control.loc,
+                "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
+                "segment's stiffness); 2 and 3 are also available",
+                control.penalty_option);
+      in.penalty_option = 1;
+    }
+    if (c.soft == 2 || c.soft > 2) {
+      d.warning(c.loc,
+                "contact {}: SOFT = {} (segment-based) runs as SOFT = 1, node-to-segment with the "
+                "soft-constraint stiffness",
+                c.id, c.soft);
+      in.soft = 1;
+    }
+    // One direction: the nodes of one side on the segments of the other.
+    auto make_pass = [&](const Side& nodes, double node_scale, const Side& segments,
+                         double segment_scale, double thickness, bool nodes_on_a) {
+      Pass p;
+      p.nodes = nodes.nodes;
+      p.nodes_on_side_a = nodes_on_a;
+      p.stiffness.resize(p.nodes.size());
+      for (std::size_t i = 0; i < p.nodes.size(); ++i)
+        p.stiffness[i] = slsfac * node_scale * node_k[static_cast<std::size_t>(p.nodes[i])];
+      p.surface = segments.surface;
+      for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
+        p.surface.stiffness[j] *= slsfac * segment_scale;
+        const double t = thickness > 0.0 ? thickness : segments.shell_thickness[j];
+        // Automatic contact touches shells on both faces at half their thickness.
+        if (segments.shell_thickness[j] > 0.0 || thickness > 0.0) {
+          p.surface.two_sided[j] = automatic ? 1 : 0;
+          p.surface.half_thickness[j] = automatic ? 0.5 * t : 0.0;
+        }
+        if (!std::isinf(p.surface.smallest_node_mass[j])) {
+          double lightest = std::numeric_limits<double>::infinity();
+          for (const Index n : p.surface.segments[j])
+            lightest = std::min(lightest, s.nodes.mass[static_cast<std::size_t>(n)]);
+          p.surface.smallest_node_mass[j] = lightest;
+        }
+      }
+      p.friction.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
+      return p;
+    };
+    in.passes.push_back(make_pass(a, c.penalty_scale_a, b, c.penalty_scale_b, c.thickness_b, true));
+    if (two_way) {
+      if (a.surface.segments.empty()) {
+        d.note(c.loc,
+               "contact {}: side A has no segments ({}): surface-to-surface runs one way, A "
+               "nodes on B segments",
+               c.id, a.has_particles ? "SPG particles" : "a node set");
+      } else {
+        in.passes.push_back(
+            make_pass(b, c.penalty_scale_b, a, c.penalty_scale_a, c.thickness_a, false));
+      }
+    }
+    // Search margin: half the largest segment plus the largest contact thickness; nodes
+    // tracked for an early re-sort are those of both sides.
+    double largest = 0.0, thickest = 0.0;
+    for (const Pass& p : in.passes)
+      for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
+        largest = std::max(largest, std::sqrt(p.surface.area[j]));
+        thickest = std::max(thickest, p.surface.half_thickness[j]);
+      }
+    in.capture = 0.5 * largest + thickest;
+    in.tracked = a.nodes;
+    in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
+    std::sort(in.tracked.begin(), in.tracked.end());
+    in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());
+    s.contacts.push_back(std::move(in));
+  }
+}
+
+}  // namespace mcdyna::solver::detail

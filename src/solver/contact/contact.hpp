@@ -1,0 +1,23 @@
+#pragma once
+/// Penalty contact (keywords.md §2.15): once per cycle, after the internal forces, every active
+/// interface finds the slave nodes that have penetrated a master segment (bucket-sorted
+/// candidates, contact_search.cpp) and adds the penalty, friction and damping forces to the
+/// nodes of both sides (contact_forces.cpp). Deterministic for any thread count: the per-node
+/// work runs in parallel, the forces are added in node order.
+#include "solver/state.hpp"
+
+namespace mcdyna::solver::contact {
+
+/// Adds the contact forces at t^n to s.nodes.force (positions at t^n, velocities at t^{n-1/2})
+/// and updates each interface's resultants and energy.
+void contact_pass(State& s);
+
+/// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
+/// last sort, or a node has moved more than half the search margin.
+bool sort_due(const State& s, const Interface& c);
+
+/// Rebuilds the candidate segments of every node of every pass: the segments whose bounding box,
+/// widened by the contact thickness and the search margin, holds the node.
+void sort_buckets(const State& s, Interface& c);
+
+}  // namespace mcdyna::solver::contact

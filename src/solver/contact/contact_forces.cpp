@@ -1,0 +1,208 @@
+// Penalty forces of node-to-segment contact, as LS-DYNA's standard penalty formulation: a slave
+// node that has passed through a master segment is pushed back by k d along the segment normal
+// (d the penetration), with Coulomb friction on an elastic tangential spring of the same k and
+// normal viscous damping; the opposite force goes to the segment's nodes with the weights of the
+// contact point.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "solver/contact/contact.hpp"
+#include "solver/contact/segment_geometry.hpp"
+
+namespace mcdyna::solver::contact {
+
+namespace {
+
+// A node whose closest point lies beyond the segment's edges by more than this share of the
+// segment's size is not in contact with it (its neighbour segment, or none, holds it).
+constexpr double kEdgeTolerance = 0.1;
+// One-sided segments release a node that has passed more than this share of their size
+// through them: it is then on the far side of a thin part, not inside the body.
+constexpr double kReleaseDepth = 0.5;
+
+struct Hit {
+  Index segment = -1;
+  std::array<double, 4> weights{};
+  Vec3 force = Vec3::Zero();     ///< on the slave node
+  Vec3 friction = Vec3::Zero();  ///< tangential force to carry to the next cycle
+};
+
+// The segment the node touches (the nearest candidate, the deeper of equals) and how.
+struct Touch {
+  Index segment = -1;
+  SegmentPoint at;
+  Vec3 push = Vec3::Zero();  ///< unit, from the segment towards where the node must go
+  double depth = 0.0;
+};
+
+Touch find_touch(const State& s, const Pass& p, std::size_t i) {
+  const Index node = p.nodes[i];
+  const Vec3 x = s.nodes.position.col(node);
+  Touch best;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Index c = p.candidate_offsets[i]; c < p.candidate_offsets[i + 1]; ++c) {
+    const Index k = p.candidates[static_cast<std::size_t>(c)];
+    const auto kk = static_cast<std::size_t>(k);
+    const std::array<Index, 4>& seg = p.surface.segments[kk];
+    if (std::find(seg.begin(), seg.end(), node) != seg.end()) continue;
+    std::array<Vec3, 4> corners;
+    for (std::size_t j = 0; j < 4; ++j)
+      corners[j] = s.nodes.position.col(seg[j]);
+    const SegmentPoint at = closest_on_segment(x, corners);
+    const Vec3 r = x - at.point;
+    const double gap = r.dot(at.normal);
+    const double size = std::sqrt(p.surface.area[kk]);
+    if ((r - gap * at.normal).norm() > kEdgeTolerance * size) continue;
+    const double h = p.surface.half_thickness[kk];
+    double depth;
+    Vec3 push;
+    if (p.surface.two_sided[kk]) {
+      depth = h - std::abs(gap);
+      push = gap >= 0.0 ? at.normal : Vec3(-at.normal);
+    } else {
+      depth = h - gap;
+      push = at.normal;
+      if (depth > kReleaseDepth * size + h) continue;
+    }
+    const double distance = r.norm();
+    const bool nearer = distance < nearest * (1.0 - 1e-12);
+    const bool tie = !nearer && distance <= nearest * (1.0 + 1e-12);
+    if (nearer || (tie && depth > best.depth)) {
+      nearest = distance;
+      best = {k, at, push, depth};
+    }
+  }
+  if (best.depth <= 0.0) best.segment = -1;
+  return best;
+}
+
+double penalty(const Interface& c, const Pass& p, std::size_t i, std::size_t k, double node_mass) {
+  const double node = p.stiffness[i], segment = p.surface.stiffness[k];
+  double stiffness = c.penalty_option == 2   ? segment
+                     : c.penalty_option == 3 ? node
+                                             : std::min(node, segment);
+  if (c.soft == 1 && c.initial_step > 0.0) {
+    // Soft constraint: a spring whose period matches the initial step for the smaller mass.
+    const double m = std::min(node_mass, p.surface.smallest_node_mass[k]);
+    stiffness = std::max(stiffness, 0.5 * c.soft_scale * m / (c.initial_step * c.initial_step));
+  }
+  return stiffness;
+}
+
+Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t i) {
+  Hit h;
+  const Touch t = find_touch(s, p, i);
+  if (t.segment < 0) return h;
+  const auto k = static_cast<std::size_t>(t.segment);
+  const Index node = p.nodes[i];
+  const double m = s.nodes.mass[static_cast<std::size_t>(node)];
+  const double stiffness = penalty(c, p, i, k, m);
+  const std::array<Index, 4>& seg = p.surface.segments[k];
+  Vec3 v_segment = Vec3::Zero();
+  for (std::size_t j = 0; j < 4; ++j)
+    v_segment += t.at.weights[j] * s.nodes.velocity.col(seg[j]);
+  const Vec3 v = s.nodes.velocity.col(node) - v_segment;
+  const double v_normal = v.dot(t.push);  // > 0: separating
+
+  // Normal force: penalty plus damping (a share of critical for the node's mass, the segment
+  // counted as rigid when it is heavier), never pulling the node back in.
+  const double m_pair =
+      std::isfinite(p.surface.smallest_node_mass[k])
+          ? m * p.surface.smallest_node_mass[k] / (m + p.surface.smallest_node_mass[k])
+          : m;
+  const double damping = c.damping * 2.0 * std::sqrt(stiffness * m_pair);
+  const double normal = std::max(0.0, stiffness * t.depth - damping * v_normal);
+  h.segment = t.segment;
+  h.weights = t.at.weights;
+  h.force = normal * t.push;
+
+  // Coulomb friction on an elastic spring: the carried tangential force, turned into the
+  // current tangent plane, minus k times the slip of this step, capped at mu N (and VC A).
+  if (c.static_friction > 0.0 || c.dynamic_friction > 0.0) {
+    const Vec3 v_tangent = v - v_normal * t.push;
+    const Vec3 carried = p.friction.col(static_cast<Eigen::Index>(i));
+    Vec3 f = carried - carried.dot(t.push) * t.push;
+    f -= stiffness * s.step * v_tangent;
+    const double mu = c.dynamic_friction + (c.static_friction - c.dynamic_friction) *
+                                               std::exp(-c.decay * v_tangent.norm());
+    double limit = mu * normal;
+    if (c.viscous_friction > 0.0) limit = std::min(limit, c.viscous_friction * p.surface.area[k]);
+    const double magnitude = f.norm();
+    if (magnitude > limit) f *= limit / magnitude;
+    h.friction = f;
+    h.force += f;
+  }
+  return h;
+}
+
+}  // namespace
+
+void contact_pass(State& s) {
+  for (Interface& c : s.contacts) {
+    const auto start = std::chrono::steady_clock::now();
+    // What the interface took from the structure (penalty springs and friction), the glstat
+    // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
+    // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
+    // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
+    const double step = s.step;
+    auto charge = [&](Index node, const Vec3& f) {
+      c.energy -= 0.5 * step * f.dot(s.nodes.velocity.col(node));
+    };
+    for (const AppliedForce& a : c.applied)
+      charge(a.node, a.force);
+    c.applied.clear();
+    c.force_a.setZero();
+    c.force_b.setZero();
+    c.moment_a.setZero();
+    c.moment_b.setZero();
+    c.mass_in_contact = 0.0;
+    if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
+    if (s.time < c.birth || s.time > c.death) {
+      for (Pass& p : c.passes)
+        p.friction.setZero();
+      continue;
+    }
+    if (sort_due(s, c)) sort_buckets(s, c);
+    for (Pass& p : c.passes) {
+      const auto n = static_cast<Index>(p.nodes.size());
+      std::vector<Hit> hits(p.nodes.size());
+#pragma omp parallel for schedule(static, 256) if (n > 2048)
+      for (Index i = 0; i < n; ++i)
+        hits[static_cast<std::size_t>(i)] = contact_force(s, c, p, static_cast<std::size_t>(i));
+      // Forces added in node order: the same sums for any thread count.
+      for (std::size_t i = 0; i < hits.size(); ++i) {
+        const Hit& h = hits[i];
+        p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
+        if (h.segment < 0) continue;
+        const Index node = p.nodes[i];
+        const Vec3 x = s.nodes.position.col(node);
+        s.nodes.force.col(node) += h.force;
+        c.applied.push_back({node, h.force});
+        charge(node, h.force);
+        Vec3& on_nodes = p.nodes_on_side_a ? c.force_a : c.force_b;
+        Vec3& on_segments = p.nodes_on_side_a ? c.force_b : c.force_a;
+        Vec3& moment_nodes = p.nodes_on_side_a ? c.moment_a : c.moment_b;
+        Vec3& moment_segments = p.nodes_on_side_a ? c.moment_b : c.moment_a;
+        on_nodes += h.force;
+        moment_nodes += x.cross(h.force);
+        if (p.nodes_on_side_a) c.mass_in_contact += s.nodes.mass[static_cast<std::size_t>(node)];
+        const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
+        for (std::size_t j = 0; j < 4; ++j) {
+          if (h.weights[j] == 0.0) continue;
+          const Vec3 f = -h.weights[j] * h.force;
+          const Vec3 xj = s.nodes.position.col(seg[j]);
+          s.nodes.force.col(seg[j]) += f;
+          c.applied.push_back({seg[j], f});
+          charge(seg[j], f);
+          on_segments += f;
+          moment_segments += xj.cross(f);
+        }
+      }
+    }
+    c.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+}
+
+}  // namespace mcdyna::solver::contact

@@ -1,0 +1,83 @@
+#pragma once
+/// Penalty contact state (*CONTACT_[AUTOMATIC_]NODES_TO_SURFACE / SURFACE_TO_SURFACE,
+/// keywords.md §2.15): slave nodes (FE nodes or SPG particles) against master segments (shell
+/// elements or the free faces of solid elements), compiled by solver/compile_contact.cpp and
+/// run by contact_pass (contact.hpp) once per cycle after the internal forces.
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/entities.hpp"
+
+namespace mcdyna::solver::contact {
+
+using Index = std::int32_t;
+using Vec3 = Eigen::Vector3d;
+
+/// Segments of a contact surface: 4 nodes (a triangle repeats its third), normal by the right-hand
+/// rule over the node order (outward for the free faces of solids).
+struct Surface {
+  std::vector<std::array<Index, 4>> segments;
+  std::vector<double> stiffness;  ///< SOFT 0 penalty per segment, scale factors included
+  /// Half the contact thickness: two-sided shells (automatic contact) are touched on either side
+  /// at this distance from the mid-surface; 0 for one-sided segments.
+  std::vector<double> half_thickness;
+  std::vector<std::uint8_t> two_sided;
+  std::vector<double> smallest_node_mass;  ///< for SOFT 1; +inf on rigid bodies
+  std::vector<double> area;                ///< initial, for VC
+};
+
+/// One direction of a contact: nodes of one side checked against the segments of the other.
+/// A surface-to-surface contact has two (A nodes on B segments, B nodes on A segments).
+struct Pass {
+  std::vector<Index> nodes;       ///< slave nodes, ascending
+  std::vector<double> stiffness;  ///< SOFT 0 penalty per slave node, scale factors included
+  bool nodes_on_side_a = true;    ///< for the resultants: which side the nodes belong to
+  Surface surface;
+  // Search (contact_search.cpp): candidate segments per node (CSR over `nodes`).
+  std::vector<Index> candidate_offsets, candidates;
+  // Friction state per node: the tangential force carried over from the last cycle.
+  Eigen::Matrix3Xd friction;
+};
+
+/// A force applied at the last pass, kept to charge its work over the following step.
+struct AppliedForce {
+  Index node = 0;
+  Vec3 force = Vec3::Zero();
+};
+
+struct Interface {
+  model::Id id = 0;
+  std::string heading;
+  bool automatic = true;
+  std::vector<Pass> passes;
+  double static_friction = 0.0, dynamic_friction = 0.0, decay = 0.0;  ///< FS, FD, DC (x FSF)
+  double viscous_friction = 0.0;  ///< VC (x VSF): limit of the friction stress
+  double damping = 0.0;           ///< VDC / 100: share of critical damping on the normal force
+  double birth = 0.0, death = 1.0e20;
+  int soft = 0;
+  double soft_scale = 0.1;    ///< SOFSCL
+  int penalty_option = 1;     ///< PENOPT: 1 min(node, segment), 2 segment, 3 node
+  int sort_interval = 10;     ///< cycles between bucket sorts (NSBCS; sooner if nodes moved far)
+  double initial_step = 0.0;  ///< the first solution step, for SOFT 1 (0 until known)
+
+  // Search state.
+  long last_sort = -1;
+  Eigen::Matrix3Xd sorted_positions;  ///< of all nodes at the last sort (slave and master)
+  std::vector<Index> tracked;         ///< nodes whose motion triggers an early sort
+  double capture = 0.0;               ///< search margin; a node moving half of it re-sorts
+
+  // Results of the last pass (rcforc) and the work done so far (glstat sliding energy).
+  Vec3 force_a = Vec3::Zero(), force_b = Vec3::Zero();    ///< on side A / side B nodes
+  Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();  ///< about the origin
+  double mass_in_contact = 0.0;                           ///< of the A nodes in contact
+  double energy = 0.0;  ///< work the contact forces took from the structure
+  long searches = 0;
+  double seconds = 0.0;  ///< wall time in contact_pass (the phase table's "contact")
+  std::vector<AppliedForce> applied;
+};
+
+}  // namespace mcdyna::solver::contact
