@@ -10,6 +10,7 @@
 
 #include "solver/compile.hpp"
 #include "solver/fe/hex_geometry.hpp"
+#include "solver/material/constitutive.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -125,7 +126,7 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   for (std::size_t p = 0; p < parts; ++p) {
     const PartInfo& info = s.parts[p];
     if (info.material >= 0) {
-      bulk[p] = s.materials[static_cast<std::size_t>(info.material)].bulk_modulus;
+      bulk[p] = reference_bulk_modulus(s.materials[static_cast<std::size_t>(info.material)]);
     } else if (const model::Material* mat = m.material(info.material_id)) {
       const double e = mat->rigid.youngs_modulus, nu = mat->rigid.poisson_ratio;
       bulk[p] = e / (3.0 * (1.0 - 2.0 * nu));
@@ -174,9 +175,8 @@ std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface
         kn = std::max(kn, p.surface.stiffness[j]);
       }
   for (const spg::Domain& d : s.spg) {
-    const double bulk =
-        s.materials[static_cast<std::size_t>(s.parts[static_cast<std::size_t>(d.part)].material)]
-            .bulk_modulus;
+    const double bulk = reference_bulk_modulus(
+        s.materials[static_cast<std::size_t>(s.parts[static_cast<std::size_t>(d.part)].material)]);
     for (std::size_t i = 0; i < d.nodes.size(); ++i)
       k[static_cast<std::size_t>(d.nodes[i])] = bulk * std::cbrt(d.initial_volume[i]);
   }
@@ -365,6 +365,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
         }
       }
       p.friction.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
+      p.side.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
       return p;
     };
     in.passes.push_back(make_pass(a, c.penalty_scale_a, b, c.penalty_scale_b, c.thickness_b, true));

@@ -18,8 +18,8 @@ namespace {
 // A node whose closest point lies beyond the segment's edges by more than this share of the
 // segment's size is not in contact with it (its neighbour segment, or none, holds it).
 constexpr double kEdgeTolerance = 0.1;
-// One-sided segments release a node that has passed more than this share of their size
-// through them: it is then on the far side of a thin part, not inside the body.
+// A node that has passed more than this share of the segment's size beyond its contact surface
+// is released: it is then on the far side of a thin part, not inside the body.
 constexpr double kReleaseDepth = 0.5;
 
 struct Hit {
@@ -27,6 +27,7 @@ struct Hit {
   std::array<double, 4> weights{};
   Vec3 force = Vec3::Zero();     ///< on the slave node
   Vec3 friction = Vec3::Zero();  ///< tangential force to carry to the next cycle
+  Vec3 push = Vec3::Zero();      ///< the side the node is held on (Pass::side)
 };
 
 // The segment the node touches (the nearest candidate, the deeper of equals) and how.
@@ -56,16 +57,16 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
     const double size = std::sqrt(p.surface.area[kk]);
     if ((r - gap * at.normal).norm() > kEdgeTolerance * size) continue;
     const double h = p.surface.half_thickness[kk];
-    double depth;
-    Vec3 push;
+    double side = 1.0;  // one-sided: the normal's side
     if (p.surface.two_sided[kk]) {
-      depth = h - std::abs(gap);
-      push = gap >= 0.0 ? at.normal : Vec3(-at.normal);
-    } else {
-      depth = h - gap;
-      push = at.normal;
-      if (depth > kReleaseDepth * size + h) continue;
+      // The side it was held on last cycle, else the side it is on now.
+      const Vec3 held = p.side.col(static_cast<Eigen::Index>(i));
+      const double was = held.dot(at.normal);
+      side = was != 0.0 ? (was > 0.0 ? 1.0 : -1.0) : (gap >= 0.0 ? 1.0 : -1.0);
     }
+    const double depth = h - side * gap;
+    const Vec3 push = side * at.normal;
+    if (depth > kReleaseDepth * size + h) continue;
     const double distance = r.norm();
     const bool nearer = distance < nearest * (1.0 - 1e-12);
     const bool tie = !nearer && distance <= nearest * (1.0 + 1e-12);
@@ -116,6 +117,7 @@ Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t
   const double normal = std::max(0.0, stiffness * t.depth - damping * v_normal);
   h.segment = t.segment;
   h.weights = t.at.weights;
+  h.push = t.push;
   h.force = normal * t.push;
 
   // Coulomb friction on an elastic spring: the carried tangential force, turned into the
@@ -160,8 +162,10 @@ void contact_pass(State& s) {
     c.mass_in_contact = 0.0;
     if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
     if (s.time < c.birth || s.time > c.death) {
-      for (Pass& p : c.passes)
+      for (Pass& p : c.passes) {
         p.friction.setZero();
+        p.side.setZero();
+      }
       continue;
     }
     if (sort_due(s, c)) sort_buckets(s, c);
@@ -175,6 +179,7 @@ void contact_pass(State& s) {
       for (std::size_t i = 0; i < hits.size(); ++i) {
         const Hit& h = hits[i];
         p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
+        p.side.col(static_cast<Eigen::Index>(i)) = h.push;
         if (h.segment < 0) continue;
         const Index node = p.nodes[i];
         const Vec3 x = s.nodes.position.col(node);

@@ -45,15 +45,23 @@ void sort_pass(const State& s, Pass& p, double margin) {
   std::vector<Box> boxes(segments);
   Grid grid;
   grid.origin = Vec3::Constant(1e300);
-  double largest = 0.0;
+  std::vector<double> extents(segments);
   for (std::size_t k = 0; k < segments; ++k) {
     boxes[k] = segment_box(s, p.surface, k, margin);
     grid.origin = grid.origin.cwiseMin(boxes[k].lo);
-    largest = std::max(largest, (boxes[k].hi - boxes[k].lo).maxCoeff());
+    extents[k] = (boxes[k].hi - boxes[k].lo).maxCoeff();
   }
   for (const Index n : p.nodes)
     grid.origin = grid.origin.cwiseMin(s.nodes.position.col(n));
-  grid.cell = largest > 0.0 ? largest : 1.0;
+  // Cells of twice the median widened segment: a node sees the few segments around it, and the
+  // odd large segment (a fan closing a screw's end) is binned into every cell it covers.
+  double cell = 1.0;
+  if (segments > 0) {
+    auto middle = extents.begin() + static_cast<long>(segments / 2);
+    std::nth_element(extents.begin(), middle, extents.end());
+    cell = 2.0 * *middle;
+  }
+  grid.cell = cell > 0.0 ? cell : 1.0;
   std::vector<std::pair<Key, Index>> bins;
   for (std::size_t k = 0; k < segments; ++k) {
     const Eigen::Array3i lo = grid.cell_of(boxes[k].lo), hi = grid.cell_of(boxes[k].hi);

@@ -41,6 +41,10 @@ struct Pass {
   std::vector<Index> candidate_offsets, candidates;
   // Friction state per node: the tangential force carried over from the last cycle.
   Eigen::Matrix3Xd friction;
+  // Per node, the direction the node was pushed last cycle (zero when not in contact): a node on
+  // a two-sided segment stays on the side it came from however deep it goes (as LS-DYNA's
+  // automatic contacts track it), instead of being pushed through once past the mid-surface.
+  Eigen::Matrix3Xd side;
 };
 
 /// A force applied at the last pass, kept to charge its work over the following step.

@@ -281,15 +281,17 @@ inline bool apply_pressure_cutoff(const Material& m, double& pressure) {
   return true;
 }
 
+/// Bulk modulus at the reference state: the EOS's (rho0 C^2 for Gruneisen, C1 for the linear
+/// polynomial) when the material has one, else the elastic K.
+inline double reference_bulk_modulus(const Material& m) {
+  if (m.eos.kind == EosModel::gruneisen) return m.density * m.eos.sound_speed * m.eos.sound_speed;
+  if (m.eos.kind == EosModel::linear_polynomial) return m.eos.c[1];
+  return m.bulk_modulus;
+}
+
 /// Dilatational wave speed squared at the current density.
 inline double wave_speed_squared(const Material& m, double relative_volume) {
-  double bulk = m.bulk_modulus;
-  if (m.eos.kind == EosModel::gruneisen) {
-    bulk = m.density * m.eos.sound_speed * m.eos.sound_speed;
-  } else if (m.eos.kind == EosModel::linear_polynomial) {
-    bulk = m.eos.c[1];
-  }
-  return (bulk + 4.0 / 3.0 * m.shear_modulus) * relative_volume / m.density;
+  return (reference_bulk_modulus(m) + 4.0 / 3.0 * m.shear_modulus) * relative_volume / m.density;
 }
 
 }  // namespace mcdyna::solver

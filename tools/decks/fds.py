@@ -1,0 +1,287 @@
+#!/usr/bin/python3
+"""Writes the flow-drill-screw (FDS) thread-forming deck of the MC-SPG paper (§4.3): a rigid M5
+screw (conical tip, 0.7 mm pitch thread) spinning and plunging through a 1.5 mm 6061-T6 plate of
+20 mm diameter whose central Ø7 mm region is MC-SPG (ITB 3, bond failure FS 0.4, STRETCH 1.15),
+joined by common nodes to an outer FE ring clamped at its perimeter; JC-1 with a Grüneisen EOS;
+penalty contact with friction 0.3. Units t, mm, s, N, MPa. Deterministic: same arguments, same
+bytes.
+
+The paper's two-stage schedule: 5000 rpm at 2.0 m/s while the tip penetrates, then 20,000 rpm at
+0.2 m/s (0.6 mm per turn against the 0.7 mm pitch: the plate extrudes up along the thread).
+--time-scale S runs it S times faster (all speeds x S, times / S) so a coarse run finishes on a
+workstation; --mass-scaling DT adds mass where the step is below DT (DT2MS). Both are stated in
+the deck header. --fe-erosion makes the whole plate FE hexahedra with erosion at an effective
+plastic strain of 0.4, the paper's comparison.
+
+usage: fds.py H OUT.k [--time-scale 10] [--mass-scaling 0] [--msc 0] [--stage2 2.1]
+                      [--fe-erosion] [--states 60]
+"""
+import argparse
+import math
+
+from spg_section import field
+from taylor_bar import section
+
+PLATE_RADIUS, SPG_RADIUS, THICKNESS = 10.0, 3.5, 1.5
+MAJOR, PITCH = 2.5, 0.7  # thread major radius, pitch
+DEPTH = 0.433            # ISO M5 thread depth (major - minor) / 2
+TIP_LENGTH, TIP_RADIUS = 3.0, 0.3  # conical tip from TIP_RADIUS at the point to MAJOR
+THREADED = 7 * PITCH     # threaded length above the cone: whole turns keep the centre of mass
+                         # on the axis (the prescribed spin is about it)
+CLEARANCE = 0.05         # tip above the plate at t = 0
+STAGE1 = (5000.0, 2000.0)   # rpm, mm/s
+STAGE2 = (20000.0, 200.0)
+
+
+def thread_radius(z, theta):
+    """Radius of the threaded surface at height z (from the tip point) and angle theta: ISO-like
+    triangular profile, root flat P/4, crest flat P/8, right-handed."""
+    phase = ((z - PITCH * theta / (2.0 * math.pi)) / PITCH) % 1.0
+    root, crest = 0.25, 0.125
+    flank = (1.0 - root - crest) / 2.0
+    if phase < root:
+        f = 0.0
+    elif phase < root + flank:
+        f = (phase - root) / flank
+    elif phase < root + flank + crest:
+        f = 1.0
+    else:
+        f = 1.0 - (phase - root - flank - crest) / flank
+    return MAJOR - DEPTH + DEPTH * f
+
+
+def screw_radius(z, theta):
+    """A smooth cone (axisymmetric) up to TIP_LENGTH, the thread above it."""
+    if z < TIP_LENGTH:
+        return TIP_RADIUS + (MAJOR - TIP_RADIUS) * z / TIP_LENGTH
+    return thread_radius(z - TIP_LENGTH, theta)
+
+
+def screw_surface(h, z0):
+    """Quadrilateral shells of the screw surface on a (theta, z) grid, closed by triangle fans at
+    the tip and the top; normals outward. Returns nodes [(x, y, z)] and shells [(n1..n4)]."""
+    n_theta = 8 * max(12, round(2.0 * math.pi * MAJOR / h / 8.0))
+    per_pitch = max(8, math.ceil(PITCH / h))
+    dz = PITCH / per_pitch
+    n_z = math.ceil(TIP_LENGTH / dz) + round(THREADED / dz)
+    length = n_z * dz
+    nodes, shells = [], []
+    for k in range(n_z + 1):
+        z = length * k / n_z
+        for j in range(n_theta):
+            t = 2.0 * math.pi * j / n_theta
+            r = screw_radius(z, t)
+            nodes.append((r * math.cos(t), r * math.sin(t), z0 + z))
+    ring = lambda k, j: k * n_theta + (j % n_theta)
+    for k in range(n_z):
+        for j in range(n_theta):
+            # Counter-clockwise seen from outside: theta then z.
+            shells.append((ring(k, j), ring(k, j + 1), ring(k + 1, j + 1), ring(k + 1, j)))
+    tip = len(nodes)
+    nodes.append((0.0, 0.0, z0))
+    top = len(nodes)
+    nodes.append((0.0, 0.0, z0 + length))
+    for j in range(n_theta):
+        shells.append((tip, ring(0, j + 1), ring(0, j), ring(0, j)))
+        shells.append((top, ring(n_z, j), ring(n_z, j + 1), ring(n_z, j + 1)))
+    return nodes, shells, n_theta, n_z
+
+
+def plate_section(h):
+    """In-plane mesh of the plate: the butterfly disc of radius SPG_RADIUS (inner square of half
+    width R/2 with spacing about h, radial spacing h on the axes, 1.5 h along the rim) and an FE
+    ring out to PLATE_RADIUS on the same rim nodes, its radial spacing growing from h by 20 % a
+    ring. Returns points, quads of the disc, quads of the ring, the perimeter points."""
+    n = max(2, round(2.0 * math.pi * SPG_RADIUS / (1.5 * h) / 8.0))
+    nr = max(2, round((SPG_RADIUS - 0.5 * SPG_RADIUS) / h))
+    pts, quads = section(n, nr, SPG_RADIUS)
+    # The rim nodes of the butterfly, by angle.
+    rim = sorted((i for i, (x, y) in enumerate(pts)
+                  if abs(math.hypot(x, y) - SPG_RADIUS) < 1e-9),
+                 key=lambda i: math.atan2(pts[i][1], pts[i][0]))
+    radii, r, step = [SPG_RADIUS], SPG_RADIUS, h
+    while r < PLATE_RADIUS - 1e-9:
+        step *= 1.2
+        r = min(PLATE_RADIUS, r + step)
+        if PLATE_RADIUS - r < 0.5 * step:
+            r = PLATE_RADIUS
+        radii.append(r)
+    ring_quads, prev = [], rim
+    for r in radii[1:]:
+        cur = []
+        for i in rim:
+            a = math.atan2(pts[i][1], pts[i][0])
+            cur.append(len(pts))
+            pts.append((r * math.cos(a), r * math.sin(a)))
+        m = len(rim)
+        for j in range(m):
+            ring_quads.append([prev[j], cur[j], cur[(j + 1) % m], prev[(j + 1) % m]])
+        prev = cur
+    return pts, quads, ring_quads, prev
+
+
+def orient(pts, quads):
+    for q in quads:
+        area = sum(pts[q[k]][0] * pts[q[(k + 1) % 4]][1] - pts[q[(k + 1) % 4]][0] * pts[q[k]][1]
+                   for k in range(4))
+        if area < 0:
+            q.reverse()
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("h", type=float, help="nodal distance in the MC-SPG region, mm")
+    ap.add_argument("out")
+    ap.add_argument("--time-scale", type=float, default=10.0)
+    ap.add_argument("--mass-scaling", type=float, default=0.0, help="DT2MS (s, > 0)")
+    ap.add_argument("--msc", type=int, default=0)
+    ap.add_argument("--stage2", type=float, default=2.1, help="plunge in stage 2, mm")
+    ap.add_argument("--fe-erosion", action="store_true")
+    ap.add_argument("--states", type=int, default=60)
+    a = ap.parse_args()
+    h, scale = a.h, a.time_scale
+    layers = max(2, round(THICKNESS / h))
+    pts, disc, ring, perimeter = plate_section(h)
+    orient(pts, disc)
+    orient(pts, ring)
+    npl = len(pts)
+
+    # Schedule: stage 1 until the tip is through and the thread reaches the plate.
+    plunge1 = CLEARANCE + TIP_LENGTH + THICKNESS
+    v1, v2 = STAGE1[1] * scale, STAGE2[1] * scale
+    w1, w2 = STAGE1[0] * scale * 2 * math.pi / 60, STAGE2[0] * scale * 2 * math.pi / 60
+    t1 = plunge1 / v1
+    t_end = t1 + a.stage2 / v2
+    ramp = 0.02 * t1
+
+    screw_nodes, screw_shells, n_theta, n_z = screw_surface(h, THICKNESS + CLEARANCE)
+    first_screw = 1_000_001
+    out = []
+    w = out.append
+    method = "FE hexahedra with erosion at plastic strain 0.4" if a.fe_erosion else "MC-SPG centre"
+    w("$ " + "-" * 94)
+    w(f"$ fds h = {h} mm ({method}) - written by tools/decks/fds.py")
+    w("$ What it shows: a rigid M5 flow-drill screw (0.7 mm pitch, conical tip) spinning and")
+    w("$   plunging through a 1.5 mm 6061-T6 plate (JC-1 + Gruneisen), MC-SPG paper section 4.3.")
+    w(f"$ Schedule (paper): {STAGE1[0]:.0f} rpm at {STAGE1[1] / 1000:.1f} m/s for the first "
+      f"{plunge1:.2f} mm, then {STAGE2[0]:.0f} rpm at {STAGE2[1] / 1000:.1f} m/s for "
+      f"{a.stage2:.2f} mm.")
+    w(f"$ TIME SCALE {scale:g}: every speed x {scale:g} and every time / {scale:g} "
+      f"(stage 1 ends at {t1:.4e} s, end {t_end:.4e} s).")
+    w(f"$ MASS SCALING: {'DT2MS = %g s' % a.mass_scaling if a.mass_scaling > 0 else 'none'}.")
+    w(f"$ Plate: {layers} layers through 1.5 mm; Ø7 mm centre "
+      f"{'FE' if a.fe_erosion else 'MC-SPG'}, FE ring to Ø20 mm, perimeter clamped.")
+    w(f"$ How to run: mcdyna run {a.out} --out results/fds; tools/verify/fds_force.py results/fds")
+    w("$ " + "-" * 94)
+    w("*KEYWORD")
+    w("*TITLE")
+    w(f"FDS thread forming h {h} mm" + (" FE erosion" if a.fe_erosion else " MC-SPG"))
+    w("*CONTROL_TERMINATION")
+    w(f"{t_end:10.4E}")
+    w("*CONTROL_TIMESTEP")
+    w(f"       0.0       0.9         0       0.0{field(-a.mass_scaling) if a.mass_scaling else '       0.0'}")
+    w("*CONTROL_CONTACT")
+    w("       0.1")
+    w("*DATABASE_BINARY_D3PLOT")
+    w(f"{t_end / a.states:10.4E}")
+    for name in ("GLSTAT", "MATSUM", "RCFORC", "BNDOUT", "NODOUT"):
+        w(f"*DATABASE_{name}")
+        w(f"{t_end / 400:10.4E}")
+    w("*DATABASE_HISTORY_NODE")
+    w(f"{first_screw + len(screw_nodes) - 2:10d}")  # the screw's tip point
+    # Parts: 1 centre (SPG or FE), 2 FE ring, 3 screw.
+    w("*PART")
+    w("plate centre")
+    w(f"         1         {2 if a.fe_erosion else 1}         1         1         1")
+    w("*PART")
+    w("plate ring")
+    w("         2         2         1         1         1")
+    w("*PART")
+    w("screw")
+    w("         3         3         2")
+    if not a.fe_erosion:
+        w("*SECTION_SOLID_SPG")
+        w("$    SECID    ELFORM")
+        w("         1        47")
+        w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
+        w(f"       1.5       1.5       1.5         0         0                  15{float(a.msc):10.1f}")
+        w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
+        w("         1       0.4      1.15         3       1.0         0         0    -0.001")
+    w("*SECTION_SOLID")
+    w("         2         1")
+    w("*SECTION_SHELL")
+    w("         3         2")
+    w("      0.02      0.02      0.02      0.02")
+    w("*HOURGLASS")
+    w("         1         4       0.1")
+    w("*MAT_JOHNSON_COOK_TITLE")
+    w("AA6061-T6 JC-1")
+    w("         1    2.7E-9   26000.0")
+    w("     324.0     114.0      0.42     0.002      1.34     925.0     293.0       1.0")
+    w("    8.96E8       0.0       2.0")
+    if a.fe_erosion:
+        w("*MAT_ADD_EROSION")
+        w("         1       0.0       0.0       0.0       0.4")
+    w("*EOS_GRUNEISEN")
+    w("         1 5386000.0     1.339       0.0       0.0      1.99       0.0")
+    w("*MAT_RIGID_TITLE")
+    w("screw steel")
+    w("         2   7.85E-9  210000.0       0.3")
+    w("       1.0         4         4")
+    # Plate nodes, layer by layer from the bottom (z = 0) to the top (z = 1.5).
+    w("*NODE")
+    for k in range(layers + 1):
+        z = THICKNESS * k / layers
+        for p, (x, y) in enumerate(pts):
+            w(f"{1 + p + npl * k:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}")
+    for i, (x, y, z) in enumerate(screw_nodes):
+        w(f"{first_screw + i:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}")
+    w("*ELEMENT_SOLID")
+    e = 0
+    for part, quads in ((1, disc), (2, ring)):
+        for k in range(layers):
+            for q in quads:
+                e += 1
+                ids = [1 + v + npl * k for v in q] + [1 + v + npl * (k + 1) for v in q]
+                w(f"{e:8d}{part:8d}" + "".join(f"{v:8d}" for v in ids))
+    w("*ELEMENT_SHELL")
+    for i, s in enumerate(screw_shells):
+        w(f"{1_000_001 + i:8d}{3:8d}" + "".join(f"{first_screw + v:8d}" for v in s))
+    # Clamped perimeter.
+    w("*SET_NODE_LIST")
+    w("         1")
+    ids = [1 + v + npl * k for k in range(layers + 1) for v in perimeter]
+    for i in range(0, len(ids), 8):
+        w("".join(f"{v:10d}" for v in ids[i:i + 8]))
+    w("*BOUNDARY_SPC_SET")
+    w("         1         0         1         1         1         1         1         1")
+    # Screw motion: plunge along -z (DOF 3, velocity), spin about z (DOF 7, angular velocity).
+    w("*BOUNDARY_PRESCRIBED_MOTION_RIGID")
+    w("         3         3         0         1      -1.0")
+    w("         3         7         0         2       1.0")
+    for lcid, (s1, s2) in ((1, (v1, v2)), (2, (w1, w2))):
+        w("*DEFINE_CURVE")
+        w(f"{lcid:10d}")
+        for t, v in ((0.0, 0.0), (ramp, s1), (t1, s1), (t1 + ramp, s2), (2.0 * t_end, s2)):
+            w(f"{t:20.10E}{v:20.10E}")
+    w("*SET_PART_LIST")
+    w("         1")
+    w("         1         2")
+    # Soft constraint (SOFT 1): the aluminium particles against the steel screw get the larger of
+    # the standard penalty and one matched to their mass and the step (keywords.md §2.15).
+    w("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID")
+    w("         1screw on plate")
+    w("         1         3         2         3")
+    w("       0.3       0.3")
+    w("")
+    w("         1       0.1")
+    w("*END")
+    with open(a.out, "w") as f:
+        f.write("\n".join(out) + "\n")
+    print(f"{a.out}: {npl * (layers + 1)} plate nodes ({len(disc) * layers} centre, "
+          f"{len(ring) * layers} ring elements), screw {len(screw_nodes)} nodes / "
+          f"{len(screw_shells)} shells ({n_theta} x {n_z}), end {t_end:.4e} s")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""Force on the flow-drill screw against plunge distance (MC-SPG paper Fig. 11) from an FDS run
+(decks/fds/, tools/decks/fds.py): the axial contact force on the screw from rcforc.csv (master
+side, +z = the plate pushing the screw back: compressive thrust), the torque about the screw
+axis (the master moment about z; the axis is x = y = 0), and the plunge from the screw tip's
+z displacement in nodout.csv. Writes force_vs_plunge.csv (one header row) and, with --png, the
+plot; prints the peak thrust and where it occurs, the break-through (the thrust falling below
+half its peak after it) and the first sign reversal (tension) after the peak.
+
+usage: fds_force.py RUN_DIR [--png out.png] [--label TEXT] [RUN_DIR2 ...]
+"""
+import argparse
+import csv
+import os
+
+import numpy as np
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def history(run):
+    rc = [r for r in read_csv(os.path.join(run, "rcforc.csv")) if r["side"] == "master"]
+    t = np.array([float(r["time"]) for r in rc])
+    fz = np.array([float(r["z_force"]) for r in rc])
+    mz = np.array([float(r["z_moment"]) for r in rc])
+    nod = read_csv(os.path.join(run, "nodout.csv"))
+    tn = np.array([float(r["time"]) for r in nod])
+    zd = np.array([float(r["z_disp"]) for r in nod])
+    plunge = np.interp(t, tn, -zd)
+    return t, plunge, fz, mz
+
+
+def summary(plunge, fz):
+    k = int(np.argmax(fz))
+    out = {"peak_thrust": fz[k], "plunge_at_peak": plunge[k]}
+    after = np.nonzero(fz[k:] < 0.5 * fz[k])[0]
+    out["break_through"] = plunge[k + after[0]] if after.size else float("nan")
+    reversal = np.nonzero(fz[k:] < 0.0)[0]
+    out["sign_reversal"] = plunge[k + reversal[0]] if reversal.size else float("nan")
+    out["largest_tension"] = -fz.min() if fz.min() < 0.0 else 0.0
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--png")
+    ap.add_argument("--label", action="append")
+    a = ap.parse_args()
+    curves = []
+    for i, run in enumerate(a.runs):
+        t, plunge, fz, mz = history(run)
+        with open(os.path.join(run, "force_vs_plunge.csv"), "w") as f:
+            f.write("time,plunge,axial_force,torque\n")
+            for row in zip(t, plunge, fz, mz):
+                f.write(",".join(f"{v:.9e}" for v in row) + "\n")
+        s = summary(plunge, fz)
+        label = a.label[i] if a.label and i < len(a.label) else run
+        print(f"{label}: peak thrust {s['peak_thrust']:.1f} N at plunge {s['plunge_at_peak']:.3f} mm; "
+              f"thrust below half the peak from {s['break_through']:.3f} mm; first tension at "
+              f"{s['sign_reversal']:.3f} mm; largest tension {s['largest_tension']:.1f} N; "
+              f"largest torque {np.abs(mz).max():.2f} N mm")
+        curves.append((label, plunge, fz, mz))
+    if a.png:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
+        for label, plunge, fz, mz in curves:
+            ax.plot(plunge, fz, label=label)
+            bx.plot(plunge, mz, label=label)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_ylabel("axial force on the screw, N (+ thrust)")
+        bx.set_ylabel("torque about the axis, N mm")
+        bx.set_xlabel("plunge distance, mm")
+        ax.legend()
+        ax.grid(alpha=0.3)
+        bx.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=120)
+        print(f"wrote {a.png}")
+
+
+if __name__ == "__main__":
+    main()
