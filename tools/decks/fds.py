@@ -135,6 +135,7 @@ def main():
     ap.add_argument("--time-scale", type=float, default=10.0)
     ap.add_argument("--mass-scaling", type=float, default=0.0, help="DT2MS (s, > 0)")
     ap.add_argument("--msc", type=int, default=0)
+    ap.add_argument("--kernel", type=int, default=0, help="KERNEL: 0 updated Lagrangian, 1 Eulerian")
     ap.add_argument("--stage2", type=float, default=2.1, help="plunge in stage 2, mm")
     ap.add_argument("--fe-erosion", action="store_true")
     ap.add_argument("--states", type=int, default=60)
@@ -204,7 +205,9 @@ def main():
         w("$    SECID    ELFORM")
         w("         1        47")
         w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
-        w(f"       1.5       1.5       1.5         0         0                  15{float(a.msc):10.1f}")
+        smstep = 5 if a.kernel == 1 else 15
+        w(f"       1.5       1.5       1.5         0{a.kernel:10d}          {smstep:10d}"
+          f"{float(a.msc):10.1f}")
         w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
         w("         1       0.4      1.15         3       1.0         0         0    -0.001")
     w("*SECTION_SOLID")
