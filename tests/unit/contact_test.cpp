@@ -20,8 +20,9 @@ namespace {
 std::string rigid_plate(double x0, double y0, double x1, double y1, double shift = 0.0) {
   return "*PART\nplate\n9,9,9\n*SECTION_SHELL\n9\n1.0,1.0,1.0,1.0\n"
          "*MAT_RIGID\n9,7.85e-9,210000.0,0.3\n1,7,7\n" +
-         fmt::format("*NODE\n9001,{0},{1},{4}\n9002,{2},{1},{4}\n9003,{2},{3},{4}\n9004,{0},{3},{4}\n",
-                     x0, y0, x1, y1, -0.5 - shift) +
+         fmt::format(
+             "*NODE\n9001,{0},{1},{4}\n9002,{2},{1},{4}\n9003,{2},{3},{4}\n9004,{0},{3},{4}\n", x0,
+             y0, x1, y1, -0.5 - shift) +
          "*ELEMENT_SHELL\n9001,9,9001,9002,9003,9004\n";
 }
 
@@ -64,9 +65,8 @@ TEST_CASE("contact: an elastic bar dropped on a rigid shell plate rebounds, impu
   // longer as it rings), rebound at the impact speed.
   const double c = std::sqrt(210000.0 / 7.85e-9), contact_time = 2.0 * 20.0 / c;
   const double end = 2e-6 + 1.5 * contact_time;
-  Simulation sim =
-      prepare(dir, header(end) + kBar + rigid_plate(-10, -10, 12, 12) +
-                       "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n");
+  Simulation sim = prepare(dir, header(end) + kBar + rigid_plate(-10, -10, 12, 12) +
+                                    "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n");
   REQUIRE(sim.state->contacts.size() == 1);
   const double mass = 80.0 * 7.85e-9;
   double impulse = 0.0, lowest = 0.0, first = -1.0, last = -1.0;
@@ -115,8 +115,8 @@ TEST_CASE("contact: a node stays on the side of a thin two-sided shell it came f
   // The bar on a rigid plate only 0.004 mm thick (automatic contact: touched 0.002 mm from its
   // mid-surface on either side) at the top face z = 0: the impact drives the foot ~0.01 mm in,
   // past the mid-surface. Held on the side it came from, the bar still rebounds.
-  std::string plate = with(rigid_plate(-10, -10, 12, 12, -0.498), "1.0,1.0,1.0,1.0",
-                           "0.004,0.004,0.004,0.004");
+  std::string plate =
+      with(rigid_plate(-10, -10, 12, 12, -0.498), "1.0,1.0,1.0,1.0", "0.004,0.004,0.004,0.004");
   const double end = 2e-6 + 1.5 * 2.0 * 20.0 / std::sqrt(210000.0 / 7.85e-9);
   Simulation sim = prepare(dir, header(end) + kBar + plate +
                                     "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n");
@@ -159,15 +159,16 @@ TEST_CASE("contact: a block slides down an inclined rigid plane at g (sin - mu c
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i)
-        elements += fmt::format("{},1,{},{},{},{},{},{},{},{}\n", e++, id(i, j, k),
-                                id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                                id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-                                id(i, j + 1, k + 1));
+        elements += fmt::format("{},1,{},{},{},{},{},{},{},{}\n", e++, id(i, j, k), id(i + 1, j, k),
+                                id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                                id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1));
   const Eigen::Vector3d down_slope = turn * Eigen::Vector3d::UnitX();
   const double v0 = 50.0, end = 0.02;
   const std::string deck =
-      header(end) + "*PART\nblock\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,7.85e-9,1000.0,0.3\n" +
-      "*PART\nplane\n9,9,9\n*SECTION_SHELL\n9\n1.0,1.0,1.0,1.0\n*MAT_RIGID\n9,7.85e-9,210000.0,0.3\n"
+      header(end) +
+      "*PART\nblock\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,7.85e-9,1000.0,0.3\n" +
+      "*PART\nplane\n9,9,9\n*SECTION_SHELL\n9\n1.0,1.0,1.0,1.0\n*MAT_RIGID\n9,7.85e-9,210000.0,0."
+      "3\n"
       "1,7,7\n" +
       nodes + elements + "*ELEMENT_SHELL\n9001,9,9001,9002,9003,9004\n*SET_PART_LIST\n1\n1\n" +
       fmt::format("*INITIAL_VELOCITY_GENERATION\n1,1,0,{},{},{}\n0,0,0\n", v0 * down_slope.x(),
@@ -193,8 +194,8 @@ TEST_CASE("contact: a block slides down an inclined rigid plane at g (sin - mu c
     }
   const double slope = (count * stv - st * sv) / (count * stt - st * st);
   const double expected = g * (std::sin(angle) - mu * std::cos(angle));
-  MESSAGE("down-slope acceleration ", slope, " mm/s^2 (analytic ", expected, "), deepest ",
-          deepest, " mm");
+  MESSAGE("down-slope acceleration ", slope, " mm/s^2 (analytic ", expected, "), deepest ", deepest,
+          " mm");
   // The normal force oscillates on the contact springs about m g cos; friction follows it while
   // sliding, so the mean deceleration is mu g cos. Measured within 0.5 %.
   CHECK(slope == doctest::Approx(expected).epsilon(0.01).scale(0.0));
@@ -205,14 +206,15 @@ TEST_CASE("contact: surface to surface runs both ways and keeps the total moment
   TempDir dir;
   // Two elastic cubes (1 mm, 2 x 2 x 2 elements) meeting head-on at 10 m/s each along z; part
   // 2 above part 1 with a 0.01 mm gap.
-  const std::string deck =
-      header(4e-6) + "*PART\nlow\n1,1,1\n*PART\nhigh\n2,1,1\n*SECTION_SOLID\n1,1\n"
-                     "*MAT_ELASTIC\n1,7.85e-9,210000.0,0.3\n" +
-      box_mesh(2, 2, 2, 0.5, 1, 1, 1, 0.0) + box_mesh(2, 2, 2, 0.5, 101, 101, 2, 1.01) +
-      "*SET_PART_LIST\n1\n1\n*SET_PART_LIST\n2\n2\n"
-      "*INITIAL_VELOCITY_GENERATION\n1,1,0,0,0,10000\n0,0,0\n"
-      "*INITIAL_VELOCITY_GENERATION\n2,1,0,0,0,-10000\n0,0,0\n"
-      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n0,0\n\n*END\n";
+  const std::string deck = header(4e-6) +
+                           "*PART\nlow\n1,1,1\n*PART\nhigh\n2,1,1\n*SECTION_SOLID\n1,1\n"
+                           "*MAT_ELASTIC\n1,7.85e-9,210000.0,0.3\n" +
+                           box_mesh(2, 2, 2, 0.5, 1, 1, 1, 0.0) +
+                           box_mesh(2, 2, 2, 0.5, 101, 101, 2, 1.01) +
+                           "*SET_PART_LIST\n1\n1\n*SET_PART_LIST\n2\n2\n"
+                           "*INITIAL_VELOCITY_GENERATION\n1,1,0,0,0,10000\n0,0,0\n"
+                           "*INITIAL_VELOCITY_GENERATION\n2,1,0,0,0,-10000\n0,0,0\n"
+                           "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n0,0\n\n*END\n";
   Simulation sim = prepare(dir, deck);
   REQUIRE(sim.state->contacts.size() == 1);
   CHECK(sim.state->contacts[0].passes.size() == 2);
@@ -239,8 +241,9 @@ TEST_CASE("contact: MC-SPG particles as slave nodes bounce off a rigid plate") {
   TempDir dir;
   // An aluminium MC-SPG cube (4 x 4 x 4 mm, 0.5 mm nodal spacing) falling at 5 m/s.
   const std::string deck =
-      header(1.2e-5) + "*PART\ncube\n1,1,1\n*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,0,,15\n"
-                       "1,,,3\n*MAT_ELASTIC\n1,2.7e-9,70000.0,0.33\n" +
+      header(1.2e-5) +
+      "*PART\ncube\n1,1,1\n*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,0,,15\n"
+      "1,,,3\n*MAT_ELASTIC\n1,2.7e-9,70000.0,0.33\n" +
       box_mesh(8, 8, 8, 0.5, 1, 1, 1, 0.01) + rigid_plate(-5, -5, 10, 10) +
       "*SET_PART_LIST\n1\n1\n*INITIAL_VELOCITY_GENERATION\n1,1,0,0,0,-5000\n0,0,0\n"
       "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
