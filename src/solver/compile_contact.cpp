@@ -190,13 +190,103 @@ struct Side {
   bool has_particles = false;
 };
 
+using FaceOwners = std::map<Face, std::pair<std::size_t, std::size_t>>;
+
+// The nodes and segments of one side of contact c (SURFA/SURFB by its type code); reports what
+// is undefined or unsupported at the contact's card and clears `ok`.
+Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
+                  const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
+                  const model::ContactSide& side, const char* name, bool& ok) {
+  Side out;
+  std::vector<std::size_t> members;
+  auto add_part = [&](model::Id id) {
+    const auto p = m.index.parts.find(id);
+    if (p == model::IdIndex::kNone) {
+      d.error(c.loc, "contact {}: side {}: part {} is not defined", c.id, name, id);
+      ok = false;
+    } else {
+      members.push_back(static_cast<std::size_t>(p));
+    }
+  };
+  if (side.type == 3) {
+    add_part(side.id);
+  } else if (side.type == 2) {
+    const model::PartSet* ps = m.part_set(side.id);
+    if (ps == nullptr) {
+      d.error(c.loc, "contact {}: side {}: part set {} is not defined", c.id, name, side.id);
+      ok = false;
+    } else {
+      for (const model::Id id : ps->parts)
+        add_part(id);
+    }
+  } else if (side.type == 5) {
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      members.push_back(p);
+  } else if (side.type == 4) {
+    out.nodes = node_set_nodes(m, side.id);
+    if (out.nodes.empty()) {
+      d.error(c.loc, "contact {}: side {}: node set {} is not defined or empty", c.id, name,
+              side.id);
+      ok = false;
+    }
+  } else if (side.type == 0) {
+    const auto set = m.index.segment_sets.find(side.id);
+    if (set == model::IdIndex::kNone) {
+      d.error(c.loc, "contact {}: side {}: segment set {} is not defined", c.id, name, side.id);
+      ok = false;
+    } else {
+      for (const auto& ids : m.segment_sets[static_cast<std::size_t>(set)].segments) {
+        Face f{};
+        for (std::size_t k = 0; k < 4; ++k)
+          f[k] = static_cast<Index>(m.index.nodes.find(ids[k]));
+        const auto owner = face_owner.find(sorted(f));
+        if (owner == face_owner.end()) {
+          d.error(c.loc,
+                  "contact {}: side {}: segment {} {} {} {} of set {} is not a free face of a "
+                  "solid or a rigid shell, so its penalty stiffness is unknown",
+                  c.id, name, ids[0], ids[1], ids[2], ids[3], side.id);
+          ok = false;
+          continue;
+        }
+        const PartSurface& ps = parts[owner->second.first];
+        const std::size_t j = owner->second.second;
+        add_segment(out.surface, f, ps.surface.stiffness[j], ps.surface.area[j],
+                    std::isinf(ps.surface.smallest_node_mass[j]));
+        out.shell_thickness.push_back(ps.shell_thickness[j]);
+        out.nodes.insert(out.nodes.end(), f.begin(), f.end());
+      }
+    }
+  } else {
+    d.error(c.loc,
+            "contact {}: side {} type {} is not supported (0 segment set, 2 part set, 3 part, "
+            "4 node set, 5 all parts)",
+            c.id, name, side.type);
+    ok = false;
+  }
+  for (const std::size_t p : members) {
+    const PartSurface& ps = parts[p];
+    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
+      add_segment(out.surface, ps.surface.segments[j], ps.surface.stiffness[j], ps.surface.area[j],
+                  std::isinf(ps.surface.smallest_node_mass[j]));
+      out.shell_thickness.push_back(ps.shell_thickness[j]);
+      out.nodes.insert(out.nodes.end(), ps.surface.segments[j].begin(),
+                       ps.surface.segments[j].end());
+    }
+    out.nodes.insert(out.nodes.end(), ps.particles.begin(), ps.particles.end());
+    out.has_particles = out.has_particles || !ps.particles.empty();
+  }
+  std::sort(out.nodes.begin(), out.nodes.end());
+  out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end()), out.nodes.end());
+  return out;
+}
+
 }  // namespace
 
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   if (m.contacts.empty()) return;
   const std::vector<PartSurface> parts = part_surfaces(m, s);
   const std::vector<double> node_k = node_stiffness(s, parts);
-  std::map<Face, std::pair<std::size_t, std::size_t>> face_owner;  // for segment sets
+  FaceOwners face_owner;  // for segment sets
   for (std::size_t p = 0; p < parts.size(); ++p)
     for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
       face_owner.emplace(sorted(parts[p].surface.segments[j]), std::make_pair(p, j));
@@ -216,91 +306,8 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
                          c.kind == model::ContactKind::surface_to_surface;
     bool ok = true;
-    auto resolve = [&](const model::ContactSide& side, const char* name) {
-      Side out;
-      std::vector<std::size_t> members;
-      auto add_part = [&](model::Id id) {
-        const auto p = m.index.parts.find(id);
-        if (p == model::IdIndex::kNone) {
-          d.error(c.loc, "contact {}: side {}: part {} is not defined", c.id, name, id);
-          ok = false;
-        } else {
-          members.push_back(static_cast<std::size_t>(p));
-        }
-      };
-      if (side.type == 3) {
-        add_part(side.id);
-      } else if (side.type == 2) {
-        const model::PartSet* ps = m.part_set(side.id);
-        if (ps == nullptr) {
-          d.error(c.loc, "contact {}: side {}: part set {} is not defined", c.id, name, side.id);
-          ok = false;
-        } else {
-          for (const model::Id id : ps->parts)
-            add_part(id);
-        }
-      } else if (side.type == 5) {
-        for (std::size_t p = 0; p < parts.size(); ++p)
-          members.push_back(p);
-      } else if (side.type == 4) {
-        out.nodes = node_set_nodes(m, side.id);
-        if (out.nodes.empty()) {
-          d.error(c.loc, "contact {}: side {}: node set {} is not defined or empty", c.id, name,
-                  side.id);
-          ok = false;
-        }
-      } else if (side.type == 0) {
-        const auto set = m.index.segment_sets.find(side.id);
-        if (set == model::IdIndex::kNone) {
-          d.error(c.loc, "contact {}: side {}: segment set {} is not defined", c.id, name, side.id);
-          ok = false;
-        } else {
-          for (const auto& ids : m.segment_sets[static_cast<std::size_t>(set)].segments) {
-            Face f{};
-            for (std::size_t k = 0; k < 4; ++k)
-              f[k] = static_cast<Index>(m.index.nodes.find(ids[k]));
-            const auto owner = face_owner.find(sorted(f));
-            if (owner == face_owner.end()) {
-              d.error(c.loc,
-                      "contact {}: side {}: segment {} {} {} {} of set {} is not a free face of a "
-                      "solid or a rigid shell, so its penalty stiffness is unknown",
-                      c.id, name, ids[0], ids[1], ids[2], ids[3], side.id);
-              ok = false;
-              continue;
-            }
-            const PartSurface& ps = parts[owner->second.first];
-            const std::size_t j = owner->second.second;
-            add_segment(out.surface, f, ps.surface.stiffness[j], ps.surface.area[j],
-                        std::isinf(ps.surface.smallest_node_mass[j]));
-            out.shell_thickness.push_back(ps.shell_thickness[j]);
-            out.nodes.insert(out.nodes.end(), f.begin(), f.end());
-          }
-        }
-      } else {
-        d.error(c.loc,
-                "contact {}: side {} type {} is not supported (0 segment set, 2 part set, 3 part, "
-                "4 node set, 5 all parts)",
-                c.id, name, side.type);
-        ok = false;
-      }
-      for (const std::size_t p : members) {
-        const PartSurface& ps = parts[p];
-        for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
-          add_segment(out.surface, ps.surface.segments[j], ps.surface.stiffness[j],
-                      ps.surface.area[j], std::isinf(ps.surface.smallest_node_mass[j]));
-          out.shell_thickness.push_back(ps.shell_thickness[j]);
-          out.nodes.insert(out.nodes.end(), ps.surface.segments[j].begin(),
-                           ps.surface.segments[j].end());
-        }
-        out.nodes.insert(out.nodes.end(), ps.particles.begin(), ps.particles.end());
-        out.has_particles = out.has_particles || !ps.particles.empty();
-      }
-      std::sort(out.nodes.begin(), out.nodes.end());
-      out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end()), out.nodes.end());
-      return out;
-    };
-    Side a = resolve(c.a, "A (slave)");
-    Side b = resolve(c.b, "B (master)");
+    Side a = resolve_side(m, parts, face_owner, d, c, c.a, "A (slave)", ok);
+    Side b = resolve_side(m, parts, face_owner, d, c, c.b, "B (master)", ok);
     if (!ok) continue;
     if (b.surface.segments.empty()) {
       d.error(c.loc,
