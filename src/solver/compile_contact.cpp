@@ -164,8 +164,9 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   return out;
 }
 
-// Penalty of a node standing alone (node sets, particles): K V^(1/3) of the largest element
-// holding it (K A^2 / V of a cube), or of the particle's volume; a shell node takes its shells'.
+// Penalty of a slave node: the stiffest segment (free face K A^2 / V, shell K A / diagonal)
+// holding it, or K V^(1/3) of a particle's volume (K A^2 / V of a cube of that volume). A node
+// on neither (an interior FE node in a node set) gets 0, and so no contact force.
 std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface>& parts) {
   std::vector<double> k(static_cast<std::size_t>(s.nodes.count()), 0.0);
   for (const PartSurface& p : parts)
@@ -320,7 +321,6 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     Interface in;
     in.id = c.id;
     in.heading = c.heading;
-    in.automatic = automatic;
     in.static_friction = c.static_friction * c.friction_scale;
     in.dynamic_friction = c.dynamic_friction * c.friction_scale;
     in.decay = c.decay;

@@ -20,7 +20,7 @@ import argparse
 import math
 
 from spg_section import field
-from taylor_bar import section
+from taylor_bar import jc1_cards, layered_hexahedra, layered_nodes, node_line, section
 
 PLATE_RADIUS, SPG_RADIUS, THICKNESS = 10.0, 3.5, 1.5
 MAJOR, PITCH = 2.5, 0.7  # thread major radius, pitch
@@ -217,36 +217,21 @@ def main():
     w("      0.02      0.02      0.02      0.02")
     w("*HOURGLASS")
     w("         1         4       0.1")
-    w("*MAT_JOHNSON_COOK_TITLE")
-    w("AA6061-T6 JC-1")
-    w("         1    2.7E-9   26000.0")
-    w("     324.0     114.0      0.42     0.002      1.34     925.0     293.0       1.0")
-    w("    8.96E8       0.0       2.0")
+    out.extend(jc1_cards())
     if a.fe_erosion:
         w("*MAT_ADD_EROSION")
         w("         1       0.0       0.0       0.0       0.4")
-    w("*EOS_GRUNEISEN")
-    w("         1 5386000.0     1.339       0.0       0.0      1.99       0.0")
     w("*MAT_RIGID_TITLE")
     w("screw steel")
     w("         2   7.85E-9  210000.0       0.3")
     w("       1.0         4         4")
     # Plate nodes, layer by layer from the bottom (z = 0) to the top (z = 1.5).
     w("*NODE")
-    for k in range(layers + 1):
-        z = THICKNESS * k / layers
-        for p, (x, y) in enumerate(pts):
-            w(f"{1 + p + npl * k:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}")
-    for i, (x, y, z) in enumerate(screw_nodes):
-        w(f"{first_screw + i:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}")
+    out.extend(layered_nodes(pts, [THICKNESS * k / layers for k in range(layers + 1)]))
+    out.extend(node_line(first_screw + i, x, y, z) for i, (x, y, z) in enumerate(screw_nodes))
     w("*ELEMENT_SOLID")
-    e = 0
-    for part, quads in ((1, disc), (2, ring)):
-        for k in range(layers):
-            for q in quads:
-                e += 1
-                ids = [1 + v + npl * k for v in q] + [1 + v + npl * (k + 1) for v in q]
-                w(f"{e:8d}{part:8d}" + "".join(f"{v:8d}" for v in ids))
+    out.extend(layered_hexahedra(disc, npl, layers, 1))
+    out.extend(layered_hexahedra(ring, npl, layers, 2, 1 + len(disc) * layers))
     w("*ELEMENT_SHELL")
     for i, s in enumerate(screw_shells):
         w(f"{1_000_001 + i:8d}{3:8d}" + "".join(f"{first_screw + v:8d}" for v in s))

@@ -75,6 +75,43 @@ def section(n, nr, radius):
     return pts, quads
 
 
+def jc1_cards():
+    """AA6061-T6 with JC-1 and its Gruneisen EOS (benchmarks.md §1), material and EOS 1: the
+    Taylor bar's material and the FDS plate's."""
+    return [
+        "*MAT_JOHNSON_COOK_TITLE",
+        "AA6061-T6 JC-1",
+        "         1    2.7E-9   26000.0",
+        "     324.0     114.0      0.42     0.002      1.34     925.0     293.0       1.0",
+        "    8.96E8       0.0       2.0",
+        "*EOS_GRUNEISEN",
+        "         1 5386000.0     1.339       0.0       0.0      1.99       0.0",
+    ]
+
+
+def node_line(nid, x, y, z):
+    return f"{nid:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}"
+
+
+def layered_nodes(pts, heights):
+    """*NODE lines (without the keyword) of the in-plane points at each height: node
+    1 + p + len(pts) k for point p on layer k."""
+    return [node_line(1 + p + len(pts) * k, x, y, z)
+            for k, z in enumerate(heights) for p, (x, y) in enumerate(pts)]
+
+
+def layered_hexahedra(quads, npl, layers, part, first=1):
+    """*ELEMENT_SOLID lines (without the keyword) extruding the quads through the layers of
+    layered_nodes; element IDs from `first`."""
+    out, e = [], first - 1
+    for k in range(layers):
+        for q in quads:
+            e += 1
+            ids = [1 + v + npl * k for v in q] + [1 + v + npl * (k + 1) for v in q]
+            out.append(f"{e:8d}{part:8d}" + "".join(f"{v:8d}" for v in ids))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("resolution", choices=RESOLUTIONS)
@@ -132,25 +169,11 @@ def main():
     else:
         w("*SECTION_SOLID")
         w(f"         1{a.elform:10d}")
-    w("*MAT_JOHNSON_COOK_TITLE")
-    w("AA6061-T6 JC-1")
-    w("         1    2.7E-9   26000.0")
-    w("     324.0     114.0      0.42     0.002      1.34     925.0     293.0       1.0")
-    w("    8.96E8       0.0       2.0")
-    w("*EOS_GRUNEISEN")
-    w("         1 5386000.0     1.339       0.0       0.0      1.99       0.0")
+    out.extend(jc1_cards())
     w("*NODE")
-    for k in range(nz + 1):
-        z = length * k / nz
-        for p, (x, y) in enumerate(pts):
-            w(f"{1 + p + npl * k:8d}{x:16.9f}{y:16.9f}{z:16.9f}{0:8d}{0:8d}")
+    out.extend(layered_nodes(pts, [length * k / nz for k in range(nz + 1)]))
     w("*ELEMENT_SOLID")
-    e = 0
-    for k in range(nz):
-        for q in quads:
-            e += 1
-            ids = [1 + v + npl * k for v in q] + [1 + v + npl * (k + 1) for v in q]
-            w(f"{e:8d}{1:8d}" + "".join(f"{v:8d}" for v in ids))
+    out.extend(layered_hexahedra(quads, npl, nz, 1))
     w("*INITIAL_VELOCITY")
     w("         0")
     w("       0.0       0.0 -373000.0")

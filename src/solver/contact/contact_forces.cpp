@@ -170,14 +170,16 @@ void contact_pass(State& s) {
     }
     if (sort_due(s, c)) sort_buckets(s, c);
     for (Pass& p : c.passes) {
-      const auto n = static_cast<Index>(p.nodes.size());
-      std::vector<Hit> hits(p.nodes.size());
-#pragma omp parallel for schedule(static, 256) if (n > 2048)
-      for (Index i = 0; i < n; ++i)
-        hits[static_cast<std::size_t>(i)] = contact_force(s, c, p, static_cast<std::size_t>(i));
+      const auto n = static_cast<Index>(p.near.size());
+      std::vector<Hit> hits(p.near.size());
+#pragma omp parallel for schedule(static, 64) if (n > 512)
+      for (Index k = 0; k < n; ++k)
+        hits[static_cast<std::size_t>(k)] =
+            contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
       // Forces added in node order: the same sums for any thread count.
-      for (std::size_t i = 0; i < hits.size(); ++i) {
-        const Hit& h = hits[i];
+      for (std::size_t k = 0; k < hits.size(); ++k) {
+        const Hit& h = hits[k];
+        const auto i = static_cast<std::size_t>(p.near[k]);
         p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
         p.side.col(static_cast<Eigen::Index>(i)) = h.push;
         if (h.segment < 0) continue;

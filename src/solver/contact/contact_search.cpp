@@ -91,6 +91,17 @@ void sort_pass(const State& s, Pass& p, double margin) {
   for (std::size_t i = 0; i < p.nodes.size(); ++i)
     p.candidate_offsets[i + 1] += p.candidate_offsets[i];
   p.candidates.resize(static_cast<std::size_t>(p.candidate_offsets.back()));
+  // Nodes without candidates cannot touch before the next sort: they hold no friction or side.
+  p.near.clear();
+  for (Index i = 0; i < nodes; ++i) {
+    if (p.candidate_offsets[static_cast<std::size_t>(i) + 1] >
+        p.candidate_offsets[static_cast<std::size_t>(i)]) {
+      p.near.push_back(i);
+    } else {
+      p.friction.col(i).setZero();
+      p.side.col(i).setZero();
+    }
+  }
 #pragma omp parallel for schedule(static) if (nodes > 4096)
   for (Index i = 0; i < nodes; ++i) {
     auto out = static_cast<std::size_t>(p.candidate_offsets[static_cast<std::size_t>(i)]);
@@ -120,7 +131,6 @@ void sort_buckets(const State& s, Interface& c) {
   for (std::size_t i = 0; i < c.tracked.size(); ++i)
     c.sorted_positions.col(static_cast<Eigen::Index>(i)) = s.nodes.position.col(c.tracked[i]);
   c.last_sort = s.cycle;
-  ++c.searches;
 }
 
 }  // namespace mcdyna::solver::contact

@@ -37,8 +37,10 @@ struct Pass {
   std::vector<double> stiffness;  ///< SOFT 0 penalty per slave node, scale factors included
   bool nodes_on_side_a = true;    ///< for the resultants: which side the nodes belong to
   Surface surface;
-  // Search (contact_search.cpp): candidate segments per node (CSR over `nodes`).
+  // Search (contact_search.cpp): candidate segments per node (CSR over `nodes`), and the nodes
+  // that have any (indices into `nodes`, ascending): only they are checked each cycle.
   std::vector<Index> candidate_offsets, candidates;
+  std::vector<Index> near;
   // Friction state per node: the tangential force carried over from the last cycle.
   Eigen::Matrix3Xd friction;
   // Per node, the direction the node was pushed last cycle (zero when not in contact): a node on
@@ -56,7 +58,6 @@ struct AppliedForce {
 struct Interface {
   model::Id id = 0;
   std::string heading;
-  bool automatic = true;
   std::vector<Pass> passes;
   double static_friction = 0.0, dynamic_friction = 0.0, decay = 0.0;  ///< FS, FD, DC (x FSF)
   double viscous_friction = 0.0;  ///< VC (x VSF): limit of the friction stress
@@ -78,8 +79,7 @@ struct Interface {
   Vec3 force_a = Vec3::Zero(), force_b = Vec3::Zero();    ///< on side A / side B nodes
   Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();  ///< about the origin
   double mass_in_contact = 0.0;                           ///< of the A nodes in contact
-  double energy = 0.0;  ///< work the contact forces took from the structure
-  long searches = 0;
+  double energy = 0.0;   ///< work the contact forces took from the structure
   double seconds = 0.0;  ///< wall time in contact_pass (the phase table's "contact")
   std::vector<AppliedForce> applied;
 };
