@@ -1,4 +1,5 @@
-// mcdyna command line: `run`, `check`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k ncpu=2`).
+// mcdyna command line: `run`, `check`, `compare`, `keywords`, and LS-DYNA habits (`mcdyna i=deck.k
+// ncpu=2`).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "cli/check_command.hpp"
+#include "cli/compare_command.hpp"
 #include "cli/keyword_docs.hpp"
 #include "cli/run_command.hpp"
 #include "deck/registry.hpp"
@@ -112,6 +114,30 @@ int main(int argc, char** argv) {
                    "deck: 0.5 with MSC = 1, else 0; 0 turns it off)")
       ->check(CLI::NonNegativeNumber);
 
+  mcdyna::cli::CompareCommandOptions cmp;
+  auto* cmp_cmd = app.add_subcommand(
+      "compare",
+      "compare two histories (our CSV, other CSV, LS-DYNA ASCII rcforc/glstat/nodout/spcforc/"
+      "bndout/matsum) column by column; B is the reference");
+  cmp_cmd->add_option("a", cmp.a, "history A")->required();
+  cmp_cmd->add_option("b", cmp.b, "history B, the reference")->required();
+  cmp_cmd->add_option("-c,--column", cmp.compare.columns,
+                      "column to compare: NAME (in both; a quantity like z_force takes all its "
+                      "z_force@... columns), A_NAME:B_NAME, or a 1-based index; repeatable "
+                      "(default: every column the files share)");
+  cmp_cmd->add_option("--x", cmp.compare.x_a, "column to align on (name or index)")
+      ->capture_default_str();
+  cmp_cmd->add_option("--x-b", cmp.compare.x_b, "alignment column in B when named differently");
+  cmp_cmd->add_option("--points", cmp.compare.points,
+                      "resampling points (default: the denser file's count in the common range)");
+  cmp_cmd->add_option("--from", cmp.compare.from, "start of the compared range of x");
+  cmp_cmd->add_option("--to", cmp.compare.to, "end of the compared range of x");
+  cmp_cmd
+      ->add_option("--tol", cmp.tolerance, "exit 1 when a column's max|A-B| / peak|B| exceeds this")
+      ->check(CLI::NonNegativeNumber);
+  cmp_cmd->add_option("--plot", cmp.plot, "PNG with both curves and their difference");
+  cmp_cmd->add_option("--csv", cmp.csv, "write the resampled curves as CSV");
+
   std::string keyword_name;
   std::string markdown_dir;
   bool raw = false;
@@ -138,6 +164,7 @@ int main(int argc, char** argv) {
   try {
     if (*check_cmd) return mcdyna::cli::run_check(check, std::cout, std::cerr);
     if (*run_cmd) return mcdyna::cli::run_deck(run, std::cout, std::cerr);
+    if (*cmp_cmd) return mcdyna::cli::run_compare(cmp, std::cout, std::cerr);
     const mcdyna::deck::Registry registry;
     if (!markdown_dir.empty()) {
       if (!mcdyna::cli::write_keyword_pages(markdown_dir, registry)) {

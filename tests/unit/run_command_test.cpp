@@ -9,6 +9,8 @@
 
 #include <sstream>
 
+#include "io/history_table.hpp"
+#include "post/history_compare.hpp"
 #include "solver_support.hpp"
 
 namespace mcdyna::test {
@@ -47,6 +49,23 @@ void check_csv_whole(const std::filesystem::path& p) {
     ++rows;
   }
   CHECK(rows > 0);
+}
+
+// Our ASCII file and CSV of one kind, read back by `mcdyna compare`'s readers, give the same
+// columns and the same curves to the digits the ASCII layout prints: `tolerance` is max|A-B| /
+// peak|B| from those digits (values and times in %12.5E: ~1e-5; %13.4E: ~1e-4; bndout's t=%9.3E
+// moves the time by up to 5e-4 relative).
+void check_ascii_matches_csv(const std::filesystem::path& out, const std::string& name,
+                             double tolerance, std::size_t min_columns) {
+  const io::HistoryTable ascii = io::read_history(out / name);
+  const io::HistoryTable csv = io::read_history(out / (name + ".csv"));
+  CHECK(ascii.format == name);
+  CHECK(ascii.rows() == csv.rows());
+  const post::Comparison c = post::compare_histories(csv, ascii, {});
+  CHECK_MESSAGE(c.columns.size() >= min_columns, name << ": " << c.columns.size() << " columns");
+  for (const post::ColumnComparison& col : c.columns)
+    CHECK_MESSAGE(col.relative_to_peak <= tolerance,
+                  name << " " << col.name_a << ": " << col.relative_to_peak);
 }
 
 // A CSV history as rows of named fields (numbers; text fields such as `kind` as NaN, kept raw
@@ -244,6 +263,10 @@ TEST_CASE("history files: nodout, bndout, spcforc and matsum carry the motion th
       CHECK(std::abs(row[mat.column("z_rigid_velocity")] - row[mat.column("time")]) <= 2.5e-4);
     }
   CHECK(rigid_rows >= 10);
+  check_ascii_matches_csv(out, "nodout", 1e-4, 12);
+  check_ascii_matches_csv(out, "spcforc", 2e-4, 27);
+  check_ascii_matches_csv(out, "bndout", 2e-3, 4 * 9 + 7);
+  check_ascii_matches_csv(out, "matsum", 2e-4, 2 * 11);
 }
 
 TEST_CASE("rcforc: a slave and a master line per contact and output time, equal and opposite") {
@@ -305,6 +328,8 @@ TEST_CASE("rcforc: a slave and a master line per contact and output time, equal 
     sliding = std::max(sliding, row[gl.column("sliding_energy")]);
   CHECK(sliding > 0.0);
   CHECK(std::abs(gl.rows.back()[gl.column("energy_ratio")] - 1.0) < 3e-3);
+  check_ascii_matches_csv(out, "rcforc", 1e-4, 2 * 7);
+  check_ascii_matches_csv(out, "glstat", 1e-4, 13);
 }
 
 TEST_CASE("eroded elements vanish from the forces and the d3plot states; their mass stays") {

@@ -1,0 +1,165 @@
+#include "cli/compare_command.hpp"
+
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "io/history_table.hpp"
+
+extern char** environ;
+
+namespace mcdyna::cli {
+
+namespace {
+
+constexpr int kOutsideTolerance = 1;
+constexpr int kCannotCompare = 2;
+
+std::string label(const post::ColumnComparison& c) {
+  return c.name_a == c.name_b ? c.name_a : c.name_a + " vs " + c.name_b;
+}
+
+std::string number(double v) {
+  return std::isnan(v) ? "n/a" : fmt::format("{:.4e}", v);
+}
+
+void print_report(const io::HistoryTable& a, const io::HistoryTable& b, const post::Comparison& r,
+                  std::ostream& out) {
+  out << fmt::format("A  {} ({}, {} columns, {} rows)\n", a.source, a.format, a.names.size(),
+                     a.rows());
+  out << fmt::format("B  {} ({}, {} columns, {} rows) - the reference\n", b.source, b.format,
+                     b.names.size(), b.rows());
+  const std::string x = r.x_name_a == r.x_name_b ? r.x_name_a : r.x_name_a + " / " + r.x_name_b;
+  out << fmt::format("aligned on {}: {:.6g} … {:.6g}, {} points, linear resampling\n\n", x,
+                     r.x.front(), r.x.back(), r.x.size());
+  std::size_t width = 6;
+  for (const post::ColumnComparison& c : r.columns)
+    width = std::max(width, label(c).size());
+  const std::string at = fmt::format("at {}", r.x_name_a);
+  out << fmt::format(
+      "{:<{}}  {:>11}  {:>11}  {:>11}  {:>10}  {:>11}  {:>11}  {:>11}  {:>11}  {:>7}\n", "column",
+      width, "max|A-B|", at, "RMS(A-B)", "max/peakB", "peak A", at, "peak B", at, "corr");
+  for (const post::ColumnComparison& c : r.columns)
+    out << fmt::format(
+        "{:<{}}  {:>11}  {:>11.4e}  {:>11}  {:>10}  {:>11}  {:>11.4e}  {:>11}  {:>11.4e}  {:>7}\n",
+        label(c), width, number(c.max_difference), c.x_at_max, number(c.rms_difference),
+        std::isnan(c.relative_to_peak) ? "n/a" : fmt::format("{:.4g}", c.relative_to_peak),
+        number(c.peak_a), c.x_peak_a, number(c.peak_b), c.x_peak_b,
+        std::isnan(c.correlation) ? "n/a" : fmt::format("{:.4f}", c.correlation));
+}
+
+bool write_resampled(const post::Comparison& r, const std::filesystem::path& path) {
+  std::ofstream f(path);
+  if (!f) return false;
+  f << r.x_name_a;
+  for (const post::ColumnComparison& c : r.columns)
+    f << ",A " << c.name_a << ",B " << c.name_b;
+  f << "\n";
+  for (std::size_t i = 0; i < r.x.size(); ++i) {
+    f << fmt::format("{:.9e}", r.x[i]);
+    for (const post::ColumnComparison& c : r.columns)
+      f << fmt::format(",{:.9e},{:.9e}", c.a[i], c.b[i]);
+    f << "\n";
+  }
+  return static_cast<bool>(f);
+}
+
+// The plot is drawn by tools/plot_compare.py with Debian's python3-matplotlib.
+std::filesystem::path plot_script() {
+  if (const char* dir = std::getenv("MCDYNA_TOOLS"))
+    return std::filesystem::path(dir) / "plot_compare.py";
+  return std::filesystem::path(MCDYNA_TOOLS_DIR) / "plot_compare.py";
+}
+
+std::string python() {
+  if (const char* p = std::getenv("MCDYNA_PYTHON")) return p;
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+int run_program(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args)
+    argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool draw_plot(const post::Comparison& r, const CompareCommandOptions& o, std::ostream& err) {
+  const std::filesystem::path data =
+      o.csv.empty() ? std::filesystem::path(o.plot).replace_extension(".csv") : o.csv;
+  if (o.csv.empty() && !write_resampled(r, data)) {
+    err << fmt::format("mcdyna compare: cannot write {}\n", data.string());
+    return false;
+  }
+  const std::filesystem::path script = plot_script();
+  if (!std::filesystem::exists(script)) {
+    err << fmt::format("mcdyna compare: the plot helper {} is missing\n", script.string());
+    return false;
+  }
+  const int rc = run_program(
+      {python(), script.string(), data.string(), o.plot.string(), o.a.string(), o.b.string()});
+  if (rc != 0) {
+    err << fmt::format(
+        "mcdyna compare: the plot helper failed (exit {}); it needs python3-matplotlib "
+        "(tools/setup.sh installs it); resampled data in {}\n",
+        rc, data.string());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_compare(const CompareCommandOptions& o, std::ostream& out, std::ostream& err) {
+  try {
+    const io::HistoryTable a = io::read_history(o.a);
+    const io::HistoryTable b = io::read_history(o.b);
+    const post::Comparison r = post::compare_histories(a, b, o.compare);
+    print_report(a, b, r, out);
+    if (!o.csv.empty() && !write_resampled(r, o.csv)) {
+      err << fmt::format("mcdyna compare: cannot write {}\n", o.csv.string());
+      return kCannotCompare;
+    }
+    if (!o.plot.empty()) {
+      if (!draw_plot(r, o, err)) return kCannotCompare;
+      out << fmt::format("\nplot: {}\n", o.plot.string());
+    }
+    if (!o.tolerance) return 0;
+    std::vector<std::string> outside;
+    for (const post::ColumnComparison& c : r.columns)
+      if (!(c.relative_to_peak <= *o.tolerance))
+        outside.push_back(fmt::format("{} ({})", label(c),
+                                      std::isnan(c.relative_to_peak)
+                                          ? "reference is zero"
+                                          : fmt::format("{:.4f}", c.relative_to_peak)));
+    if (outside.empty()) {
+      out << fmt::format("\nwithin tolerance: every column's max|A-B| / peak|B| <= {:g}\n",
+                         *o.tolerance);
+      return 0;
+    }
+    out << fmt::format("\nOUTSIDE tolerance {:g} in {} of {} columns:", *o.tolerance,
+                       outside.size(), r.columns.size());
+    for (const std::string& s : outside)
+      out << "\n  " << s;
+    out << "\n";
+    return kOutsideTolerance;
+  } catch (const io::HistoryReadError& e) {
+    err << e.what() << "\n";
+  } catch (const post::CompareError& e) {
+    err << "mcdyna compare: " << e.what() << "\n";
+  }
+  return kCannotCompare;
+}
+
+}  // namespace mcdyna::cli

@@ -1,0 +1,24 @@
+#pragma once
+/// `mcdyna compare A B`: compare two histories (our CSV, other CSV, LS-DYNA ASCII files) column
+/// by column; B is the reference.
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+
+#include "post/history_compare.hpp"
+
+namespace mcdyna::cli {
+
+struct CompareCommandOptions {
+  std::filesystem::path a, b;
+  post::CompareOptions compare;
+  std::optional<double> tolerance;  ///< max |A-B| / peak |B| allowed per column
+  std::filesystem::path plot;       ///< PNG of both curves and their difference
+  std::filesystem::path csv;        ///< the resampled curves
+};
+
+/// Exit code: 0 compared (and within --tol), 1 a column exceeds --tol, 2 the files cannot be
+/// read or compared (message on `err`).
+int run_compare(const CompareCommandOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace mcdyna::cli
