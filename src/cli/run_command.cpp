@@ -98,11 +98,10 @@ const char* reason_text(solver::StopReason r) {
 }
 
 void print_state_summary(std::ostream& log, const solver::State& s) {
-  double mass = 0.0, added = 0.0;
-  for (std::size_t i = 0; i < s.nodes.mass.size(); ++i) {
-    mass += s.nodes.mass[i];
-    added += s.nodes.added_mass[i];
-  }
+  double mass = 0.0;
+  for (const double m : s.nodes.mass)
+    mass += m;
+  const double added = solver::total_added_mass(s);
   for (const auto& b : s.rigid_bodies)
     mass += b.mass;
   fmt::print(log,
@@ -300,10 +299,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   print_spg_summary(summary, *state);
   if (state->mass_scaling_dt > 0.0) {
-    double added = 0.0;
-    for (const double a : state->nodes.added_mass)
-      added += a;
-    fmt::print(summary, "  added mass (DT2MS) {:.6e}\n", added);
+    fmt::print(summary, "  added mass (DT2MS) {:.6e}\n", solver::total_added_mass(*state));
   }
   fmt::print(summary, "Outputs in {}:", dir.string());
   for (const auto& f : outputs.files())

@@ -20,7 +20,8 @@ class Glstat final : public HistoryFile {
                     "time,time_step,kinetic_energy,internal_energy,stonewall_energy,"
                     "hourglass_energy,sliding_energy,external_work,eroded_internal_energy,"
                     "eroded_hourglass_energy,total_energy,energy_ratio,x_velocity,y_velocity,"
-                    "z_velocity,added_mass,percent_mass_increase,controlling_element") {}
+                    "z_velocity,added_mass,percent_mass_increase,controlling_element,"
+                    "controlling_particle_node") {}
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
@@ -33,13 +34,24 @@ class Glstat final : public HistoryFile {
     const double ratio = reference != 0.0 ? e.total / reference : 1.0;
     const Vec3 v = e.mass > 0.0 ? Vec3(e.momentum / e.mass) : Vec3::Zero();
     const double percent = e.mass > 0.0 ? 100.0 * e.added_mass / e.mass : 0.0;
+    // The step is set by a solid element or by an SPG particle (named by its node).
     const Index ce = s.controlling_element;
-    const long long ce_id = ce >= 0 ? s.solids.ids[static_cast<std::size_t>(ce)] : 0;
-    const long long ce_part =
-        ce >= 0 ? s.parts[static_cast<std::size_t>(s.solids.part[static_cast<std::size_t>(ce)])].id
-                : 0;
-    ascii("\n\n dt of cycle{:8d} is controlled by solid    {:10d} of part{:10d}\n\n", s.cycle,
-          ce_id, ce_part);
+    const Index cp = s.controlling_particle;
+    long long ce_id = 0, cp_node = 0, c_part = 0;
+    if (ce >= 0) {
+      ce_id = s.solids.ids[static_cast<std::size_t>(ce)];
+      c_part = s.parts[static_cast<std::size_t>(s.solids.part[static_cast<std::size_t>(ce)])].id;
+    } else if (cp >= 0 && s.controlling_domain < s.spg.size()) {
+      const solver::spg::Domain& d = s.spg[s.controlling_domain];
+      cp_node = s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(cp)])];
+      c_part = s.parts[static_cast<std::size_t>(d.part)].id;
+    }
+    if (cp_node != 0)
+      ascii("\n\n dt of cycle{:8d} is controlled by spg node {:10d} of part{:10d}\n\n", s.cycle,
+            cp_node, c_part);
+    else
+      ascii("\n\n dt of cycle{:8d} is controlled by solid    {:10d} of part{:10d}\n\n", s.cycle,
+            ce_id, c_part);
     auto line = [&](const char* label, double value) { ascii(" {:.<31}{:14.5E}\n", label, value); };
     line("time", s.time);
     line("time step", s.step);
@@ -68,10 +80,10 @@ class Glstat final : public HistoryFile {
       line("percentage increase", percent);
     }
     csv("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
-        "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n",
+        "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{},{}\n",
         s.time, s.step, e.kinetic, e.internal, e.stonewall, e.hourglass, e.sliding, e.external_work,
         e.eroded_internal, e.eroded_hourglass, e.total, ratio, v[0], v[1], v[2], e.added_mass,
-        percent, ce_id);
+        percent, ce_id, cp_node);
     flush();
   }
 

@@ -171,6 +171,8 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
   // Base mass after all parts have added theirs (FE corners, particles of every SPG part).
   for (spg::Domain& dom : s.spg) {
     dom.base_mass.resize(dom.nodes.size());
+    dom.added_mass.assign(dom.nodes.size(), 0.0);
+    dom.mass_request.assign(dom.nodes.size(), 0.0);
     for (std::size_t i = 0; i < dom.nodes.size(); ++i)
       dom.base_mass[i] = nd.mass[static_cast<std::size_t>(dom.nodes[i])];
   }

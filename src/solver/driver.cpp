@@ -256,6 +256,8 @@ RunResult run(State& s, const RunHooks& hooks) {
       break;
     }
     s.controlling_element = pass.controlling_element;
+    s.controlling_domain = pass.controlling_domain;
+    s.controlling_particle = pass.controlling_particle;
     if (hooks.progress) hooks.progress(s);
   }
   // The SPG work ran inside the element phase; show it split (neighbour search, shape

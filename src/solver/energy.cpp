@@ -45,16 +45,26 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
   const Nodes& nd = s.nodes;
   for (Index n = 0; n < nd.count(); ++n) {
     const auto i = static_cast<std::size_t>(n);
-    e.added_mass += nd.added_mass[i];
     // MC-SPG particles count with their unsmoothed velocity and mass (above).
     if (nd.rigid_body[i] >= 0 || nd.smoothed[i] == 1) continue;
     e.kinetic += 0.5 * nd.mass[i] * previous.col(n).dot(velocity.col(n));
     e.momentum += 0.5 * nd.mass[i] * (previous.col(n) + velocity.col(n));
     e.mass += nd.mass[i];
   }
+  e.added_mass = total_added_mass(s);
   e.total = e.kinetic + e.internal + e.hourglass + e.stonewall + e.sliding + e.damping +
             e.eroded_internal + e.eroded_hourglass;
   return e;
+}
+
+double total_added_mass(const State& s) {
+  double added = 0.0;
+  for (const double a : s.nodes.added_mass)
+    added += a;
+  for (const spg::Domain& d : s.spg)
+    for (const double a : d.added_mass)
+      added += a;
+  return added;
 }
 
 std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& previous) {
@@ -79,6 +89,7 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
     for (Index i = 0; i < d.count(); ++i) {
       const auto ii = static_cast<std::size_t>(i);
       ps.internal += d.internal_energy[ii];
+      ps.added_mass += d.added_mass[ii];
       const Index n = d.nodes[ii];
       const bool mc = s.nodes.smoothed[static_cast<std::size_t>(n)] == 1;
       const Vec3 before = mc ? Vec3(d.unsmoothed_previous.col(i)) : Vec3(previous.col(n));

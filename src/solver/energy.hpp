@@ -25,6 +25,9 @@ struct EnergySummary {
 
 EnergySummary energy_summary(const State& state, const Eigen::Matrix3Xd& previous);
 
+/// Mass added by DT2MS mass scaling so far: at FE nodes and to SPG particles.
+double total_added_mass(const State& state);
+
 struct PartSummary {
   model::Id part = 0;
   double internal = 0.0, kinetic = 0.0, hourglass = 0.0;

@@ -216,9 +216,11 @@ struct State {
 
   double time = 0.0;
   long cycle = 0;
-  double step = 0.0;       ///< last step dt^{n-1/2}
-  double next_step = 0.0;  ///< step to take next
-  Index controlling_element = -1;
+  double step = 0.0;                   ///< last step dt^{n-1/2}
+  double next_step = 0.0;              ///< step to take next
+  Index controlling_element = -1;      ///< solid giving the step, or -1
+  std::size_t controlling_domain = 0;  ///< SPG domain of controlling_particle
+  Index controlling_particle = -1;     ///< particle giving the step, or -1
   double external_work = 0.0;
   double eroded_kinetic = 0.0, eroded_internal = 0.0, eroded_hourglass = 0.0;
   double initial_energy = 0.0;

@@ -181,6 +181,66 @@ TEST_CASE("MC-SPG partial kernel renewal: only strained rows renewed, momentum a
         doctest::Approx(mass).epsilon(1e-12).scale(0.0));
 }
 
+TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the target, stably") {
+  TempDir dir;
+  // The natural step of the body, from one cycle of the same deck.
+  Simulation probe = prepare(dir, spg_deck(7, 6, 5, 1));
+  run(probe);
+  const double natural = probe.state->step;
+  // Three times that step: every row asks for a mass factor of about 9.
+  Simulation sim = prepare(dir, spg_deck(7, 6, 5, 2));
+  set_velocity_field(*sim.state);
+  sim.state->mass_scaling_dt = 3.0 * natural;
+  spg::Domain& d = sim.state->spg.front();
+  spg::initialise(*sim.state, d);
+  const double physical = std::accumulate(d.mass.begin(), d.mass.end(), 0.0);
+  run(sim);
+  REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
+  const double added = solver::total_added_mass(*sim.state);
+  MESSAGE("added mass / physical mass ", added / physical);
+  CHECK(added / physical > 7.0);
+  CHECK(added / physical < 9.0);
+  // The smoothed masses (Eq. 20) were rebuilt from the scaled particle masses.
+  CHECK(std::accumulate(d.smoothed_mass.begin(), d.smoothed_mass.end(), 0.0) ==
+        doctest::Approx(physical + added).epsilon(1e-12).scale(0.0));
+  // Mass is added at the velocity a particle has (as LS-DYNA does), which changes its momentum;
+  // over every cycle that adds none, momentum is kept to round-off. The step stays the target
+  // and the body rings stably at it.
+  double scale = 0.0;
+  conserved_momentum(*sim.state, scale);
+  double vmax0 = 0.0;
+  for (Index n = 0; n < sim.state->nodes.count(); ++n)
+    vmax0 = std::max(vmax0, sim.state->nodes.velocity.col(n).norm());
+  double last_added = added, worst = 0.0;
+  Vec3 last_p = conserved_momentum(*sim.state, scale);
+  int quiet_cycles = 0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    double unused = 0.0;
+    const Vec3 p = conserved_momentum(s, unused);
+    const double a = solver::total_added_mass(s);
+    if (a == last_added) {
+      worst = std::max(worst, (p - last_p).norm());
+      ++quiet_cycles;
+    }
+    last_added = a;
+    last_p = p;
+  };
+  sim.state->time_control.end_cycle = 1000;
+  run(sim, hooks);
+  REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
+  CHECK(sim.state->step == doctest::Approx(3.0 * natural).epsilon(1e-9).scale(0.0));
+  MESSAGE("cycles without added mass ", quiet_cycles, ", largest momentum change ", worst / scale,
+          ", added mass at the end / physical ", solver::total_added_mass(*sim.state) / physical);
+  CHECK(quiet_cycles > 20);  // measured 51: the ringing body keeps asking for a little more
+  CHECK(worst <= 1e-12 * scale);
+  double vmax = 0.0;
+  for (Index n = 0; n < sim.state->nodes.count(); ++n)
+    vmax = std::max(vmax, sim.state->nodes.velocity.col(n).norm());
+  MESSAGE("largest speed before / after 1000 steps ", vmax0, " / ", vmax);
+  CHECK(vmax < 1.5 * vmax0);
+}
+
 TEST_CASE("MC-SPG coupled to FE by common nodes: total momentum kept to round-off") {
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(6, 5, 4, 1000, 2));

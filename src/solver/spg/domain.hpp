@@ -110,6 +110,8 @@ struct Domain {
   ShapeFunctions shape;
   Transpose transpose;
   std::vector<double> smoothed_mass;  ///< m_I (Eq. 20)
+  std::vector<double> added_mass;     ///< DT2MS mass scaling: part of `mass` (and base_mass) added
+  std::vector<double> mass_request;   ///< mass factor a row asked for this cycle (0: none)
   std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
   std::vector<double> length;         ///< characteristic length at the renewal
   std::vector<double> renewal_volume;  ///< volume at the renewal

@@ -134,6 +134,40 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
 
 }  // namespace
 
+// Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J), the
+// gather weights psi_I(X_J) = m-hat_J phi_I(X_J) / m_I (Eq. 14), which particles are pinned, and
+// the node masses. Run at every renewal and whenever mass scaling changed a particle mass.
+void smooth_masses(State& s, Domain& d) {
+  const Index n = d.count();
+  const Stabilization mode = d.settings.stabilization;
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    double m = 0.0;
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      m += d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
+           d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])];
+    }
+    d.smoothed_mass[ii] = m;
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      d.transpose.gather[tt] = d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
+                               d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] / m;
+    }
+    const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
+                     (mode == Stabilization::momentum_consistent &&
+                      !(m > kMinimumSmoothedMassShare * d.mass[ii]));
+    d.pinned[ii] = pin ? 1 : 0;
+    const auto node = static_cast<std::size_t>(d.nodes[ii]);
+    s.nodes.smoothed[node] = pin ? 0 : (mode == Stabilization::momentum_consistent ? 1 : 2);
+    // Impulses of walls and constraints on a smoothed particle act on its smoothed momentum
+    // m_I u_I (Eq. 19), so they see the smoothed mass.
+    s.nodes.mass[node] =
+        pin ? d.base_mass[ii] : (mode == Stabilization::momentum_consistent ? m : d.mass[ii]);
+  }
+}
+
 void renew_kernel(State& s, Domain& d) {
   renew_kernel(s, d, {});
 }
@@ -198,25 +232,12 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   for (const Index i : degenerate)
     d.isolated[static_cast<std::size_t>(i)] = 1;
 
-  // Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J).
-  const Stabilization mode = d.settings.stabilization;
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    double m = 0.0;
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const auto tt = static_cast<std::size_t>(t);
-      m += d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
-           d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])];
-    }
-    d.smoothed_mass[ii] = m;
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const auto tt = static_cast<std::size_t>(t);
-      const Index p = d.transpose.pairs[tt];
-      d.transpose.gather[tt] = d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
-                               d.shape.value[static_cast<std::size_t>(p)] / m;
-      d.transpose.gradient.col(t) = d.shape.gradient.col(p);
-    }
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
+      d.transpose.gradient.col(t) =
+          d.shape.gradient.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
     if (renewed(i)) {
       // Characteristic length for the step: the nearest neighbour in the new reference.
       double nearest = std::numeric_limits<double>::infinity();
@@ -227,17 +248,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
       d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
       d.renewal_volume[ii] = d.volume[ii];
     }
-    const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
-                     (mode == Stabilization::momentum_consistent &&
-                      !(m > kMinimumSmoothedMassShare * d.mass[ii]));
-    d.pinned[ii] = pin ? 1 : 0;
-    const auto node = static_cast<std::size_t>(d.nodes[ii]);
-    s.nodes.smoothed[node] = pin ? 0 : (mode == Stabilization::momentum_consistent ? 1 : 2);
-    // Impulses of walls and constraints on a smoothed particle act on its smoothed momentum
-    // m_I u_I (Eq. 19), so they see the smoothed mass.
-    s.nodes.mass[node] =
-        pin ? d.base_mass[ii] : (mode == Stabilization::momentum_consistent ? m : d.mass[ii]);
   }
+  smooth_masses(s, d);
   d.steps_since_renewal = 0;
   ++d.renewals;
   d.times.shape_functions += seconds_since(start);

@@ -55,6 +55,10 @@ void absorb_constraints(State& s, Domain& d);
 /// bonds, shape functions, transpose, smoothed masses, pinned set.
 void renew_kernel(State& s, Domain& d);
 
+/// Smoothed masses (Eq. 20), gather weights (Eq. 14), pinning and node masses from the particle
+/// masses and the current shape functions (at renewals, and after mass scaling).
+void smooth_masses(State& s, Domain& d);
+
 /// The same for the rows flagged in `rows` only (size count()), right after rows_to_renew, whose
 /// current supports it uses: their neighbours and shape functions are rebuilt in the current
 /// configuration and their F^n takes up F-hat; the other
