@@ -8,7 +8,10 @@
 #include <limits>
 #include <map>
 
+#include <fmt/format.h>
+
 #include "solver/compile.hpp"
+#include "solver/contact/contact.hpp"
 #include "solver/fe/hex_geometry.hpp"
 #include "solver/material/constitutive.hpp"
 
@@ -193,17 +196,17 @@ struct Side {
 
 using FaceOwners = std::map<Face, std::pair<std::size_t, std::size_t>>;
 
-// The nodes and segments of one side of contact c (SURFA/SURFB by its type code); reports what
-// is undefined or unsupported at the contact's card and clears `ok`.
+// The nodes and segments of one side of contact c, numbered `number` (SURFA/SURFB by its type
+// code); reports what is undefined or unsupported at the contact's card and clears `ok`.
 Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
                   const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
-                  const model::ContactSide& side, const char* name, bool& ok) {
+                  model::Id number, const model::ContactSide& side, const char* name, bool& ok) {
   Side out;
   std::vector<std::size_t> members;
   auto add_part = [&](model::Id id) {
     const auto p = m.index.parts.find(id);
     if (p == model::IdIndex::kNone) {
-      d.error(c.loc, "contact {}: side {}: part {} is not defined", c.id, name, id);
+      d.error(c.loc, "contact {}: side {}: part {} is not defined", number, name, id);
       ok = false;
     } else {
       members.push_back(static_cast<std::size_t>(p));
@@ -214,7 +217,7 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
   } else if (side.type == 2) {
     const model::PartSet* ps = m.part_set(side.id);
     if (ps == nullptr) {
-      d.error(c.loc, "contact {}: side {}: part set {} is not defined", c.id, name, side.id);
+      d.error(c.loc, "contact {}: side {}: part set {} is not defined", number, name, side.id);
       ok = false;
     } else {
       for (const model::Id id : ps->parts)
@@ -226,14 +229,14 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
   } else if (side.type == 4) {
     out.nodes = node_set_nodes(m, side.id);
     if (out.nodes.empty()) {
-      d.error(c.loc, "contact {}: side {}: node set {} is not defined or empty", c.id, name,
+      d.error(c.loc, "contact {}: side {}: node set {} is not defined or empty", number, name,
               side.id);
       ok = false;
     }
   } else if (side.type == 0) {
     const auto set = m.index.segment_sets.find(side.id);
     if (set == model::IdIndex::kNone) {
-      d.error(c.loc, "contact {}: side {}: segment set {} is not defined", c.id, name, side.id);
+      d.error(c.loc, "contact {}: side {}: segment set {} is not defined", number, name, side.id);
       ok = false;
     } else {
       for (const auto& ids : m.segment_sets[static_cast<std::size_t>(set)].segments) {
@@ -245,7 +248,7 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
           d.error(c.loc,
                   "contact {}: side {}: segment {} {} {} {} of set {} is not a free face of a "
                   "solid or a rigid shell, so its penalty stiffness is unknown",
-                  c.id, name, ids[0], ids[1], ids[2], ids[3], side.id);
+                  number, name, ids[0], ids[1], ids[2], ids[3], side.id);
           ok = false;
           continue;
         }
@@ -261,7 +264,7 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
     d.error(c.loc,
             "contact {}: side {} type {} is not supported (0 segment set, 2 part set, 3 part, "
             "4 node set, 5 all parts)",
-            c.id, name, side.type);
+            number, name, side.type);
     ok = false;
   }
   for (const std::size_t p : members) {
@@ -283,6 +286,30 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
 
 }  // namespace
 
+namespace {
+
+// Slave nodes that start inside the master surface, said at the contact keyword: moved onto it
+// (IGNORE 0) or kept as tracked offsets (IGNORE 1/2, SPG particles, rigid nodes).
+void report_initial_penetrations(State& s, Interface& in, const model::Contact& c,
+                                 core::Diagnostics& d) {
+  const contact::InitialPenetrations r = contact::resolve_initial_penetrations(s, in);
+  if (r.count == 0) return;
+  const long kept = r.count - r.moved;
+  std::string what;
+  if (r.moved > 0) what = fmt::format("{} moved onto the surface", r.moved);
+  if (kept > 0)
+    what += fmt::format("{}{} kept as an initial offset that contact pushes only beyond{}",
+                        what.empty() ? "" : ", ", kept,
+                        in.ignore == 0 ? " (SPG particles and rigid-body nodes are not moved)"
+                                       : fmt::format(" (IGNORE {})", in.ignore));
+  d.warning(c.loc,
+            "contact {}: {} slave node(s) start inside the master surface, deepest {:.4g} at "
+            "node {}; {}",
+            in.id, r.count, r.deepest, s.nodes.ids[static_cast<std::size_t>(r.node)], what);
+}
+
+}  // namespace
+
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   if (m.contacts.empty()) return;
   const std::vector<PartSurface> parts = part_surfaces(m, s);
@@ -294,12 +321,15 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
   const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
   const double slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
 
-  for (const model::Contact& c : m.contacts) {
+  for (std::size_t order = 0; order < m.contacts.size(); ++order) {
+    const model::Contact& c = m.contacts[order];
+    // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.
+    const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
     if (c.kind == model::ContactKind::automatic_single_surface) {
       d.error(c.loc,
               "contact {}: *CONTACT_AUTOMATIC_SINGLE_SURFACE is not run by this version; model the "
               "pairs as *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-              c.id);
+              number);
       continue;
     }
     const bool automatic = c.kind == model::ContactKind::automatic_nodes_to_surface ||
@@ -307,19 +337,19 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
                          c.kind == model::ContactKind::surface_to_surface;
     bool ok = true;
-    Side a = resolve_side(m, parts, face_owner, d, c, c.a, "A (slave)", ok);
-    Side b = resolve_side(m, parts, face_owner, d, c, c.b, "B (master)", ok);
+    Side a = resolve_side(m, parts, face_owner, d, c, number, c.a, "A (slave)", ok);
+    Side b = resolve_side(m, parts, face_owner, d, c, number, c.b, "B (master)", ok);
     if (!ok) continue;
     if (b.surface.segments.empty()) {
       d.error(c.loc,
               "contact {}: side B (master) has no segments (an SPG part or a node set cannot be "
               "the master surface: make it side A)",
-              c.id);
+              number);
       continue;
     }
 
     Interface in;
-    in.id = c.id;
+    in.id = number;
     in.heading = c.heading;
     in.static_friction = c.static_friction * c.friction_scale;
     in.dynamic_friction = c.dynamic_friction * c.friction_scale;
@@ -332,6 +362,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
     in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
     in.penalty_option = control.penalty_option;
+    in.ignore = c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
     if (in.penalty_option < 1 || in.penalty_option > 3) {
       d.warning(control.loc,
                 "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
@@ -343,7 +374,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
       d.warning(c.loc,
                 "contact {}: SOFT = {} (segment-based) runs as SOFT = 1, node-to-segment with the "
                 "soft-constraint stiffness",
-                c.id, c.soft);
+                number, c.soft);
       in.soft = 1;
     }
     // One direction: the nodes of one side on the segments of the other.
@@ -381,7 +412,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
         d.note(c.loc,
                "contact {}: side A has no segments ({}): surface-to-surface runs one way, A "
                "nodes on B segments",
-               c.id, a.has_particles ? "SPG particles" : "a node set");
+               number, a.has_particles ? "SPG particles" : "a node set");
       } else {
         in.passes.push_back(
             make_pass(b, c.penalty_scale_b, a, c.penalty_scale_a, c.thickness_a, false));
@@ -400,6 +431,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
     std::sort(in.tracked.begin(), in.tracked.end());
     in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());
+    report_initial_penetrations(s, in, c, d);
     s.contacts.push_back(std::move(in));
   }
 }

@@ -272,3 +272,60 @@ TEST_CASE("contact: MC-SPG particles as slave nodes bounce off a rigid plate") {
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+namespace {
+
+// An elastic 2 x 2 x 2 block at rest whose bottom starts 0.02 mm inside the plate's contact
+// surface (z = 0).
+std::string sunk_block(const std::string& control) {
+  return header(2e-6) + control +
+         "*PART\nblock\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,7.85e-9,210000.0,0.3\n" +
+         box_mesh(2, 2, 2, 1.0, 1, 1, 1, -0.02) + rigid_plate(-10, -10, 12, 12) +
+         "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
+}
+
+double lowest_z(const solver::State& s) {
+  double z = 1e30;
+  for (solver::Index n = 0; n < 27; ++n)
+    z = std::min(z, s.nodes.position(2, n));
+  return z;
+}
+
+}  // namespace
+
+TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or tracked (1)") {
+  TempDir dir;
+  // IGNORE 0 (default): the nine bottom nodes are moved onto the surface, initial position too,
+  // and the block then stays at rest.
+  dir.write("deck.k", sunk_block(""));
+  const Run r = run_mcdyna("run deck.k --out out -q", "cd " + dir.path().string() + " && ");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(r.output.find("contact 1: 9 slave node(s) start inside the master surface, deepest 0.02 "
+                      "at node ") != std::string::npos);
+  CHECK(r.output.find("; 9 moved onto the surface") != std::string::npos);
+  Simulation moved = prepare(dir, sunk_block(""));
+  CHECK(lowest_z(*moved.state) == doctest::Approx(0.0).scale(1.0).epsilon(1e-12));
+  CHECK(moved.state->nodes.initial(2, 0) == doctest::Approx(0.0).scale(1.0).epsilon(1e-12));
+  // IGNORE 1: they stay where they are and contact pushes only beyond that depth: a block at
+  // rest feels no force (the full penalty on 0.02 mm would throw it off the plate).
+  for (const std::string& control :
+       {std::string("*CONTROL_CONTACT\n0.1\n\n\n1\n"), std::string("")}) {
+    Simulation sim = prepare(dir, sunk_block(control));
+    const bool tracked = !control.empty();
+    CHECK(lowest_z(*sim.state) == doctest::Approx(tracked ? -0.02 : 0.0).scale(1.0).epsilon(1e-12));
+    double largest = 0.0;
+    solver::RunHooks hooks;
+    hooks.progress = [&](const solver::State& s) {
+      largest = std::max(largest, s.contacts[0].force_a.norm());
+    };
+    run(sim, hooks);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    MESSAGE((tracked ? "IGNORE 1" : "IGNORE 0"), ": largest contact force ", largest);
+    CHECK(largest == 0.0);
+    CHECK(std::abs(motion(*sim.state, 0, 27).velocity.z()) < 1e-9);
+  }
+}
+
+}  // namespace mcdyna::test

@@ -20,4 +20,18 @@ bool sort_due(const State& s, const Interface& c);
 /// widened by the contact thickness and the search margin, holds the node.
 void sort_buckets(const State& s, Interface& c);
 
+/// What resolve_initial_penetrations found.
+struct InitialPenetrations {
+  long count = 0;  ///< slave nodes that start inside a master surface
+  long moved = 0;  ///< of them moved onto it
+  double deepest = 0.0;
+  Index node = -1;  ///< the deepest one
+};
+
+/// At t = 0, the slave nodes that start inside a master surface. With IGNORE 0 (LS-DYNA's
+/// default) FE nodes are moved onto the surface (initial and current position); SPG particles
+/// (their kernels are built on the generating mesh) and rigid-body nodes, and every node under
+/// IGNORE 1/2, keep their depth as an offset that contact only pushes beyond.
+InitialPenetrations resolve_initial_penetrations(State& s, Interface& c);
+
 }  // namespace mcdyna::solver::contact

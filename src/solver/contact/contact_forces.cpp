@@ -28,6 +28,7 @@ struct Hit {
   Vec3 force = Vec3::Zero();     ///< on the slave node
   Vec3 friction = Vec3::Zero();  ///< tangential force to carry to the next cycle
   Vec3 push = Vec3::Zero();      ///< the side the node is held on (Pass::side)
+  double initial = 0.0;          ///< what is left of the initial penetration (Pass)
 };
 
 // The segment the node touches (the nearest candidate, the deeper of equals) and how.
@@ -94,8 +95,17 @@ double penalty(const Interface& c, const Pass& p, std::size_t i, std::size_t k, 
 
 Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t i) {
   Hit h;
-  const Touch t = find_touch(s, p, i);
+  Touch t = find_touch(s, p, i);
   if (t.segment < 0) return h;
+  // An initial penetration kept as an offset: the node is pushed only beyond it, and as it
+  // moves out the offset follows it down to zero.
+  const double initial = p.initial_penetration[i];
+  h.initial = std::min(initial, t.depth);
+  t.depth -= initial;
+  if (t.depth <= 0.0) {
+    h.push = t.push;  // held on its side while inside its initial depth
+    return h;
+  }
   const auto k = static_cast<std::size_t>(t.segment);
   const Index node = p.nodes[i];
   const double m = s.nodes.mass[static_cast<std::size_t>(node)];
@@ -139,7 +149,43 @@ Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t
   return h;
 }
 
+// Nodes that may be moved out of an initial penetration: FE nodes, not SPG particles or the
+// nodes of rigid bodies.
+bool movable(const State& s, Index node) {
+  if (s.nodes.rigid_body[static_cast<std::size_t>(node)] >= 0) return false;
+  for (const spg::Domain& d : s.spg)
+    if (std::binary_search(d.nodes.begin(), d.nodes.end(), node)) return false;
+  return true;
+}
+
 }  // namespace
+
+InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
+  InitialPenetrations r;
+  sort_buckets(s, c);
+  for (Pass& p : c.passes) {
+    p.initial_penetration.assign(p.nodes.size(), 0.0);
+    for (const Index near : p.near) {
+      const auto i = static_cast<std::size_t>(near);
+      const Touch t = find_touch(s, p, i);
+      if (t.segment < 0) continue;
+      const Index node = p.nodes[i];
+      ++r.count;
+      if (t.depth > r.deepest) {
+        r.deepest = t.depth;
+        r.node = node;
+      }
+      if (c.ignore == 0 && movable(s, node)) {
+        s.nodes.position.col(node) += t.depth * t.push;
+        s.nodes.initial.col(node) = s.nodes.position.col(node);
+        ++r.moved;
+      } else {
+        p.initial_penetration[i] = t.depth;
+      }
+    }
+  }
+  return r;
+}
 
 void contact_pass(State& s) {
   for (Interface& c : s.contacts) {
@@ -182,6 +228,7 @@ void contact_pass(State& s) {
         const auto i = static_cast<std::size_t>(p.near[k]);
         p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
         p.side.col(static_cast<Eigen::Index>(i)) = h.push;
+        p.initial_penetration[i] = h.initial;
         if (h.segment < 0) continue;
         const Index node = p.nodes[i];
         const Vec3 x = s.nodes.position.col(node);

@@ -91,8 +91,10 @@ void sort_pass(const State& s, Pass& p, double margin) {
   for (std::size_t i = 0; i < p.nodes.size(); ++i)
     p.candidate_offsets[i + 1] += p.candidate_offsets[i];
   p.candidates.resize(static_cast<std::size_t>(p.candidate_offsets.back()));
-  // Nodes without candidates cannot touch before the next sort: they hold no friction or side.
+  // Nodes without candidates cannot touch before the next sort: they hold no friction, side or
+  // initial penetration.
   p.near.clear();
+  p.initial_penetration.resize(p.nodes.size(), 0.0);
   for (Index i = 0; i < nodes; ++i) {
     if (p.candidate_offsets[static_cast<std::size_t>(i) + 1] >
         p.candidate_offsets[static_cast<std::size_t>(i)]) {
@@ -100,6 +102,7 @@ void sort_pass(const State& s, Pass& p, double margin) {
     } else {
       p.friction.col(i).setZero();
       p.side.col(i).setZero();
+      p.initial_penetration[static_cast<std::size_t>(i)] = 0.0;
     }
   }
 #pragma omp parallel for schedule(static) if (nodes > 4096)

@@ -47,6 +47,10 @@ struct Pass {
   // a two-sided segment stays on the side it came from however deep it goes (as LS-DYNA's
   // automatic contacts track it), instead of being pushed through once past the mid-surface.
   Eigen::Matrix3Xd side;
+  // Per node, the depth it started inside the surface and was left at (IGNORE 1/2, and SPG
+  // particles or rigid nodes under IGNORE 0): contact pushes only beyond it, and it shrinks as
+  // the node moves out (resolve_initial_penetrations).
+  std::vector<double> initial_penetration;
 };
 
 /// A force applied at the last pass, kept to charge its work over the following step.
@@ -68,6 +72,7 @@ struct Interface {
   int penalty_option = 1;     ///< PENOPT: 1 min(node, segment), 2 segment, 3 node
   int sort_interval = 10;     ///< cycles between bucket sorts (NSBCS; sooner if nodes moved far)
   double initial_step = 0.0;  ///< the first solution step, for SOFT 1 (0 until known)
+  int ignore = 0;             ///< IGNORE: 0 move nodes out of initial penetrations, 1/2 track
 
   // Search state.
   long last_sort = -1;
