@@ -169,7 +169,8 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
 
 // Penalty of a slave node: the stiffest segment (free face K A^2 / V, shell K A / diagonal)
 // holding it, or K V^(1/3) of a particle's volume (K A^2 / V of a cube of that volume). A node
-// on neither (an interior FE node in a node set) gets 0, and so no contact force.
+// inside a solid part (given in a node set) takes K V^(1/3) of its stiffest element; a node on no
+// element is left at 0 and contact then uses the segment's stiffness (contact_forces.cpp).
 std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface>& parts) {
   std::vector<double> k(static_cast<std::size_t>(s.nodes.count()), 0.0);
   for (const PartSurface& p : parts)
@@ -184,6 +185,17 @@ std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface
     for (std::size_t i = 0; i < d.nodes.size(); ++i)
       k[static_cast<std::size_t>(d.nodes[i])] = bulk * std::cbrt(d.initial_volume[i]);
   }
+  std::vector<double> interior(k.size(), 0.0);
+  for (std::size_t e = 0; e < s.solids.ids.size(); ++e) {
+    const PartInfo& part = s.parts[static_cast<std::size_t>(s.solids.part[e])];
+    if (part.material < 0) continue;
+    const double ke = reference_bulk_modulus(s.materials[static_cast<std::size_t>(part.material)]) *
+                      std::cbrt(s.solids.initial_volume[e]);
+    for (const Index n : s.solids.nodes[e])
+      interior[static_cast<std::size_t>(n)] = std::max(interior[static_cast<std::size_t>(n)], ke);
+  }
+  for (std::size_t n = 0; n < k.size(); ++n)
+    if (k[n] == 0.0) k[n] = interior[n];
   return k;
 }
 

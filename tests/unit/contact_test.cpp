@@ -295,6 +295,26 @@ double lowest_z(const solver::State& s) {
 
 }  // namespace
 
+TEST_CASE("contact: every node of a node-set side has a penalty, interior FE nodes too") {
+  TempDir dir;
+  // All 27 nodes of the block as the slave node set; node 14 is its centre, on no free face.
+  std::string nodes = "*SET_NODE_LIST\n5\n";
+  for (int n = 1; n <= 27; ++n)
+    nodes += fmt::format("{}{}", n, n % 8 == 0 || n == 27 ? "\n" : ",");
+  std::string deck = sunk_block("");
+  deck = with(deck, "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n",
+              nodes + "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n5,9,4,3\n");
+  Simulation sim = prepare(dir, deck);
+  const solver::contact::Pass& p = sim.state->contacts.at(0).passes.at(0);
+  REQUIRE(p.nodes.size() == 27);
+  for (const double k : p.stiffness)
+    CHECK(k > 0.0);
+  // SLSFAC x K V^(1/3) of its unit elements: 0.1 x 210000 / (3 (1 - 0.6)).
+  const auto centre = std::find(p.nodes.begin(), p.nodes.end(), 13) - p.nodes.begin();
+  CHECK(p.stiffness[static_cast<std::size_t>(centre)] ==
+        doctest::Approx(0.1 * 210000.0 / 1.2).scale(0.0).epsilon(1e-12));
+}
+
 TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or tracked (1)") {
   TempDir dir;
   // IGNORE 0 (default): the nine bottom nodes are moved onto the surface, initial position too,

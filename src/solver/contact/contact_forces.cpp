@@ -81,7 +81,8 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
 }
 
 double penalty(const Interface& c, const Pass& p, std::size_t i, std::size_t k, double node_mass) {
-  const double node = p.stiffness[i], segment = p.surface.stiffness[k];
+  const double segment = p.surface.stiffness[k];
+  const double node = p.stiffness[i] > 0.0 ? p.stiffness[i] : segment;  // a node on no element
   double stiffness = c.penalty_option == 2   ? segment
                      : c.penalty_option == 3 ? node
                                              : std::min(node, segment);
