@@ -14,7 +14,7 @@ the deck header. --fe-erosion makes the whole plate FE hexahedra with erosion at
 plastic strain of 0.4, the paper's comparison.
 
 usage: fds.py H OUT.k [--time-scale 10] [--mass-scaling 0] [--msc 0] [--stage2 2.1]
-                      [--fe-erosion] [--states 60]
+                      [--fe-erosion] [--states 60] [--cycles N]
 """
 import argparse
 import math
@@ -139,6 +139,7 @@ def main():
     ap.add_argument("--stage2", type=float, default=2.1, help="plunge in stage 2, mm")
     ap.add_argument("--fe-erosion", action="store_true")
     ap.add_argument("--states", type=int, default=60)
+    ap.add_argument("--cycles", type=int, default=0, help="ENDCYC: stop after N cycles (benchmarks)")
     a = ap.parse_args()
     h, scale = a.h, a.time_scale
     layers = max(2, round(THICKNESS / h))
@@ -178,7 +179,7 @@ def main():
     w("*TITLE")
     w(f"FDS thread forming h {h} mm" + (" FE erosion" if a.fe_erosion else " MC-SPG"))
     w("*CONTROL_TERMINATION")
-    w(f"{t_end:10.4E}")
+    w(f"{t_end:10.4E}" + (f"{a.cycles:10d}" if a.cycles else ""))
     w("*CONTROL_TIMESTEP")
     w(f"       0.0       0.9         0       0.0{field(-a.mass_scaling) if a.mass_scaling else '       0.0'}")
     w("*CONTROL_CONTACT")
