@@ -284,7 +284,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s))\n", omp_get_max_threads());
   for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
     const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
-    if (p >= solver::PhaseTimes::spg_neighbours && state->spg.empty()) continue;
+    // SPG rows only for decks with SPG parts, the contact row only for decks with contact.
+    if (p == solver::PhaseTimes::contact) {
+      if (state->contacts.empty()) continue;
+    } else if (p >= solver::PhaseTimes::spg_neighbours && state->spg.empty()) {
+      continue;
+    }
     fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %\n", solver::PhaseTimes::name(p), sec,
                result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
   }

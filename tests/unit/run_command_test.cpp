@@ -329,6 +329,8 @@ TEST_CASE("rcforc: a slave and a master line per contact and output time, equal 
   CHECK(sliding > 0.0);
   CHECK(std::abs(gl.rows.back()[gl.column("energy_ratio")] - 1.0) < 3e-3);
   check_ascii_matches_csv(out, "rcforc", 1e-4, 2 * 7);
+  // The timing table has a contact row for a deck with contact and no SPG part.
+  CHECK(read_text(out / "d3hsp").find("\n  contact ") != std::string::npos);
   check_ascii_matches_csv(out, "glstat", 1e-4, 13);
 }
 
