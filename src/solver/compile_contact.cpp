@@ -33,6 +33,7 @@ struct PartSurface {
   Surface surface;  ///< free faces of its hexahedra, then its shells (stiffness before scaling)
   std::vector<double> shell_thickness;  ///< per segment, 0 for solid faces
   std::vector<Index> particles;
+  std::vector<Index> solid_nodes;  ///< every node of its deformable hexahedra
 };
 
 struct Element {
@@ -164,6 +165,16 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   }
   for (const spg::Domain& d : s.spg)
     out[static_cast<std::size_t>(d.part)].particles = d.nodes;
+  for (Index e = 0; e < s.solids.count(); ++e) {
+    const auto ee = static_cast<std::size_t>(e);
+    std::vector<Index>& nodes = out[static_cast<std::size_t>(s.solids.part[ee])].solid_nodes;
+    nodes.insert(nodes.end(), s.solids.nodes[ee].begin(), s.solids.nodes[ee].end());
+  }
+  for (PartSurface& p : out) {
+    std::sort(p.solid_nodes.begin(), p.solid_nodes.end());
+    p.solid_nodes.erase(std::unique(p.solid_nodes.begin(), p.solid_nodes.end()),
+                        p.solid_nodes.end());
+  }
   return out;
 }
 
@@ -200,7 +211,10 @@ std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface
 }
 
 struct Side {
-  std::vector<Index> nodes;
+  std::vector<Index> nodes;  ///< the nodes of its segments and its particles
+  /// As slave nodes of a nodes-to-surface contact a part gives every node of its hexahedra:
+  /// the interior ones meet the master surface once the elements around them erode.
+  std::vector<Index> slave_nodes;
   Surface surface;
   std::vector<double> shell_thickness;
   bool has_particles = false;
@@ -290,9 +304,14 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
     }
     out.nodes.insert(out.nodes.end(), ps.particles.begin(), ps.particles.end());
     out.has_particles = out.has_particles || !ps.particles.empty();
+    out.slave_nodes.insert(out.slave_nodes.end(), ps.solid_nodes.begin(), ps.solid_nodes.end());
   }
   std::sort(out.nodes.begin(), out.nodes.end());
   out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end()), out.nodes.end());
+  out.slave_nodes.insert(out.slave_nodes.end(), out.nodes.begin(), out.nodes.end());
+  std::sort(out.slave_nodes.begin(), out.slave_nodes.end());
+  out.slave_nodes.erase(std::unique(out.slave_nodes.begin(), out.slave_nodes.end()),
+                        out.slave_nodes.end());
   return out;
 }
 
@@ -393,7 +412,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     auto make_pass = [&](const Side& nodes, double node_scale, const Side& segments,
                          double segment_scale, double thickness, bool nodes_on_a) {
       Pass p;
-      p.nodes = nodes.nodes;
+      p.nodes = two_way ? nodes.nodes : nodes.slave_nodes;
       p.nodes_on_side_a = nodes_on_a;
       p.stiffness.resize(p.nodes.size());
       for (std::size_t i = 0; i < p.nodes.size(); ++i)
@@ -439,7 +458,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
         thickest = std::max(thickest, p.surface.half_thickness[j]);
       }
     in.capture = 0.5 * largest + thickest;
-    in.tracked = a.nodes;
+    in.tracked = two_way ? a.nodes : a.slave_nodes;
     in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
     std::sort(in.tracked.begin(), in.tracked.end());
     in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());

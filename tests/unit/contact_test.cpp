@@ -315,6 +315,23 @@ TEST_CASE("contact: every node of a node-set side has a penalty, interior FE nod
         doctest::Approx(0.1 * 210000.0 / 1.2).scale(0.0).epsilon(1e-12));
 }
 
+TEST_CASE("contact: a part as nodes-to-surface slave gives all its nodes, interior ones too") {
+  TempDir dir;
+  // 3 x 3 x 3 hexahedra: 64 nodes, 8 of them inside. Once the elements around an interior node
+  // erode it meets the master surface, so it is a slave node from the start.
+  const std::string deck =
+      header(1e-7) +
+      "*PART\nblock\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,7.85e-9,210000.0,0.3\n" +
+      box_mesh(3, 3, 3, 1.0, 1, 1, 1, 0.1) + rigid_plate(-10, -10, 12, 12) +
+      "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
+  Simulation n2s = prepare(dir, deck);
+  CHECK(n2s.state->contacts.at(0).passes.at(0).nodes.size() == 64);
+  // Surface to surface works on the free faces: 56 surface nodes.
+  Simulation s2s = prepare(dir, with(deck, "*CONTACT_AUTOMATIC_NODES_TO_SURFACE",
+                                     "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE"));
+  CHECK(s2s.state->contacts.at(0).passes.at(0).nodes.size() == 56);
+}
+
 TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or tracked (1)") {
   TempDir dir;
   // IGNORE 0 (default): the nine bottom nodes are moved onto the surface, initial position too,

@@ -139,6 +139,8 @@ def main():
     ap.add_argument("--stage2", type=float, default=2.1, help="plunge in stage 2, mm")
     ap.add_argument("--fe-erosion", action="store_true")
     ap.add_argument("--states", type=int, default=60)
+    ap.add_argument("--penalty-scale", type=float, default=10.0,
+                    help="SFSA = SFSB: contact penalty x this (the screw skin is 0.02 mm thin)")
     ap.add_argument("--cycles", type=int, default=0, help="ENDCYC: stop after N cycles (benchmarks)")
     a = ap.parse_args()
     h, scale = a.h, a.time_scale
@@ -171,6 +173,7 @@ def main():
     w(f"$ TIME SCALE {scale:g}: every speed x {scale:g} and every time / {scale:g} "
       f"(stage 1 ends at {t1:.4e} s, end {t_end:.4e} s).")
     w(f"$ MASS SCALING: {'DT2MS = %g s' % a.mass_scaling if a.mass_scaling > 0 else 'none'}.")
+    w(f"$ CONTACT: penalty x {a.penalty_scale:g} (SFSA = SFSB), SOFT 1, friction 0.3.")
     w(f"$ Plate: {layers} layers through 1.5 mm; Ø7 mm centre "
       f"{'FE' if a.fe_erosion else 'MC-SPG'}, FE ring to Ø20 mm, perimeter clamped.")
     w(f"$ How to run: mcdyna run {a.out} --out results/fds; tools/verify/fds_force.py results/fds")
@@ -262,7 +265,8 @@ def main():
     w("         1screw on plate")
     w("         1         3         2         3")
     w("       0.3       0.3")
-    w("")
+    w("$     SFSA      SFSB")
+    w(f"{a.penalty_scale:10.1f}{a.penalty_scale:10.1f}")
     w("         1       0.1")
     w("*END")
     with open(a.out, "w") as f:
