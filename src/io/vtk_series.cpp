@@ -42,6 +42,10 @@ struct CellFields {
   vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
   vtkNew<vtkFloatArray> bond_damage;  ///< SPG: share of the particle's bonds broken (0 for FE)
   vtkNew<vtkIntArray> part, eroded;
+  /// SPG: how the particle is integrated now, 0 smoothed (MC-SPG), 1 pinned (plain velocity:
+  /// shared with FE, constrained), 2 isolated (degenerate neighbourhood: no stress), 3 debris
+  /// (failed material whose row inverted: no stress); -1 for other cells.
+  vtkNew<vtkIntArray> spg_state;
   CellFields() {
     stress->SetName("stress");
     stress->SetNumberOfComponents(6);
@@ -56,9 +60,10 @@ struct CellFields {
     bond_damage->SetName("bond_damage");
     part->SetName("part_id");
     eroded->SetName("erosion_state");
+    spg_state->SetName("spg_state");
   }
   void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id,
-           double bonds = 0.0) {
+           double bonds = 0.0, int particle_state = -1) {
     const auto& s = r.stress;
     const float tuple[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                             static_cast<float>(s[2]), static_cast<float>(s[3]),
@@ -72,11 +77,12 @@ struct CellFields {
     bond_damage->InsertNextValue(static_cast<float>(bonds));
     part->InsertNextValue(part_id);
     eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
+    spg_state->InsertNextValue(particle_state);
   }
   void attach(vtkUnstructuredGrid* g) {
-    for (vtkDataArray* a :
-         std::initializer_list<vtkDataArray*>{stress, von_mises, plastic_strain, temperature,
-                                              damage, pressure, bond_damage, part, eroded})
+    for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
+             stress, von_mises, plastic_strain, temperature, damage, pressure, bond_damage, part,
+             eroded, spg_state})
       g->GetCellData()->AddArray(a);
   }
 };
@@ -125,8 +131,10 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
     for (Index i = 0; i < d.count(); ++i) {
       const vtkIdType vertex = d.nodes[static_cast<std::size_t>(i)];
       grid->InsertNextCell(VTK_VERTEX, 1, &vertex);
-      fields.add(solver::particle_result(d, i), d.pressure[static_cast<std::size_t>(i)],
-                 d.temperature[static_cast<std::size_t>(i)], part_id, d.bonds.damage(i));
+      const auto ii = static_cast<std::size_t>(i);
+      const int state = d.debris[ii] ? 3 : d.isolated[ii] ? 2 : d.pinned[ii] ? 1 : 0;
+      fields.add(solver::particle_result(d, i), d.pressure[ii], d.temperature[ii], part_id,
+                 d.bonds.damage(i), state);
     }
   }
   const solver::DisplayCells& rc = s.rigid_cells;

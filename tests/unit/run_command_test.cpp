@@ -128,6 +128,11 @@ TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working di
   CHECK(last->GetNumberOfCells() == 8);
   CHECK(last->GetNumberOfPoints() == 27);
   REQUIRE(last->GetCellData()->GetArray("stress") != nullptr);
+  // spg_state is -1 on FE cells (0-3 on SPG particles: smoothed, pinned, isolated, debris).
+  vtkDataArray* spg_state = last->GetCellData()->GetArray("spg_state");
+  REQUIRE(spg_state != nullptr);
+  CHECK(spg_state->GetRange()[0] == -1.0);
+  CHECK(spg_state->GetRange()[1] == -1.0);
   CHECK(last->GetCellData()->GetArray("stress")->GetNumberOfComponents() == 6);
   for (const char* a :
        {"von_mises", "effective_plastic_strain", "temperature", "part_id", "erosion_state"})
