@@ -64,3 +64,16 @@ TEST_CASE("keywords: list and card layout") {
   CHECK(std::filesystem::exists(d.path() / "MAT_JOHNSON_COOK.md"));
   CHECK(std::filesystem::exists(d.path() / "README.md"));
 }
+
+namespace mcdyna::test {
+
+TEST_CASE("the shipped flow-drill-screw decks read clean") {
+  for (const char* deck : {"decks/fds/fds_h0.3.k", "decks/fds/fds_h0.15.k"}) {
+    const Run r = run_mcdyna(std::string("check -q ") + MCDYNA_SOURCE_DIR + "/" + deck);
+    CHECK_MESSAGE(r.exit_code == 0, r.output);
+    CHECK_MESSAGE(r.output.find("0 errors, 0 warnings - ready to run") != std::string::npos,
+                  r.output);
+  }
+}
+
+}  // namespace mcdyna::test
