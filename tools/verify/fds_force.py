@@ -60,9 +60,11 @@ def main():
                 f.write(",".join(f"{v:.9e}" for v in row) + "\n")
         s = summary(plunge, fz)
         label = a.label[i] if a.label and i < len(a.label) else run
+        def at(x):
+            return "never" if np.isnan(x) else f"from {x:.3f} mm"
         print(f"{label}: peak thrust {s['peak_thrust']:.1f} N at plunge {s['plunge_at_peak']:.3f} mm; "
-              f"thrust below half the peak from {s['break_through']:.3f} mm; first tension at "
-              f"{s['sign_reversal']:.3f} mm; largest tension {s['largest_tension']:.1f} N; "
+              f"thrust below half the peak {at(s['break_through'])}; tension (force < 0) "
+              f"{at(s['sign_reversal'])}, largest {s['largest_tension']:.1f} N; "
               f"largest torque {np.abs(mz).max():.2f} N mm")
         curves.append((label, plunge, fz, mz))
     if a.png:
