@@ -165,6 +165,7 @@ void WideTableBuilder::row_at(double time) {
   new_row();
   last_time_ = time;
   have_time_ = true;
+  set("time", time);
 }
 
 void WideTableBuilder::new_row() {
@@ -174,8 +175,8 @@ void WideTableBuilder::new_row() {
 }
 
 std::size_t WideTableBuilder::column(const std::string& name) {
-  const auto it = std::find(names_.begin(), names_.end(), name);
-  if (it != names_.end()) return static_cast<std::size_t>(it - names_.begin());
+  const auto [it, added] = index_.emplace(name, names_.size());
+  if (!added) return it->second;
   names_.push_back(name);
   columns_.emplace_back(rows_, kMissing);
   return names_.size() - 1;
@@ -192,6 +193,7 @@ HistoryTable WideTableBuilder::finish(const std::string& source, const std::stri
   t.format = format;
   t.names = std::move(names_);
   t.columns = std::move(columns_);
+  index_.clear();
   return t;
 }
 

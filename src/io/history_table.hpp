@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace mcdyna::io {
@@ -41,7 +42,8 @@ namespace detail {
 /// Collects values row by row into named columns (new columns are NaN-padded backwards).
 class WideTableBuilder {
  public:
-  /// Starts a row, or continues the last one when it has the same `time` (key files).
+  /// Starts a row at `time` (and sets the "time" column), or continues the last one when it has
+  /// the same time (files listing several entities per time).
   void row_at(double time);
   /// Starts a new row unconditionally (plain CSV).
   void new_row();
@@ -51,6 +53,7 @@ class WideTableBuilder {
  private:
   std::size_t column(const std::string& name);
   std::vector<std::string> names_;
+  std::unordered_map<std::string, std::size_t> index_;  ///< name -> position in names_
   std::vector<std::vector<double>> columns_;
   std::size_t rows_ = 0;
   double last_time_ = 0.0;

@@ -158,7 +158,6 @@ HistoryTable read_rcforc(const LineReader& r, const std::string& source) {
     if (t.size() < 4 || (t[0] != "master" && t[0] != "slave") || t[2] != "time") continue;
     const double time = r.number(n, t[3]);
     b.row_at(time);
-    b.set("time", time);
     const std::string key = "@" + t[1] + "/" + t[0];
     for (std::size_t k = 4; k + 1 < t.size(); k += 2) {
       const auto it = renamed.find(t[k]);
@@ -185,7 +184,6 @@ HistoryTable read_nodout(const LineReader& r, const std::string& source) {
     if (contains(line, "n o d a l   p r i n t")) {
       const double time = r.after(n, "at time");
       b.row_at(time);
-      b.set("time", time);
       names = nullptr;
       continue;
     }
@@ -215,7 +213,6 @@ HistoryTable read_spcforc(const LineReader& r, const std::string& source) {
     if (contains(line, "output at time")) {
       const double time = r.after(n, "=");
       b.row_at(time);
-      b.set("time", time);
       continue;
     }
     std::string key;
@@ -249,7 +246,6 @@ HistoryTable read_bndout(const LineReader& r, const std::string& source) {
     if (contains(line, "o u t p u t")) {
       const double time = r.after(n, "t=");
       b.row_at(time);
-      b.set("time", time);
       continue;
     }
     if (contains(line, "discrete nodal")) section = "discrete";
@@ -310,7 +306,6 @@ HistoryTable read_matsum(const LineReader& r, const std::string& source) {
     if (trimmed.rfind("time =", 0) == 0 || trimmed.rfind("time=", 0) == 0) {
       const double time = r.after(n, "=");
       b.row_at(time);
-      b.set("time", time);
       continue;
     }
     if (trimmed.find('=') == std::string::npos || trimmed.rfind("Maximum", 0) == 0) continue;
@@ -335,7 +330,6 @@ HistoryTable read_rwforc(const LineReader& r, const std::string& source) {
     if (t.size() != 6 || !deck::parse_real(t[0])) continue;
     const double time = r.number(n, t[0]);
     b.row_at(time);
-    b.set("time", time);
     const std::string key = "@" + t[1];
     b.set("normal_force" + key, r.number(n, t[2]));
     b.set("x_force" + key, r.number(n, t[3]));

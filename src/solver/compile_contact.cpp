@@ -315,10 +315,6 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // Slave nodes that start inside the master surface, said at the contact keyword: moved onto it
 // (IGNORE 0) or kept as tracked offsets (IGNORE 1/2, SPG particles, rigid nodes).
 void report_initial_penetrations(State& s, Interface& in, const model::Contact& c,
