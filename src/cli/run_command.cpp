@@ -30,7 +30,8 @@ extern "C" void on_stop_signal(int sig) {
   g_stop_signal = sig;
 }
 
-// Progress: a refreshed line on a terminal, otherwise a plain line every 5 % of the end time.
+// Progress: a refreshed line on a terminal, otherwise a plain line every 5 % of the end time,
+// flushed (a batch run's redirected output is block-buffered and showed nothing until the end).
 // The same lines (every 5 %) go to d3hsp as the time-step history.
 class Progress {
  public:
@@ -51,6 +52,7 @@ class Progress {
         s.time, s.step, 100.0 * fraction, elapsed, eta);
     if (milestone) {
       fmt::print(log_, "{}\n", line);
+      log_.flush();  // a user tailing d3hsp (or a batch log) sees the run advance
       while (next_fraction_ <= fraction)
         next_fraction_ += 0.05;
     }
@@ -61,6 +63,7 @@ class Progress {
       last_print_ = now;
     } else if (milestone) {
       fmt::print(out_, "{}\n", line);
+      out_.flush();
     }
   }
   void finish() {
