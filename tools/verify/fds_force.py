@@ -34,6 +34,16 @@ def history(run):
     return t, plunge, fz, mz
 
 
+def write_force_csv(run):
+    """RUN/force_vs_plunge.csv (time, plunge, axial_force, torque); returns the columns."""
+    t, plunge, fz, mz = history(run)
+    with open(os.path.join(run, "force_vs_plunge.csv"), "w") as f:
+        f.write("time,plunge,axial_force,torque\n")
+        for row in zip(t, plunge, fz, mz):
+            f.write(",".join(f"{v:.9e}" for v in row) + "\n")
+    return t, plunge, fz, mz
+
+
 def summary(plunge, fz):
     k = int(np.argmax(fz))
     out = {"peak_thrust": fz[k], "plunge_at_peak": plunge[k]}
@@ -53,11 +63,7 @@ def main():
     a = ap.parse_args()
     curves = []
     for i, run in enumerate(a.runs):
-        t, plunge, fz, mz = history(run)
-        with open(os.path.join(run, "force_vs_plunge.csv"), "w") as f:
-            f.write("time,plunge,axial_force,torque\n")
-            for row in zip(t, plunge, fz, mz):
-                f.write(",".join(f"{v:.9e}" for v in row) + "\n")
+        t, plunge, fz, mz = write_force_csv(run)
         s = summary(plunge, fz)
         label = a.label[i] if a.label and i < len(a.label) else run
         def at(x):

@@ -1,0 +1,296 @@
+#!/usr/bin/python3
+"""Speed against error for the verified scenes (issue 6): runs each scene at several resolutions
+and methods with build/mcdyna, measures every run's error against its reference and its cost,
+and writes a table and plots.
+
+usage: tools/study.py [--quick] [--out results/study] [--threads N] [--only FAMILY ...]
+                      [--reuse]
+
+Families, methods and references (benchmarks.md, paper §4):
+  elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
+                error: relative L2 of the free-end displacement against the analytic solution
+                (also the mid-length stress error)
+  taylor_bar    FE hex, MC-SPG; coarse (quick) + medium, fine
+                error: final length against Wilkins & Guinan's 16.51 mm (also the footprint
+                diameter against their 16.7 mm, and the length against the FE codes' 15.95 mm)
+  fds           MC-SPG and FE with erosion; h 0.3 (quick) + 0.15
+                error: RMS difference of the axial force on the screw against the reference run,
+                aligned on plunge, over the reference's peak (`mcdyna compare`); the reference
+                is the finest MC-SPG run of the study, or decks/fds/reference_force_h0.15.csv
+                (the full study's h 0.15 run) when the study has no finer run than h 0.3
+
+Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
+line per method, one panel per family) and the history plots OUT/elastic_wave.png,
+OUT/taylor_bar.png, OUT/fds_force.png. --reuse skips runs whose d3hsp reports a normal
+termination. The quick study takes about 8 minutes on 2 cores; the full one several hours.
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools", "verify"))
+
+import elastic_wave  # noqa: E402  (tools/verify)
+import fds_force  # noqa: E402
+import taylor_bar  # noqa: E402
+
+MCDYNA = os.path.join(ROOT, "build", "mcdyna")
+FDS_REFERENCE = os.path.join(ROOT, "decks", "fds", "reference_force_h0.15.csv")
+TAYLOR_EXPERIMENT_LENGTH, TAYLOR_EXPERIMENT_DIAMETER, TAYLOR_FE_LENGTH = 16.51, 16.7, 15.95
+
+
+@dataclass
+class Case:
+    family: str
+    method: str
+    resolution: str
+    deck: str                      # path relative to ROOT, or a generator command (list)
+    quick: bool
+    flags: list = field(default_factory=list)
+    generate: list = field(default_factory=list)  # generator argv writing `deck`
+
+    @property
+    def name(self):
+        return f"{self.family}_{self.method}_{self.resolution}".replace(" ", "_").replace("+", "")
+
+
+def cases():
+    out = []
+    for h, quick in (("0.2", True), ("0.1", True), ("0.05", False)):
+        out.append(Case("elastic_wave", "FE hex", f"h {h}", f"decks/elastic_wave/rod_h{h}.k", quick))
+        out.append(Case("elastic_wave", "MC-SPG", f"h {h}", f"decks/elastic_wave/rod_spg_h{h}.k",
+                        quick))
+        out.append(Case("elastic_wave", "plain DNI", f"h {h}",
+                        f"decks/elastic_wave/rod_spg_h{h}.k", quick,
+                        flags=["--spg-stabilization", "none"]))
+    for r, quick in (("coarse", True), ("medium", False), ("fine", False)):
+        out.append(Case("taylor_bar", "FE hex", r, f"decks/taylor_bar/taylor_{r}.k", quick))
+        out.append(Case("taylor_bar", "MC-SPG", r, f"decks/taylor_bar/taylor_spg_{r}.k", quick))
+    for h, quick in (("0.3", True), ("0.15", False)):
+        out.append(Case("fds", "MC-SPG", f"h {h}", f"decks/fds/fds_h{h}.k", quick))
+        out.append(Case("fds", "FE + erosion", f"h {h}", f"{{out}}/decks/fds_fe_h{h}.k", quick,
+                        generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", "20",
+                                  "--fe-erosion"]))
+    return out
+
+
+def run_facts(run_dir):
+    """Cycles, wall time, particles, elements and rates from d3hsp; None if it did not finish."""
+    path = os.path.join(run_dir, "d3hsp")
+    if not os.path.exists(path):
+        return None
+    text = open(path).read()
+    if "normal termination" not in text:
+        return None
+
+    def number(pattern, cast=float, default=0):
+        m = re.search(pattern, text, re.M)
+        return cast(m.group(1)) if m else default
+
+    # FE hexahedra: the parts whose section is a solid element (an SPG part's hexahedra become
+    # particles).
+    solids = sum(int(m.group(1)) for m in
+                 re.finditer(r"^\s+\d+\s+(\d+)\s+\d+ solid ELFORM", text, re.M))
+    return dict(
+        cycles=number(r"normal termination .* cycle (\d+)", int),
+        wall=number(r"^  total\s+([0-9.]+) s"),
+        threads=number(r"^threads: (\d+)", int),
+        particles=number(r"^  SPG particles\s+(\d+)", int),
+        solids=solids,
+        particle_rate=number(r"([0-9.]+) million particle-steps/s") * 1e6,
+        element_rate=number(r"([0-9.]+) million element-cycles/s") * 1e6,
+    )
+
+
+def run_case(case, out_dir, threads, reuse):
+    run_dir = os.path.join(out_dir, "runs", case.name)
+    deck = case.deck.format(out=out_dir)
+    if reuse and run_facts(run_dir):
+        return run_dir
+    if case.generate:
+        os.makedirs(os.path.dirname(deck), exist_ok=True)
+        argv = [a.format(deck=deck) for a in case.generate]
+        subprocess.run(["/usr/bin/python3", os.path.join(ROOT, argv[0])] + argv[1:], check=True,
+                       cwd=ROOT, stdout=subprocess.DEVNULL)
+    elif not os.path.exists(os.path.join(ROOT, deck)):
+        sys.exit(f"study: {deck} is missing: decks/generate.sh writes the large decks")
+    cmd = [MCDYNA, "run", os.path.join(ROOT, deck), "--out", run_dir, "-q"] + case.flags
+    if threads:
+        cmd += ["--threads", str(threads)]
+    start = time.time()
+    print(f"  {case.family:<13} {case.method:<13} {case.resolution:<7}", end="", flush=True)
+    done = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                          text=True)
+    print(f" {time.time() - start:8.1f} s" + ("" if done.returncode == 0 else
+                                               f"  exit {done.returncode}"), flush=True)
+    if done.returncode != 0:
+        print(done.stderr.strip()[-2000:], file=sys.stderr)
+    return run_dir
+
+
+def compare_force(run_dir, reference_csv):
+    """Axial force on the screw against the reference, aligned on plunge, by `mcdyna compare`:
+    (RMS |A - B| / peak B, max |A - B| / peak B, correlation)."""
+    fds_force.write_force_csv(run_dir)
+    mine = os.path.join(run_dir, "force_vs_plunge.csv")
+    if os.path.abspath(mine) == os.path.abspath(reference_csv):
+        return 0.0, 0.0, 1.0
+    done = subprocess.run([MCDYNA, "compare", mine, reference_csv, "--x", "plunge", "-c",
+                           "axial_force"], capture_output=True, text=True, check=True)
+    for line in done.stdout.splitlines():
+        f = line.split()
+        if f and f[0] == "axial_force":
+            # column max|A-B| at RMS max/peakB peakA at peakB at corr
+            peak_b = abs(float(f[7]))
+            return float(f[3]) / peak_b, float(f[4]), float(f[9])
+    raise RuntimeError(f"mcdyna compare gave no axial_force row:\n{done.stdout}")
+
+
+def measure(case, run_dir, fds_reference):
+    """Error figures of one finished run: (error for the plot, dict of all figures)."""
+    if case.family == "elastic_wave":
+        r = elastic_wave.analyse(run_dir)
+        return r["l2"], {"u_l2": r["l2"], "sigma_error": r["stress"],
+                         "sigma_overshoot": r["overshoot"]}
+    if case.family == "taylor_bar":
+        length, diameter = taylor_bar.final_shape(run_dir)
+        err = abs(length / TAYLOR_EXPERIMENT_LENGTH - 1.0)
+        return err, {"final_length": length, "footprint_diameter": diameter,
+                     "length_error_vs_experiment": err,
+                     "diameter_error_vs_experiment": abs(diameter / TAYLOR_EXPERIMENT_DIAMETER - 1),
+                     "length_error_vs_fe_codes": abs(length / TAYLOR_FE_LENGTH - 1.0)}
+    rms, worst, corr = compare_force(run_dir, fds_reference)
+    return rms, {"force_rms_over_peak": rms, "force_max_over_peak": worst,
+                 "force_correlation": corr}
+
+
+def resolution_key(case):
+    m = re.search(r"[0-9.]+", case.resolution)
+    order = {"coarse": 0, "medium": 1, "fine": 2}
+    return -float(m.group(0)) if m else order.get(case.resolution, 0)
+
+
+# Panels of error_vs_time.png: (family, figure, axis label).
+PANELS = [("elastic_wave", "u_l2", "elastic wave: u(L) relative L2 error"),
+          ("elastic_wave", "sigma_error", "elastic wave: σ(L/2) mean error / ρc|v0|"),
+          ("taylor_bar", "length_error_vs_experiment", "Taylor bar: |Lf / 16.51 mm − 1|"),
+          ("fds", "force_rms_over_peak", "FDS: axial force RMS diff / reference peak")]
+
+
+def plot_error_vs_time(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    panels = [p for p in PANELS if any(r["family"] == p[0] and r.get(p[1], 0) > 0 for r in rows)]
+    if not panels:
+        return
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.6 * len(panels), 4.2), squeeze=False)
+    for ax, (fam, key, label) in zip(axes[0], panels):
+        for method in dict.fromkeys(r["method"] for r in rows if r["family"] == fam):
+            pts = [r for r in rows if r["family"] == fam and r["method"] == method
+                   and r.get(key, 0) > 0]
+            if not pts:
+                continue
+            ax.loglog([p["wall_s"] for p in pts], [p[key] for p in pts], "o-", label=method)
+            for p in pts:
+                ax.annotate(p["resolution"], (p["wall_s"], p[key]), fontsize=7,
+                            textcoords="offset points", xytext=(3, 3))
+        ax.set_xlabel("wall time, s")
+        ax.set_ylabel(label, fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def history_plots(out_dir, finished):
+    by_family = {}
+    for case, run_dir in finished:
+        by_family.setdefault(case.family, []).append((case, run_dir))
+    py = "/usr/bin/python3"
+    verify = os.path.join(ROOT, "tools", "verify")
+    if "elastic_wave" in by_family:
+        dirs = [d for c, d in by_family["elastic_wave"] if c.method != "plain DNI"]
+        subprocess.run([py, os.path.join(verify, "elastic_wave.py")] + dirs +
+                       ["--png", os.path.join(out_dir, "elastic_wave.png")], check=True,
+                       stdout=subprocess.DEVNULL)
+    if "taylor_bar" in by_family:
+        taylor_bar.plot_profiles([(f"{c.method} {c.resolution}", d)
+                                  for c, d in by_family["taylor_bar"]],
+                                 os.path.join(out_dir, "taylor_bar.png"))
+    if "fds" in by_family:
+        argv = [py, os.path.join(verify, "fds_force.py")] + [d for _, d in by_family["fds"]]
+        for c, _ in by_family["fds"]:
+            argv += ["--label", f"{c.method} {c.resolution}"]
+        subprocess.run(argv + ["--png", os.path.join(out_dir, "fds_force.png")], check=True,
+                       stdout=subprocess.DEVNULL)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true", help="the CI-length subset (~8 min)")
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "study"))
+    ap.add_argument("--threads", type=int, default=0, help="OpenMP threads (default: all)")
+    ap.add_argument("--only", nargs="+", choices=["elastic_wave", "taylor_bar", "fds"])
+    ap.add_argument("--reuse", action="store_true", help="keep runs that finished before")
+    a = ap.parse_args()
+    if not os.path.exists(MCDYNA):
+        sys.exit("study: build/mcdyna is missing (cmake --build build)")
+    todo = [c for c in cases() if (c.quick or not a.quick) and (not a.only or c.family in a.only)]
+    os.makedirs(a.out, exist_ok=True)
+    print(f"study ({'quick' if a.quick else 'full'}): {len(todo)} runs into {a.out}")
+    finished = []
+    for case in todo:
+        run_dir = run_case(case, a.out, a.threads, a.reuse)
+        if run_facts(run_dir):
+            finished.append((case, run_dir))
+    # The FDS reference: the finest MC-SPG run of the study, unless that is only h 0.3.
+    spg_fds = sorted((c for c, _ in finished if c.family == "fds" and c.method == "MC-SPG"),
+                     key=resolution_key)
+    fds_reference = FDS_REFERENCE
+    if spg_fds and spg_fds[-1].resolution != "h 0.3":
+        fds_reference = os.path.join(a.out, "runs", spg_fds[-1].name, "force_vs_plunge.csv")
+        fds_force.write_force_csv(os.path.dirname(fds_reference))
+    rows = []
+    for case, run_dir in finished:
+        facts = run_facts(run_dir)
+        error, figures = measure(case, run_dir, fds_reference)
+        work = facts["particles"] + facts["solids"]
+        rows.append(dict(family=case.family, method=case.method, resolution=case.resolution,
+                         particles=facts["particles"], elements=facts["solids"],
+                         cycles=facts["cycles"], threads=facts["threads"],
+                         wall_s=facts["wall"],
+                         steps_per_s=work * facts["cycles"] / facts["wall"] if facts["wall"] else 0,
+                         error=error, **{k: v for k, v in figures.items()}))
+    columns = []
+    for r in rows:
+        columns += [k for k in r if k not in columns]
+    with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        w.writerows(rows)
+    print(f"\n{'family':<13} {'method':<13} {'res':<7} {'particles':>9} {'elements':>8} "
+          f"{'cycles':>7} {'wall s':>8} {'(p+e)-steps/s':>13} {'error':>9}")
+    for r in rows:
+        print(f"{r['family']:<13} {r['method']:<13} {r['resolution']:<7} {r['particles']:>9} "
+              f"{r['elements']:>8} {r['cycles']:>7} {r['wall_s']:>8.1f} "
+              f"{r['steps_per_s'] / 1e6:>12.3f}M {r['error']:>9.4f}")
+    if any(c.family == "fds" for c, _ in finished):
+        print(f"fds reference: {os.path.relpath(fds_reference, ROOT)}")
+    plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
+    history_plots(a.out, finished)
+    print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
+    if len(finished) < len(todo):
+        sys.exit(f"study: {len(todo) - len(finished)} run(s) did not finish")
+
+
+if __name__ == "__main__":
+    main()
