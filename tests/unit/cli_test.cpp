@@ -1,6 +1,10 @@
 // The command line as users run it: exit codes 0 / 1 / 2, LS-DYNA style i=, reports.
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
 #include "test_support.hpp"
 
 namespace {
@@ -63,6 +67,26 @@ TEST_CASE("keywords: list and card layout") {
   CHECK(run_mcdyna("keywords --markdown " + d.path().string()).exit_code == 0);
   CHECK(std::filesystem::exists(d.path() / "MAT_JOHNSON_COOK.md"));
   CHECK(std::filesystem::exists(d.path() / "README.md"));
+  // manual/keywords/ is committed so the manual reads on its own: it must be what the schemas
+  // generate now (regenerate with `cmake --build build --target keyword_docs`).
+  const std::filesystem::path committed =
+      std::filesystem::path(MCDYNA_SOURCE_DIR) / "manual/keywords";
+  auto read = [](const std::filesystem::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(d.path())) {
+    ++files;
+    const std::filesystem::path mine = committed / e.path().filename();
+    const std::string stale =
+        mine.string() + " is not what `mcdyna keywords --markdown` writes now";
+    CHECK_MESSAGE(read(mine) == read(e.path()), stale);
+  }
+  int committed_files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(committed))
+    ++committed_files;
+  CHECK(committed_files == files);  // no page left over from a removed keyword
 }
 
 namespace mcdyna::test {
