@@ -115,6 +115,10 @@ struct Domain {
   std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
   std::vector<double> length;         ///< characteristic length at the renewal
   std::vector<double> renewal_volume;  ///< volume at the renewal
+  /// Largest nearest-neighbour distance x gradient norm (sum_K |grad phi_K|^2)^(1/2) of the rows
+  /// at the first renewal: a row whose gradients later grow past it (an ill-conditioned, torn
+  /// neighbourhood) gets the shorter length kappa / |grad phi| (renewal.cpp).
+  double gradient_length_scale = 0.0;
   int steps_since_renewal = 0;
   long renewals = 0;      ///< renewal events (all rows or some)
   long renewed_rows = 0;  ///< rows rebuilt over all renewals (count() per full renewal)

@@ -232,6 +232,12 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   for (const Index i : degenerate)
     d.isolated[static_cast<std::size_t>(i)] = 1;
 
+  // Characteristic length for the step: the nearest neighbour in the new reference, and no more
+  // than kappa / |grad phi| of the row. The force a row's stress puts on its neighbours grows with
+  // its shape-function gradients, and so does its highest frequency; in a regular row both scale
+  // as 1 / h, but a row left with a few neighbours on one side (torn material under the screw)
+  // has gradients many times larger at the same spacing.
+  std::vector<double> gradient_norm(static_cast<std::size_t>(n), 0.0);
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -239,15 +245,26 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
       d.transpose.gradient.col(t) =
           d.shape.gradient.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
     if (renewed(i)) {
-      // Characteristic length for the step: the nearest neighbour in the new reference.
-      double nearest = std::numeric_limits<double>::infinity();
+      double nearest = std::numeric_limits<double>::infinity(), g2 = 0.0;
       for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
         const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
         if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
+        g2 += d.shape.gradient.col(p).squaredNorm();
       }
       d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
+      gradient_norm[ii] = std::sqrt(g2);
       d.renewal_volume[ii] = d.volume[ii];
     }
+  }
+  if (d.renewals == 0)
+    for (Index i = 0; i < n; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      d.gradient_length_scale = std::max(d.gradient_length_scale, d.length[ii] * gradient_norm[ii]);
+    }
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (renewed(i) && gradient_norm[ii] > 0.0)
+      d.length[ii] = std::min(d.length[ii], d.gradient_length_scale / gradient_norm[ii]);
   }
   smooth_masses(s, d);
   d.steps_since_renewal = 0;
