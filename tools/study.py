@@ -17,7 +17,8 @@ Families, methods and references (benchmarks.md, paper §4):
                 error: RMS difference of the axial force on the screw against the reference run,
                 aligned on plunge, over the reference's peak (`mcdyna compare`); the reference
                 is the finest MC-SPG run of the study, or decks/fds/reference_force_h0.15.csv
-                (the full study's h 0.15 run) when the study has no finer run than h 0.3
+                when the study has no finer run than h 0.3 (the h 0.15 run of 2026-11-26 in
+                manual/verification.md: decks/fds/fds_h0.15.k, 8,190 s on one core)
 
 Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
