@@ -53,7 +53,7 @@ class Case:
     family: str
     method: str
     resolution: str
-    deck: str                      # path relative to ROOT, or a generator command (list)
+    deck: str                      # path relative to ROOT; "{out}" stands for --out
     quick: bool
     flags: list = field(default_factory=list)
     generate: list = field(default_factory=list)  # generator argv writing `deck`
@@ -106,8 +106,6 @@ def run_facts(run_dir):
         threads=number(r"^threads: (\d+)", int),
         particles=number(r"^  SPG particles\s+(\d+)", int),
         solids=solids,
-        particle_rate=number(r"([0-9.]+) million particle-steps/s") * 1e6,
-        element_rate=number(r"([0-9.]+) million element-cycles/s") * 1e6,
     )
 
 
@@ -138,9 +136,8 @@ def run_case(case, out_dir, threads, reuse):
 
 
 def compare_force(run_dir, reference_csv):
-    """Axial force on the screw against the reference, aligned on plunge, by `mcdyna compare`:
-    (RMS |A - B| / peak B, max |A - B| / peak B, correlation)."""
-    fds_force.write_force_csv(run_dir)
+    """Axial force on the screw (RUN/force_vs_plunge.csv, written by main) against the reference,
+    aligned on plunge, by `mcdyna compare`: (RMS |A - B| / peak B, max |A - B| / peak B, corr)."""
     mine = os.path.join(run_dir, "force_vs_plunge.csv")
     if os.path.abspath(mine) == os.path.abspath(reference_csv):
         return 0.0, 0.0, 1.0
@@ -245,24 +242,26 @@ def main():
     a = ap.parse_args()
     if not os.path.exists(MCDYNA):
         sys.exit("study: build/mcdyna is missing (cmake --build build)")
-    todo = [c for c in cases() if (c.quick or not a.quick) and (not a.only or c.family in a.only)]
+    selected = [c for c in cases()
+                if (c.quick or not a.quick) and (not a.only or c.family in a.only)]
     os.makedirs(a.out, exist_ok=True)
-    print(f"study ({'quick' if a.quick else 'full'}): {len(todo)} runs into {a.out}")
-    finished = []
-    for case in todo:
+    print(f"study ({'quick' if a.quick else 'full'}): {len(selected)} runs into {a.out}")
+    finished = []  # (case, run directory, run_facts)
+    for case in selected:
         run_dir = run_case(case, a.out, a.threads, a.reuse)
-        if run_facts(run_dir):
-            finished.append((case, run_dir))
+        facts = run_facts(run_dir)
+        if facts:
+            finished.append((case, run_dir, facts))
+            if case.family == "fds":
+                fds_force.write_force_csv(run_dir)
     # The FDS reference: the finest MC-SPG run of the study, unless that is only h 0.3.
-    spg_fds = sorted((c for c, _ in finished if c.family == "fds" and c.method == "MC-SPG"),
+    spg_fds = sorted((c for c, _, _ in finished if c.family == "fds" and c.method == "MC-SPG"),
                      key=resolution_key)
     fds_reference = FDS_REFERENCE
     if spg_fds and spg_fds[-1].resolution != "h 0.3":
         fds_reference = os.path.join(a.out, "runs", spg_fds[-1].name, "force_vs_plunge.csv")
-        fds_force.write_force_csv(os.path.dirname(fds_reference))
     rows = []
-    for case, run_dir in finished:
-        facts = run_facts(run_dir)
+    for case, run_dir, facts in finished:
         error, figures = measure(case, run_dir, fds_reference)
         work = facts["particles"] + facts["solids"]
         rows.append(dict(family=case.family, method=case.method, resolution=case.resolution,
@@ -270,7 +269,7 @@ def main():
                          cycles=facts["cycles"], threads=facts["threads"],
                          wall_s=facts["wall"],
                          steps_per_s=work * facts["cycles"] / facts["wall"] if facts["wall"] else 0,
-                         error=error, **{k: v for k, v in figures.items()}))
+                         error=error, **figures))
     columns = []
     for r in rows:
         columns += [k for k in r if k not in columns]
@@ -284,13 +283,13 @@ def main():
         print(f"{r['family']:<13} {r['method']:<13} {r['resolution']:<7} {r['particles']:>9} "
               f"{r['elements']:>8} {r['cycles']:>7} {r['wall_s']:>8.1f} "
               f"{r['steps_per_s'] / 1e6:>12.3f}M {r['error']:>9.4f}")
-    if any(c.family == "fds" for c, _ in finished):
+    if any(c.family == "fds" for c, _, _ in finished):
         print(f"fds reference: {os.path.relpath(fds_reference, ROOT)}")
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
-    history_plots(a.out, finished)
+    history_plots(a.out, [(c, d) for c, d, _ in finished])
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
-    if len(finished) < len(todo):
-        sys.exit(f"study: {len(todo) - len(finished)} run(s) did not finish")
+    if len(finished) < len(selected):
+        sys.exit(f"study: {len(selected) - len(finished)} run(s) did not finish")
 
 
 if __name__ == "__main__":
