@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libfmt-dev libcli11-dev libvtk9-dev doctest-dev libomp-dev
   python3-numpy python3-matplotlib python3-vtk9 time
+  xvfb xauth  # tools/verify/render_state.py renders states offscreen under xvfb-run
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Writes the flow-drill-screw (FDS) thread-forming deck of the MC-SPG paper (§4.3): a rigid M5
-screw (conical tip, 0.7 mm pitch thread) spinning and plunging through a 1.5 mm 6061-T6 plate of
+screw (drilling cone and forming cylinder at the thread's minor radius, then the 0.7 mm pitch
+right-hand thread; spun clockwise seen from its head) plunging through a 1.5 mm 6061-T6 plate of
 20 mm diameter whose central Ø7 mm region is MC-SPG (ITB 3, bond failure FS 0.4, STRETCH 1.15),
 joined by common nodes to an outer FE ring clamped at its perimeter; JC-1 with a Grüneisen EOS;
 penalty contact with friction 0.3. Units t, mm, s, N, MPa. Deterministic: same arguments, same
@@ -25,9 +26,16 @@ from taylor_bar import jc1_cards, layered_hexahedra, layered_nodes, node_line, s
 PLATE_RADIUS, SPG_RADIUS, THICKNESS = 10.0, 3.5, 1.5
 MAJOR, PITCH = 2.5, 0.7  # thread major radius, pitch
 DEPTH = 0.433            # ISO M5 thread depth (major - minor) / 2
-TIP_LENGTH, TIP_RADIUS = 3.0, 0.3  # conical tip from TIP_RADIUS at the point to MAJOR
-THREADED = 7 * PITCH     # threaded length above the cone: whole turns keep the centre of mass
-                         # on the axis (the prescribed spin is about it)
+MINOR = MAJOR - DEPTH
+# The forming zone below the thread, as on a flow-drill screw: a cone from TIP_RADIUS at the
+# point to the minor radius, then a cylinder at the minor radius as long as the plate is thick,
+# so the tip drills and the cylinder forms the hole and bushing at the minor radius during stage
+# 1, and the thread forms into that wall in stage 2. (A cone straight to the major radius made
+# the hole at the crests: the thread passed through it and formed nothing.)
+TIP_LENGTH, TIP_RADIUS = 3.0, 0.3
+FORMING_LENGTH = TIP_LENGTH + THICKNESS
+LEAD_IN = PITCH          # the thread grows from the minor radius to its full depth over a turn
+THREADED = 7 * PITCH     # threaded length above the forming zone
 CLEARANCE = 0.05         # tip above the plate at t = 0
 STAGE1 = (5000.0, 2000.0)   # rpm, mm/s
 STAGE2 = (20000.0, 200.0)
@@ -51,10 +59,18 @@ def thread_radius(z, theta):
 
 
 def screw_radius(z, theta):
-    """A smooth cone (axisymmetric) up to TIP_LENGTH, the thread above it."""
+    """The forming zone (cone, then cylinder at the minor radius) up to FORMING_LENGTH, the
+    thread above it, its depth growing over LEAD_IN and falling again over the last LEAD_IN."""
     if z < TIP_LENGTH:
-        return TIP_RADIUS + (MAJOR - TIP_RADIUS) * z / TIP_LENGTH
-    return thread_radius(z - TIP_LENGTH, theta)
+        return TIP_RADIUS + (MINOR - TIP_RADIUS) * z / TIP_LENGTH
+    if z < FORMING_LENGTH:
+        return MINOR
+    # Lead-in at the bottom and the same lead-out at the top: the two linear ramps over whole
+    # turns add up to a full turn of thread at every angle, so the centre of mass stays on the
+    # spin axis (a thread cut off square at the top put it 0.03 mm off).
+    u = z - FORMING_LENGTH
+    depth = min(1.0, u / LEAD_IN, (THREADED - u) / LEAD_IN)
+    return MINOR + (thread_radius(u, theta) - MINOR) * max(0.0, depth)
 
 
 def screw_surface(h, z0):
@@ -63,11 +79,15 @@ def screw_surface(h, z0):
     n_theta = 8 * max(12, round(2.0 * math.pi * MAJOR / h / 8.0))
     per_pitch = max(8, math.ceil(PITCH / h))
     dz = PITCH / per_pitch
-    n_z = math.ceil(TIP_LENGTH / dz) + round(THREADED / dz)
-    length = n_z * dz
+    # Rows: the forming zone at about dz, then the thread at exactly dz for whole turns, which
+    # keeps the screw's centre of mass on the axis it is spun about.
+    n_forming = math.ceil(FORMING_LENGTH / dz)
+    heights = ([FORMING_LENGTH * k / n_forming for k in range(n_forming)] +
+               [FORMING_LENGTH + dz * k for k in range(round(THREADED / dz) + 1)])
+    n_z = len(heights) - 1
+    length = heights[-1]
     nodes, shells = [], []
-    for k in range(n_z + 1):
-        z = length * k / n_z
+    for z in heights:
         for j in range(n_theta):
             t = 2.0 * math.pi * j / n_theta
             r = screw_radius(z, t)
@@ -151,7 +171,7 @@ def main():
     npl = len(pts)
 
     # Schedule: stage 1 until the tip is through and the thread reaches the plate.
-    plunge1 = CLEARANCE + TIP_LENGTH + THICKNESS
+    plunge1 = CLEARANCE + FORMING_LENGTH
     v1, v2 = STAGE1[1] * scale, STAGE2[1] * scale
     w1, w2 = STAGE1[0] * scale * 2 * math.pi / 60, STAGE2[0] * scale * 2 * math.pi / 60
     t1 = plunge1 / v1
@@ -165,11 +185,13 @@ def main():
     method = "FE hexahedra with erosion at plastic strain 0.4" if a.fe_erosion else "MC-SPG centre"
     w("$ " + "-" * 94)
     w(f"$ fds h = {h} mm ({method}) - written by tools/decks/fds.py")
-    w("$ What it shows: a rigid M5 flow-drill screw (0.7 mm pitch, conical tip) spinning and")
+    w("$ What it shows: a rigid M5 flow-drill screw (tip cone and forming cylinder at the minor")
+    w("$   radius, 0.7 mm pitch right-hand thread) spinning clockwise (seen from its head) and")
     w("$   plunging through a 1.5 mm 6061-T6 plate (JC-1 + Gruneisen), MC-SPG paper section 4.3.")
-    w(f"$ Schedule (paper): {STAGE1[0]:.0f} rpm at {STAGE1[1] / 1000:.1f} m/s for the first "
-      f"{plunge1:.2f} mm, then {STAGE2[0]:.0f} rpm at {STAGE2[1] / 1000:.1f} m/s for "
-      f"{a.stage2:.2f} mm.")
+    w(f"$ Schedule (the paper's speeds): {STAGE1[0]:.0f} rpm at {STAGE1[1] / 1000:.1f} m/s for the "
+      f"first {plunge1:.2f} mm")
+    w(f"$   (until the thread reaches the plate), then {STAGE2[0]:.0f} rpm at "
+      f"{STAGE2[1] / 1000:.1f} m/s for {a.stage2:.2f} mm.")
     w(f"$ TIME SCALE {scale:g}: every speed x {scale:g} and every time / {scale:g} "
       f"(stage 1 ends at {t1:.4e} s, end {t_end:.4e} s).")
     w(f"$ MASS SCALING: {'DT2MS = %g s' % a.mass_scaling if a.mass_scaling > 0 else 'none'}.")
@@ -247,10 +269,13 @@ def main():
         w("".join(f"{v:10d}" for v in ids[i:i + 8]))
     w("*BOUNDARY_SPC_SET")
     w("         1         0         1         1         1         1         1         1")
-    # Screw motion: plunge along -z (DOF 3, velocity), spin about z (DOF 7, angular velocity).
+    # Screw motion: plunge along -z (DOF 3, velocity), spin about z (DOF 7, angular velocity)
+    # clockwise seen from the head (omega_z < 0), the sense that drives a right-hand thread in.
+    # (Spun the other way, the thread would unscrew from what it forms: measured at h 0.3, the
+    # thrust rose again in stage 2 instead of turning towards tension.)
     w("*BOUNDARY_PRESCRIBED_MOTION_RIGID")
     w("         3         3         0         1      -1.0")
-    w("         3         7         0         2       1.0")
+    w("         3         7         0         2      -1.0")
     for lcid, (s1, s2) in ((1, (v1, v2)), (2, (w1, w2))):
         w("*DEFINE_CURVE")
         w(f"{lcid:10d}")
