@@ -10,15 +10,16 @@ Families, methods and references (benchmarks.md, paper §4):
   elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
                 error: relative L2 of the free-end displacement against the analytic solution
                 (also the mid-length stress error)
-  taylor_bar    FE hex, MC-SPG; coarse (quick) + medium, fine
+  taylor_bar    FE hex, MC-SPG with MSC 1; coarse (quick) + medium, fine; MC-SPG MSC 0 coarse
                 error: final length against Wilkins & Guinan's 16.51 mm (also the footprint
                 diameter against their 16.7 mm, and the length against the FE codes' 15.95 mm)
-  fds           MC-SPG and FE with erosion; h 0.3 (quick) + 0.15
+  fds           MC-SPG and FE with erosion; h 0.3 (quick) + 0.15; MC-SPG h 0.125
                 error: RMS difference of the axial force on the screw against the reference run,
                 aligned on plunge, over the reference's peak (`mcdyna compare`); the reference
                 is the finest MC-SPG run of the study, or decks/fds/reference_force_h0.15.csv
-                when the study has no finer run than h 0.3 (the h 0.15 run of 2026-11-26 in
-                manual/verification.md: decks/fds/fds_h0.15.k, 8,190 s on one core)
+                when the study has no finer run than h 0.3 (the corrected scene's h 0.15 run of
+                2026-11-26, decks/fds/fds_h0.15.k on 2 threads: plunge 0 to 5.17 mm only, it
+                stopped at 5.18 mm with an inverted particle; manual/verification.md)
 
 Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
@@ -72,11 +73,20 @@ def cases():
         out.append(Case("elastic_wave", "plain DNI", f"h {h}",
                         f"decks/elastic_wave/rod_spg_h{h}.k", quick,
                         flags=["--spg-stabilization", "none"]))
+    # MC-SPG Taylor bars: MSC 1 (low-energy-mode control) at every resolution; the paper's MSC 0
+    # alone at coarse only, in the full study: the medium bar with MSC 0 pairs its axis layers
+    # and its step falls to 4e-10 s at 38 us (manual/verification.md).
     for r, quick in (("coarse", True), ("medium", False), ("fine", False)):
         out.append(Case("taylor_bar", "FE hex", r, f"decks/taylor_bar/taylor_{r}.k", quick))
-        out.append(Case("taylor_bar", "MC-SPG", r, f"decks/taylor_bar/taylor_spg_{r}.k", quick))
-    for h, quick in (("0.3", True), ("0.15", False)):
+        out.append(Case("taylor_bar", "MC-SPG MSC 1", r, f"decks/taylor_bar/taylor_spg_{r}.k",
+                        quick, flags=["--spg-mode-control", "0.5"]))
+    out.append(Case("taylor_bar", "MC-SPG MSC 0", "coarse", "decks/taylor_bar/taylor_spg_coarse.k",
+                    False))
+    # FDS: h 0.15 and finer carry DT2MS 2e-9 s (decks/generate.sh); h 0.125 is the full study's
+    # reference.
+    for h, quick in (("0.3", True), ("0.15", False), ("0.125", False)):
         out.append(Case("fds", "MC-SPG", f"h {h}", f"decks/fds/fds_h{h}.k", quick))
+    for h, quick in (("0.3", True), ("0.15", False)):
         out.append(Case("fds", "FE + erosion", f"h {h}", f"{{out}}/decks/fds_fe_h{h}.k", quick,
                         generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", "20",
                                   "--fe-erosion"]))

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian machine, builds (Release), checks formatting, runs the whole test suite,
-# then builds the unit tests with AddressSanitizer + UndefinedBehaviorSanitizer (optimised, -O2 -g,
-# so the solver tests stay CI-length) and runs them too.
+# Sets up a fresh Debian machine, builds (Release), checks formatting, runs the whole test suite
+# and the elastic-wave family of the quick study (tools/study.py end to end, ~25 s), then builds
+# the unit tests with AddressSanitizer + UndefinedBehaviorSanitizer (optimised, -O2 -g, so the
+# solver tests stay CI-length) and runs them too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
@@ -15,6 +16,9 @@ git ls-files 'src/*.cpp' 'src/*.hpp' 'tests/*.cpp' 'tests/*.hpp' | xargs clang-f
 
 echo "== tests (Release)"
 ctest --test-dir build --output-on-failure -j "$jobs"
+
+echo "== study smoke: tools/study.py --quick --only elastic_wave (the six quick elastic-wave runs)"
+/usr/bin/python3 tools/study.py --quick --only elastic_wave --threads "$jobs" --out build/study_smoke
 
 echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMCDYNA_SANITIZE=ON >/dev/null
