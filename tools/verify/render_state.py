@@ -6,41 +6,53 @@ core, and with parts left out (e.g. the screw, to see the threads it formed). Ne
 on a machine without one run it under `xvfb-run -a` (tools/setup.sh installs xvfb).
 
 usage: render_state.py RUN_DIR OUT.png [--state N (default: last)] [--cut] [--hide-part ID ...]
-                       [--ghost-part ID ...] [--box XMIN XMAX YMIN YMAX ZMIN ZMAX] [--azimuth 30] [--elevation 20] [--zoom 1.0]
-                       [--size 1200 900] [--title TEXT] [--range LO HI]
+                       [--ghost-part ID ...] [--box XMIN XMAX YMIN YMAX ZMIN ZMAX]
+                       [--azimuth 30] [--elevation 20] [--zoom 1.0] [--size 1200 900]
+                       [--title TEXT] [--range LO HI]
 """
 import argparse
 
+import numpy as np
 import vtk
+from vtk.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
 
 from d3plot import read_state, states
 
 
-def part_threshold(grid, part, keep):
-    """The cells of `grid` whose part_id is (keep=True) or is not (keep=False) `part`."""
+def cells_where(grid, array, lo, hi, invert=False):
+    """The cells of `grid` whose cell value `array` is within [lo, hi] (outside with invert)."""
     t = vtk.vtkThreshold()
     t.SetInputData(grid)
-    t.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_CELLS, "part_id")
-    t.SetLowerThreshold(part - 0.5)
-    t.SetUpperThreshold(part + 0.5)
+    t.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_CELLS, array)
+    t.SetLowerThreshold(lo)
+    t.SetUpperThreshold(hi)
     t.SetThresholdFunction(vtk.vtkThreshold.THRESHOLD_BETWEEN)
-    t.SetInvert(not keep)
+    t.SetInvert(invert)
     t.Update()
     return t.GetOutput()
+
+
+def part_cells(grid, part, keep):
+    """The cells of part `part` (keep=True) or of every other part (keep=False)."""
+    return cells_where(grid, "part_id", part - 0.5, part + 0.5, invert=not keep)
 
 
 def alive_cells(grid):
     """Drops eroded elements (erosion_state != 0), as LS-PrePost hides them."""
     if grid.GetCellData().GetArray("erosion_state") is None:
         return grid
-    t = vtk.vtkThreshold()
-    t.SetInputData(grid)
-    t.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_CELLS, "erosion_state")
-    t.SetLowerThreshold(-0.5)
-    t.SetUpperThreshold(0.5)
-    t.SetThresholdFunction(vtk.vtkThreshold.THRESHOLD_BETWEEN)
-    t.Update()
-    return t.GetOutput()
+    return cells_where(grid, "erosion_state", -0.5, 0.5)
+
+
+def cells_inside(grid, function, boundary_cells):
+    """The cells inside an implicit function (all their points, or any with boundary_cells)."""
+    extract = vtk.vtkExtractGeometry()
+    extract.SetInputData(grid)
+    extract.SetImplicitFunction(function)
+    extract.ExtractInsideOn()
+    extract.SetExtractBoundaryCells(boundary_cells)
+    extract.Update()
+    return extract.GetOutput()
 
 
 def inside_box(grid, bounds):
@@ -48,12 +60,7 @@ def inside_box(grid, bounds):
     on the region of interest when debris has flown far off."""
     box = vtk.vtkBox()
     box.SetBounds(*bounds)
-    extract = vtk.vtkExtractGeometry()
-    extract.SetInputData(grid)
-    extract.SetImplicitFunction(box)
-    extract.ExtractInsideOn()
-    extract.Update()
-    return extract.GetOutput()
+    return cells_inside(grid, box, boundary_cells=False)
 
 
 def cut_half(grid):
@@ -61,38 +68,30 @@ def cut_half(grid):
     plane = vtk.vtkPlane()
     plane.SetOrigin(0.0, 0.0, 0.0)
     plane.SetNormal(0.0, 1.0, 0.0)
-    extract = vtk.vtkExtractGeometry()
-    extract.SetInputData(grid)
-    extract.SetImplicitFunction(plane)
-    extract.ExtractInsideOn()
-    extract.ExtractBoundaryCellsOn()
-    extract.Update()
-    return extract.GetOutput()
+    return cells_inside(grid, plane, boundary_cells=True)
 
 
 def split_particles(grid):
-    """(particles as a vtkPolyData of points with cell data moved to points, other cells)."""
-    # Vertex cells are the particles: select them by cell type.
-    ids_v, ids_o = vtk.vtkIdTypeArray(), vtk.vtkIdTypeArray()
-    for c in range(grid.GetNumberOfCells()):
-        (ids_v if grid.GetCellType(c) == vtk.VTK_VERTEX else ids_o).InsertNextValue(c)
+    """(the particles: vertex cells, the other cells), each an unstructured grid or None."""
+    is_vertex = vtk_to_numpy(grid.GetCellTypesArray()) == vtk.VTK_VERTEX
 
-    def extract(ids):
-        sel_node = vtk.vtkSelectionNode()
-        sel_node.SetFieldType(vtk.vtkSelectionNode.CELL)
-        sel_node.SetContentType(vtk.vtkSelectionNode.INDICES)
-        sel_node.SetSelectionList(ids)
-        sel = vtk.vtkSelection()
-        sel.AddNode(sel_node)
+    def extract(mask):
+        if not mask.any():
+            return None
+        node = vtk.vtkSelectionNode()
+        node.SetFieldType(vtk.vtkSelectionNode.CELL)
+        node.SetContentType(vtk.vtkSelectionNode.INDICES)
+        node.SetSelectionList(numpy_to_vtkIdTypeArray(np.flatnonzero(mask).astype(np.int64),
+                                                      deep=True))
+        selection = vtk.vtkSelection()
+        selection.AddNode(node)
         e = vtk.vtkExtractSelection()
         e.SetInputData(0, grid)
-        e.SetInputData(1, sel)
+        e.SetInputData(1, selection)
         e.Update()
         return e.GetOutput()
 
-    particles = extract(ids_v) if ids_v.GetNumberOfTuples() else None
-    others = extract(ids_o) if ids_o.GetNumberOfTuples() else None
-    return particles, others
+    return extract(is_vertex), extract(~is_vertex)
 
 
 def strain_lut(lo, hi):
@@ -143,10 +142,10 @@ def main():
     t, name = states(a.run)[a.state]
     grid = alive_cells(read_state(a.run, name))
     for p in a.hide_part:
-        grid = part_threshold(grid, p, keep=False)
-    ghosts = [part_threshold(grid, p, keep=True) for p in a.ghost_part]
+        grid = part_cells(grid, p, keep=False)
+    ghosts = [part_cells(grid, p, keep=True) for p in a.ghost_part]
     for p in a.ghost_part:
-        grid = part_threshold(grid, p, keep=False)
+        grid = part_cells(grid, p, keep=False)
     if a.box:
         grid = inside_box(grid, a.box)
         ghosts = [inside_box(g, a.box) for g in ghosts]
