@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "solver/compile.hpp"
 
@@ -10,8 +12,21 @@ namespace mcdyna::io {
 
 void Outputs::Schedule::advance(double t) {
   last_written = t;
+  if (interval_curve) {
+    // The curve's interval at the output just written; a non-positive one writes every cycle.
+    interval = (*interval_curve)(t);
+    next = interval > 0.0 ? t + interval : std::nextafter(t, std::numeric_limits<double>::max());
+    return;
+  }
   while (due(t))
     next += interval;
+}
+
+Outputs::Schedule Outputs::schedule(const solver::State& s, double interval, model::Id curve) {
+  Schedule sc{interval, nullptr, 0.0, -1.0};
+  for (const solver::LoadCurve& c : s.curves)
+    if (curve != 0 && c.id() == curve) sc.interval_curve = &c;
+  return sc;
 }
 
 namespace {
@@ -38,14 +53,14 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     const model::D3plotRequest& r = *m.outputs.d3plot;
     double dt = r.interval;
     if (dt <= 0.0 && r.plots > 0) dt = s.time_control.end_time / r.plots;
-    if (dt > 0.0) {
+    if (dt > 0.0 || r.interval_curve != 0) {
       d3plot_ = std::make_unique<VtkSeries>(dir);
-      d3plot_schedule_.interval = dt;
+      d3plot_schedule_ = schedule(s, dt, r.interval_curve);
     }
   }
   const std::vector<solver::Index> nodes = history_nodes(m);
   for (const model::AsciiRequest& r : m.outputs.ascii) {
-    if (r.interval <= 0.0) continue;
+    if (r.interval <= 0.0 && r.interval_curve == 0) continue;
     const std::string name = model::ascii_database_name(r.database);
     if (name == "nodout" && nodes.empty()) {
       notes.push_back("nodout requested but no *DATABASE_HISTORY_NODE nodes: not written");
@@ -61,7 +76,7 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
       continue;
     }
     histories_.push_back(std::move(h));
-    history_schedules_.push_back(Schedule{r.interval, 0.0, -1.0});
+    history_schedules_.push_back(schedule(s, r.interval, r.interval_curve));
   }
 }
 

@@ -2,7 +2,9 @@
 /// Everything a run writes besides d3hsp: the VTK series at *DATABASE_BINARY_D3PLOT DT and the
 /// ASCII/CSV histories at each *DATABASE_<name> DT. Only requested outputs are created. States
 /// are written at the first cycle whose time reaches the next output time, as LS-DYNA does, and
-/// always at the last state of the run.
+/// always at the last state of the run. A curve LCDT (d3plot) or LCUR (ASCII) overrides DT: the
+/// interval after an output at time t is the curve's value at t, so a deck can write sparsely and
+/// then every cycle near an event; an interval <= 0 writes every cycle.
 #include <Eigen/Core>
 
 #include <filesystem>
@@ -34,11 +36,13 @@ class Outputs {
  private:
   struct Schedule {
     double interval = 0.0;
+    const solver::LoadCurve* interval_curve = nullptr;  ///< LCDT / LCUR: overrides `interval`
     double next = 0.0;
     double last_written = -1.0;
     [[nodiscard]] bool due(double t) const { return t >= next - 1.0e-9 * interval; }
     void advance(double t);
   };
+  static Schedule schedule(const solver::State& state, double interval, model::Id curve);
   std::unique_ptr<VtkSeries> d3plot_;
   Schedule d3plot_schedule_;
   std::vector<std::unique_ptr<HistoryFile>> histories_;

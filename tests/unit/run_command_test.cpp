@@ -149,6 +149,40 @@ TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working di
   CHECK(glstat.find(" total energy / initial energy..") != std::string::npos);
 }
 
+TEST_CASE("LCDT and LCUR: output intervals from curves, every cycle where the curve is 0") {
+  TempDir dir;
+  std::string deck = read_text(std::string(MCDYNA_SOURCE_DIR) + "/decks/cube/cube_drop.k");
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    REQUIRE(at != std::string::npos);
+    deck.replace(at, from.size(), to);
+  };
+  // d3plot every 10 us, then every 2 us from 30 us; glstat every 10 us, then every cycle.
+  replace("*DATABASE_BINARY_D3PLOT\n    1.0E-6\n",
+          "*DATABASE_BINARY_D3PLOT\n    1.0E-6        99\n*DEFINE_CURVE\n99\n0.0, 1.0E-5\n"
+          "2.99E-5, 1.0E-5\n3.0E-5, 2.0E-6\n1.0, 2.0E-6\n");
+  replace("*DATABASE_GLSTAT\n    1.0E-7\n",
+          "*DATABASE_GLSTAT\n    1.0E-7         1        98\n*DEFINE_CURVE\n98\n0.0, 1.0E-5\n"
+          "3.99E-5, 1.0E-5\n4.0E-5, 0.0\n1.0, 0.0\n");
+  const auto path = dir.write("curves.k", deck);
+  const Run r = run_mcdyna("run " + path.string() + " --out " + (dir.path() / "out").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  // States at the first cycle at or past each output time: 0, 10, 20, 30 us, then 32 ... 50 us
+  // (each a step of ~0.067 us late at most), and the last state.
+  const auto states = collection(dir.path() / "out" / "d3plot.pvd");
+  CHECK(states.size() == 14);
+  const CsvTable gl = read_csv(dir.path() / "out" / "glstat.csv");
+  const std::size_t time = gl.column("time"), step = gl.column("time_step");
+  REQUIRE(gl.rows.size() > 6);
+  CHECK(gl.rows[1][time] == doctest::Approx(1.0e-5).epsilon(0.01));
+  CHECK(gl.rows[4][time] == doctest::Approx(4.0e-5).epsilon(0.01));
+  // From 40 us on, one row per cycle: consecutive times differ by the row's step.
+  for (std::size_t k = 6; k < gl.rows.size(); ++k)
+    CHECK(gl.rows[k][time] - gl.rows[k - 1][time] ==
+          doctest::Approx(gl.rows[k][step]).epsilon(1e-6));
+  CHECK(gl.rows.size() > 100);  // ~10 us of 0.067 us steps
+}
+
 TEST_CASE("an unstable run exits 4, names the element and leaves readable outputs") {
   TempDir dir;
   const auto deck =
