@@ -41,6 +41,9 @@ vtkNew<vtkFloatArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) 
 struct CellFields {
   vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
   vtkNew<vtkFloatArray> bond_damage;  ///< SPG: share of the particle's bonds broken (0 for FE)
+  /// SPG: the particle's stable step at its last stress update (with any DT2MS mass, before
+  /// TSSFAC); 0 where not recorded (FE and rigid cells, particles that carry no stress)
+  vtkNew<vtkFloatArray> time_step;
   vtkNew<vtkIntArray> part, eroded;
   /// SPG: how the particle is integrated now, 0 smoothed (MC-SPG), 1 pinned (plain velocity:
   /// shared with FE, constrained), 2 isolated (degenerate neighbourhood: no stress), 3 debris
@@ -58,12 +61,13 @@ struct CellFields {
     damage->SetName("damage");
     pressure->SetName("pressure");
     bond_damage->SetName("bond_damage");
+    time_step->SetName("time_step");
     part->SetName("part_id");
     eroded->SetName("erosion_state");
     spg_state->SetName("spg_state");
   }
   void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id,
-           double bonds = 0.0, int particle_state = -1) {
+           double bonds = 0.0, int particle_state = -1, double step = 0.0) {
     const auto& s = r.stress;
     const float tuple[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                             static_cast<float>(s[2]), static_cast<float>(s[3]),
@@ -75,14 +79,15 @@ struct CellFields {
     damage->InsertNextValue(static_cast<float>(r.damage));
     pressure->InsertNextValue(static_cast<float>(pressure_value));
     bond_damage->InsertNextValue(static_cast<float>(bonds));
+    time_step->InsertNextValue(static_cast<float>(step));
     part->InsertNextValue(part_id);
     eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
     spg_state->InsertNextValue(particle_state);
   }
   void attach(vtkUnstructuredGrid* g) {
     for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
-             stress, von_mises, plastic_strain, temperature, damage, pressure, bond_damage, part,
-             eroded, spg_state})
+             stress, von_mises, plastic_strain, temperature, damage, pressure, bond_damage,
+             time_step, part, eroded, spg_state})
       g->GetCellData()->AddArray(a);
   }
 };
@@ -110,6 +115,25 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   for (Index n = 0; n < nd.count(); ++n)
     ids->InsertNextValue(static_cast<int>(nd.ids[static_cast<std::size_t>(n)]));
   grid->GetPointData()->AddArray(ids);
+  // The mass each node moves with (an MC-SPG particle's smoothed mass, Eq. 20) and the part of
+  // it DT2MS mass scaling added, to see where a run was mass-scaled. FE scaling is kept apart
+  // from the node mass; an SPG particle's is already in it.
+  vtkNew<vtkFloatArray> mass, added;
+  mass->SetName("mass");
+  added->SetName("added_mass");
+  mass->SetNumberOfTuples(nd.count());
+  added->SetNumberOfTuples(nd.count());
+  for (Index n = 0; n < nd.count(); ++n) {
+    const auto nn = static_cast<std::size_t>(n);
+    mass->SetValue(n, static_cast<float>(nd.mass[nn] + nd.added_mass[nn]));
+    added->SetValue(n, static_cast<float>(nd.added_mass[nn]));
+  }
+  for (const solver::spg::Domain& d : s.spg)
+    for (std::size_t i = 0; i < d.nodes.size(); ++i)
+      added->SetValue(d.nodes[i],
+                      added->GetValue(d.nodes[i]) + static_cast<float>(d.added_mass[i]));
+  grid->GetPointData()->AddArray(mass);
+  grid->GetPointData()->AddArray(added);
 
   CellFields fields;
   vtkIdType hex[8];
@@ -134,7 +158,7 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
       const auto ii = static_cast<std::size_t>(i);
       const int state = d.debris[ii] ? 3 : d.isolated[ii] ? 2 : d.pinned[ii] ? 1 : 0;
       fields.add(solver::particle_result(d, i), d.pressure[ii], d.temperature[ii], part_id,
-                 d.bonds.damage(i), state);
+                 d.bonds.damage(i), state, d.step[ii]);
     }
   }
   const solver::DisplayCells& rc = s.rigid_cells;

@@ -183,6 +183,45 @@ TEST_CASE("LCDT and LCUR: output intervals from curves, every cycle where the cu
   CHECK(gl.rows.size() > 100);  // ~10 us of 0.067 us steps
 }
 
+TEST_CASE("d3plot shows where DT2MS scaled: node mass, added mass, each particle's step") {
+  TempDir dir;
+  // A 4^3 elastic MC-SPG block (rho 1, E 100: c ~ 10, steps ~ 0.05) with a DT2MS target of
+  // 0.2 that every particle is below, so every row is scaled.
+  const auto deck = dir.write(
+      "scaled.k",
+      "*KEYWORD\n*CONTROL_TERMINATION\n1.0e9,20\n*CONTROL_TIMESTEP\n0.0,0.9,0,0.0,-0.2\n"
+      "*DATABASE_BINARY_D3PLOT\n100.0\n*DATABASE_GLSTAT\n100.0\n*PART\nspg\n1,1,1\n"
+      "*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,0,,15,0.0\n1,1.0E+11,1.0E+10,3,1.0,0,0,-0.001\n"
+      "*MAT_ELASTIC\n1,1.0,100.0,0.3\n" +
+          box_mesh(4, 4, 4, 1.0) + "*END\n");
+  const Run r = run_mcdyna("run " + deck.string() + " --out " + (dir.path() / "out").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const auto states = collection(dir.path() / "out" / "d3plot.pvd");
+  REQUIRE(states.size() == 2);  // t = 0 and the end at cycle 20
+  const auto last = read_vtu(dir.path() / "out" / states.back());
+  vtkDataArray* mass = last->GetPointData()->GetArray("mass");
+  vtkDataArray* added = last->GetPointData()->GetArray("added_mass");
+  vtkDataArray* step = last->GetCellData()->GetArray("time_step");
+  REQUIRE(mass != nullptr);
+  REQUIRE(added != nullptr);
+  REQUIRE(step != nullptr);
+  double total = 0.0, total_added = 0.0;
+  for (vtkIdType n = 0; n < last->GetNumberOfPoints(); ++n) {
+    total += mass->GetComponent(n, 0);
+    total_added += added->GetComponent(n, 0);
+  }
+  // The smoothed masses sum to the lumped ones (partition of unity, Eq. 20), added mass included.
+  const CsvTable gl = read_csv(dir.path() / "out" / "glstat.csv");
+  const double reported = gl.rows.back()[gl.column("added_mass")];
+  CHECK(reported > 0.0);
+  CHECK(total_added == doctest::Approx(reported).epsilon(1e-5));
+  CHECK(total == doctest::Approx(64.0 + reported).epsilon(1e-5));
+  // Every particle is at the target step |DT2MS| (the mass it was given brings it there).
+  REQUIRE(last->GetNumberOfCells() == 125);
+  for (vtkIdType c = 0; c < last->GetNumberOfCells(); ++c)
+    CHECK(step->GetComponent(c, 0) >= 0.2 * (1.0 - 1e-5));
+}
+
 TEST_CASE("an unstable run exits 4, names the element and leaves readable outputs") {
   TempDir dir;
   const auto deck =

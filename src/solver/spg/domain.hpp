@@ -114,6 +114,9 @@ struct Domain {
   std::vector<double> mass_request;   ///< mass factor a row asked for this cycle (0: none)
   std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
   std::vector<double> length;         ///< characteristic length at the renewal
+  /// The particle's stable step at its last stress update (with the mass it has; before
+  /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
+  std::vector<double> step;
   std::vector<double> renewal_volume;  ///< volume at the renewal
   /// Largest nearest-neighbour distance x gradient norm (sum_K |grad phi_K|^2)^(1/2) of the rows
   /// at the first renewal: a row whose gradients later grow past it (an ill-conditioned, torn

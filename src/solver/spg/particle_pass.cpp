@@ -220,6 +220,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 #pragma omp for schedule(static, 128) nowait
     for (Index j = 0; j < n; ++j) {
       const Outcome o = particle_update(s, d, mat, j, step);
+      d.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
       if (control) mode_control_update(s, d, j);
       released += o.released ? 1 : 0;
       if (o.mass_added) mass_added = 1;

@@ -343,6 +343,7 @@ void initialise(State& s, Domain& d) {
   d.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
   d.pinned.assign(static_cast<std::size_t>(n), 0);
   d.length.assign(static_cast<std::size_t>(n), 0.0);
+  d.step.assign(static_cast<std::size_t>(n), 0.0);
   d.renewal_volume = d.volume;
   d.stress_gradient.setZero(9, n);
   d.unsmoothed.resize(3, n);
