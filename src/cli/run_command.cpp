@@ -185,6 +185,15 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
                  "invert and was left without stress until its next kernel renewal (debris of "
                  "the failed material)\n",
                  s.parts[static_cast<std::size_t>(d.part)].id, d.released);
+    if (d.largest_mobility_particle >= 0)
+      fmt::print(out,
+                 "  SPG part {}: steps shortened where smoothed masses (Eq. 20) fell below the "
+                 "particle masses: largest factor {:.3g} on the frequency squared, at the row of "
+                 "node {} at t = {:.6e}\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.largest_mobility,
+                 s.nodes.ids[static_cast<std::size_t>(
+                     d.nodes[static_cast<std::size_t>(d.largest_mobility_particle)])],
+                 d.largest_mobility_time);
     if (d.first_degenerate >= 0) {
       fmt::print(
           out,

@@ -120,6 +120,14 @@ double oscillation_norm(const solver::State& s, double scale) {
   return std::sqrt(r2 / d.count()) / scale;
 }
 
+// The largest node speed of the model.
+double largest_speed(const solver::State& s) {
+  double v = 0.0;
+  for (Index n = 0; n < s.nodes.count(); ++n)
+    v = std::max(v, s.nodes.velocity.col(n).norm());
+  return v;
+}
+
 }  // namespace
 
 TEST_CASE("MC-SPG free body: linear momentum kept to round-off over 1000 steps") {
@@ -207,18 +215,12 @@ TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the targ
   // and then (added at the velocity a particle has, as LS-DYNA does, which changes momentum).
   double scale = 0.0;
   conserved_momentum(*sim.state, scale);
-  auto largest_speed = [&] {
-    double v = 0.0;
-    for (Index n = 0; n < sim.state->nodes.count(); ++n)
-      v = std::max(v, sim.state->nodes.velocity.col(n).norm());
-    return v;
-  };
-  const double vmax0 = largest_speed();
+  const double vmax0 = largest_speed(*sim.state);
   sim.state->time_control.end_cycle = 1000;
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
   CHECK(sim.state->step == doctest::Approx(3.0 * natural).epsilon(1e-9).scale(0.0));
-  const double vmax = largest_speed();
+  const double vmax = largest_speed(*sim.state);
   MESSAGE("largest speed before / after 1000 steps ", vmax0, " / ", vmax,
           ", added mass / physical ", solver::total_added_mass(*sim.state) / physical);
   CHECK(vmax < 1.5 * vmax0);
@@ -242,7 +244,75 @@ TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the targ
   CHECK(solver::total_added_mass(*sim.state) == added_before);
   MESSAGE("largest momentum change per cycle without additions ", worst / scale);
   CHECK(worst <= 1e-12 * scale);
-  CHECK(largest_speed() < 1.5 * vmax0);
+  CHECK(largest_speed(*sim.state) < 1.5 * vmax0);
+}
+
+// An interior particle I whose shape-function values at its neighbours nearly cancel, as in a
+// torn, one-sided neighbourhood: its own value phi_I(X_I) is set so that its smoothed mass
+// m_I = sum_K m-hat_K phi_I(X_K) (Eq. 20) is 0.11 m-hat_I, just above the share below which a
+// particle is integrated plainly. The FDS plate blew up from such a particle (0.1 m-hat_I).
+// Returns I.
+Index tear_shape_function(solver::State& s, spg::Domain& d) {
+  const Index centre = 4 + 8 * (3 + 7 * 3);
+  const auto cc = static_cast<std::size_t>(centre);
+  double others = 0.0;
+  std::size_t self = 0;
+  for (Index t = d.transpose.offsets[cc]; t < d.transpose.offsets[cc + 1]; ++t) {
+    const auto tt = static_cast<std::size_t>(t);
+    const auto k = static_cast<std::size_t>(d.transpose.rows[tt]);
+    const auto pair = static_cast<std::size_t>(d.transpose.pairs[tt]);
+    if (k == cc)
+      self = pair;
+    else
+      others += d.mass[k] * d.shape.value[pair];
+  }
+  d.shape.value[self] = (0.11 * d.mass[cc] - others) / d.mass[cc];
+  spg::smooth_masses(s, d);
+  return centre;
+}
+
+TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and stay stable") {
+  TempDir dir;
+  Simulation sim = prepare(dir, spg_deck(7, 6, 5, 2000));
+  set_velocity_field(*sim.state);
+  spg::Domain& d = sim.state->spg.front();
+  spg::initialise(*sim.state, d);
+  // The initial arrangement is the reference of the bound: no row is shortened.
+  for (const double m : d.mobility)
+    CHECK(m == 1.0);
+  const double natural = spg::particle_pass(*sim.state, d, 0.0).critical_step;
+  const Index centre = tear_shape_function(*sim.state, d);
+  const auto cc = static_cast<std::size_t>(centre);
+  REQUIRE(d.pinned[cc] == 0);
+  REQUIRE(d.mass[cc] / d.smoothed_mass[cc] == doctest::Approx(1.0 / 0.11));
+  // Every row that holds I is shortened, and only rows near it.
+  double largest = 1.0;
+  for (Index i = 0; i < d.count(); ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    bool holds = false;
+    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
+      holds = holds || d.list.neighbours[static_cast<std::size_t>(p)] == centre;
+    if (holds) CHECK(d.mobility[ii] > 2.0);
+    // Three spacings away (a row's neighbours, theirs, and the rows holding those) in any
+    // axis, nothing changed: the x = 0 face.
+    const Vec3 apart =
+        sim.state->nodes.position.col(d.nodes[ii]) - sim.state->nodes.position.col(d.nodes[cc]);
+    if (apart.cwiseAbs().maxCoeff() > 3.5) CHECK(d.mobility[ii] == 1.0);
+    largest = std::max(largest, d.mobility[ii]);
+  }
+  const double shortened = spg::particle_pass(*sim.state, d, 0.0).critical_step;
+  MESSAGE("largest mobility ", largest, ", critical step before / after ", natural, " / ",
+          shortened);
+  CHECK(shortened < natural / std::sqrt(2.0));
+  // At that step the body rings stably for 2000 cycles.
+  const double vmax0 = largest_speed(*sim.state);
+  run(sim);
+  REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
+  MESSAGE("largest speed before / after ", vmax0, " / ", largest_speed(*sim.state));
+  CHECK(largest_speed(*sim.state) < 1.5 * vmax0);
+  // (Taken out, the factor is not needed here: the same torn block at the step of length / c
+  // alone also rings stably for 2000 cycles, measured. The bound is conservative on a regular
+  // lattice; the FDS plate, which stopped without it, had one-sided rows with large gradients.)
 }
 
 TEST_CASE("MC-SPG coupled to FE by common nodes: total momentum kept to round-off") {

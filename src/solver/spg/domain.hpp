@@ -114,6 +114,18 @@ struct Domain {
   std::vector<double> mass_request;   ///< mass factor a row asked for this cycle (0: none)
   std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
   std::vector<double> length;         ///< characteristic length at the renewal
+  /// Row I's mobility: the largest, over the particles J of row I, of m-hat_J times the
+  /// Gershgorin bound of row J of MC-SPG's effective inverse mass (smoothing.cpp), relative to
+  /// the largest at the first renewal, at least 1.
+  /// A force on J accelerates J's smoothed velocity through 1 / m_J twice (a_J = f_J / m_J,
+  /// then the gather weights m-hat_K phi_J(X_K) / m_J), so a smoothed mass m_J well below m-hat_J
+  /// can raise the frequencies of every row J is in; the row's stable step is divided by the
+  /// square root of this bound (renewal.cpp, smooth_masses).
+  std::vector<double> mobility;
+  double mobility_scale = 1.0;    ///< the largest Gershgorin bound at the first renewal
+  double largest_mobility = 1.0;  ///< the largest mobility of the run so far, where and when
+  Index largest_mobility_particle = -1;
+  double largest_mobility_time = 0.0;
   /// The particle's stable step at its last stress update (with the mass it has; before
   /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
   std::vector<double> step;

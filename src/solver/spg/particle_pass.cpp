@@ -155,7 +155,8 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   p_j = weight * sigma * f_inv.transpose();
   d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
   Outcome o{element_step(d.settings.bulk_viscosity, step_length(d.length[jj], f_hat, length),
-                         vol.sound, k.trace),
+                         vol.sound, k.trace) /
+                std::sqrt(d.mobility[jj]),
             false, false};
   scale_particle_mass(s, d, j, o);
   return o;

@@ -1,6 +1,7 @@
 // Kernel renewal: the adaptive anisotropic Lagrangian kernel of paper §3.1. The shape functions
 // are built in a reference configuration X-hat (Eq. 33) and reused until the next renewal; every
 // SMSTEP steps the reference becomes the current configuration and F^n takes up F-hat (Eq. 32).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -132,6 +133,65 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
   d.shape = std::move(shape);
 }
 
+// MC-SPG moves a smoothed particle I with u_I = sum_K T_IK u-hat_K, u-hat_K += dt sum_J
+// phi_J(X_K) f_J / m_J (smoothing.cpp): its effective inverse mass is W = T S M^-1 (T_IK =
+// m-hat_K phi_I(X_K) / m_I, S_KJ = phi_J(X_K), M the smoothed masses of Eq. 20), which for a
+// regular neighbourhood is about 1 / m-hat on the diagonal, like a plain particle. Its row sums
+// bound W's largest eigenvalue (Gershgorin): r_I = m-hat_I sum_K |T_IK| sum_J |S_KJ| / m_J.
+// Measured on the FDS plate at h 0.15 (manual/verification.md): the run blew up from a torn
+// particle whose smoothed mass had fallen to 0.1 m-hat (just above kMinimumSmoothedMassShare),
+// at a sixth of the step its length and sound speed gave; with this factor it ran through.
+void update_mobility(Domain& d, double time) {
+  const Index n = d.count();
+  d.mobility.assign(static_cast<std::size_t>(n), 1.0);
+  if (d.settings.stabilization != Stabilization::momentum_consistent) return;
+  std::vector<double> inverse_mass_sum(static_cast<std::size_t>(n), 0.0), r(d.mobility);
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index k = 0; k < n; ++k) {
+    double sum = 0.0;
+    for (Index p = d.list.offsets[static_cast<std::size_t>(k)];
+         p < d.list.offsets[static_cast<std::size_t>(k) + 1]; ++p) {
+      const auto j = static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)]);
+      if (!d.pinned[j])
+        sum += std::abs(d.shape.value[static_cast<std::size_t>(p)]) / d.smoothed_mass[j];
+    }
+    inverse_mass_sum[static_cast<std::size_t>(k)] = sum;
+  }
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (d.pinned[ii]) continue;
+    double sum = 0.0;
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      sum += std::abs(d.transpose.gather[tt]) *
+             inverse_mass_sum[static_cast<std::size_t>(d.transpose.rows[tt])];
+    }
+    r[ii] = d.mass[ii] * sum;
+  }
+  // Normalised by the largest bound of the initial particle arrangement, where length / c is
+  // the stable step (verified); Gershgorin alone overestimates at free surfaces, whose shape
+  // functions have negative lobes (r up to ~1.35 on the elastic-wave rod: 16 % more cycles for
+  // no change in the result).
+  if (d.renewals == 0) d.mobility_scale = std::max(1.0, *std::max_element(r.begin(), r.end()));
+    // Row I's stress drives every particle of row I.
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    double worst = 0.0;
+    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
+      worst = std::max(worst,
+                       r[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])]);
+    d.mobility[ii] = std::max(1.0, worst / d.mobility_scale);
+  }
+  const auto top = std::max_element(d.mobility.begin(), d.mobility.end());
+  if (*top > d.largest_mobility) {
+    d.largest_mobility = *top;
+    d.largest_mobility_particle = static_cast<Index>(top - d.mobility.begin());
+    d.largest_mobility_time = time;
+  }
+}
+
 }  // namespace
 
 // Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J), the
@@ -166,6 +226,7 @@ void smooth_masses(State& s, Domain& d) {
     s.nodes.mass[node] =
         pin ? d.base_mass[ii] : (mode == Stabilization::momentum_consistent ? m : d.mass[ii]);
   }
+  update_mobility(d, s.time);
 }
 
 void renew_kernel(State& s, Domain& d) {
