@@ -171,14 +171,13 @@ void update_mobility(Domain& d, double time) {
   }
   // Normalised by the largest bound of the initial particle arrangement, where length / c is
   // the stable step (verified); Gershgorin alone overestimates at free surfaces, whose shape
-  // functions have negative lobes (r up to ~1.35 on the elastic-wave rod: 16 % more cycles for
+  // functions have negative lobes (r up to 1.36 on the elastic-wave rod: 16 % more cycles for
   // no change in the result).
   if (d.renewals == 0) d.mobility_scale = std::max(1.0, *std::max_element(r.begin(), r.end()));
-    // Row I's stress drives every particle of row I.
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    double worst = 0.0;
+    double worst = 0.0;  // row I's stress drives every particle of row I
     for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
       worst = std::max(worst,
                        r[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])]);
