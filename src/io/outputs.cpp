@@ -14,7 +14,7 @@ void Outputs::Schedule::advance(double t) {
   last_written = t;
   if (interval_curve) {
     // The curve's interval at the output just written; a non-positive one writes every cycle.
-    interval = (*interval_curve)(t);
+    interval = std::max(0.0, (*interval_curve)(t));
     next = interval > 0.0 ? t + interval : std::nextafter(t, std::numeric_limits<double>::max());
     return;
   }
@@ -22,10 +22,11 @@ void Outputs::Schedule::advance(double t) {
     next += interval;
 }
 
-Outputs::Schedule Outputs::schedule(const solver::State& s, double interval, model::Id curve) {
+Outputs::Schedule Outputs::schedule(const model::ModelDatabase& m, const solver::State& s,
+                                    double interval, model::Id curve) {
   Schedule sc{interval, nullptr, 0.0, -1.0};
-  for (const solver::LoadCurve& c : s.curves)
-    if (curve != 0 && c.id() == curve) sc.interval_curve = &c;
+  const solver::Index c = solver::detail::curve_index(m, curve);  // s.curves is in model order
+  if (c >= 0) sc.interval_curve = &s.curves[static_cast<std::size_t>(c)];
   return sc;
 }
 
@@ -55,7 +56,7 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     if (dt <= 0.0 && r.plots > 0) dt = s.time_control.end_time / r.plots;
     if (dt > 0.0 || r.interval_curve != 0) {
       d3plot_ = std::make_unique<VtkSeries>(dir);
-      d3plot_schedule_ = schedule(s, dt, r.interval_curve);
+      d3plot_schedule_ = schedule(m, s, dt, r.interval_curve);
     }
   }
   const std::vector<solver::Index> nodes = history_nodes(m);
@@ -76,7 +77,7 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
       continue;
     }
     histories_.push_back(std::move(h));
-    history_schedules_.push_back(schedule(s, r.interval, r.interval_curve));
+    history_schedules_.push_back(schedule(m, s, r.interval, r.interval_curve));
   }
 }
 

@@ -42,7 +42,8 @@ class Outputs {
     [[nodiscard]] bool due(double t) const { return t >= next - 1.0e-9 * interval; }
     void advance(double t);
   };
-  static Schedule schedule(const solver::State& state, double interval, model::Id curve);
+  static Schedule schedule(const model::ModelDatabase& model, const solver::State& state,
+                           double interval, model::Id curve);
   std::unique_ptr<VtkSeries> d3plot_;
   Schedule d3plot_schedule_;
   std::vector<std::unique_ptr<HistoryFile>> histories_;
