@@ -44,7 +44,8 @@ import elastic_wave  # noqa: E402  (tools/verify)
 import fds_force  # noqa: E402
 import taylor_bar  # noqa: E402
 
-MCDYNA = os.path.join(ROOT, "build", "mcdyna")
+# MCDYNA=path runs another binary (a copy, so a long study survives rebuilds of build/).
+MCDYNA = os.environ.get("MCDYNA", os.path.join(ROOT, "build", "mcdyna"))
 FDS_REFERENCE = os.path.join(ROOT, "decks", "fds", "reference_force_h0.15.csv")
 TAYLOR_EXPERIMENT_LENGTH, TAYLOR_EXPERIMENT_DIAMETER, TAYLOR_FE_LENGTH = 16.51, 16.7, 15.95
 
@@ -103,8 +104,10 @@ def run_facts(run_dir):
         return None
 
     def number(pattern, cast=float, default=0):
-        m = re.search(pattern, text, re.M)
-        return cast(m.group(1)) if m else default
+        # The last match: a run continued from a restart dump appends to d3hsp, and its summary
+        # (with the wall time of all the run's parts) comes last.
+        m = re.findall(pattern, text, re.M)
+        return cast(m[-1]) if m else default
 
     # FE hexahedra: the parts whose section is a solid element (an SPG part's hexahedra become
     # particles).

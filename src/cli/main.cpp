@@ -18,11 +18,11 @@ namespace {
 
 constexpr int kExitUsage = 2;
 
-// Rewrites LS-DYNA style "key=value" arguments (i=, ncpu=, memory=) into subcommand form.
+// Rewrites LS-DYNA style "key=value" arguments (i=, r=, ncpu=, memory=) into subcommand form.
 // Returns false with a message for an unknown key.
 bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& error) {
   std::vector<std::string> out;
-  std::string deck, ncpu;
+  std::string deck, ncpu, restart;
   bool lsdyna_style = false;
   for (const std::string& a : args) {
     const auto eq = a.find('=');
@@ -35,22 +35,31 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
     const std::string value = a.substr(eq + 1);
     if (key == "I") {
       deck = value;
+    } else if (key == "R") {
+      restart = value;
     } else if (key == "NCPU") {
       ncpu = value;
     } else if (key == "MEMORY" || key == "MEMORY2") {
       // Memory is allocated as needed; accepted for LS-DYNA command lines.
     } else {
-      error =
-          fmt::format("unknown LS-DYNA style argument '{}' (mcdyna knows i=, ncpu=, memory=)", a);
+      error = fmt::format(
+          "unknown LS-DYNA style argument '{}' (mcdyna knows i=, r=, ncpu=, memory=)", a);
       return false;
     }
   }
   if (lsdyna_style) {
     if (deck.empty()) {
-      error = "LS-DYNA style command line needs i=DECK";
+      // LS-DYNA restarts from r= alone; mcdyna compiles the deck's constant data again.
+      error = restart.empty() ? "LS-DYNA style command line needs i=DECK"
+                              : "r=DUMP needs i=DECK too: mcdyna restarts from the deck that "
+                                "wrote the dump";
       return false;
     }
     out.insert(out.begin(), {"run", deck});
+    if (!restart.empty()) {
+      out.push_back("--restart");
+      out.push_back(restart);
+    }
     if (!ncpu.empty()) {
       out.push_back("--threads");
       out.push_back(ncpu.rfind('-', 0) == 0 ? ncpu.substr(1) : ncpu);  // ncpu=-2: same count
@@ -91,6 +100,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("deck", run.deck, "keyword deck (.k, .key, .dyn)")->required();
   run_cmd->add_option("--out", run.out_dir, "directory for the outputs (default: working dir)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)");
+  run_cmd->add_option("--restart", run.restart,
+                      "continue from a restart dump (d3dumpNN, runrsf) written by this deck");
   run_cmd->add_flag("--allow-unsupported", run.allow_unsupported,
                     "run without unsupported keywords that change the physics");
   run_cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");

@@ -9,11 +9,14 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 #include "cli/load.hpp"
 #include "cli/report.hpp"
+#include "cli/restart_dump.hpp"
 #include "io/outputs.hpp"
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
@@ -35,8 +38,17 @@ extern "C" void on_stop_signal(int sig) {
 // The same lines (every 5 %) go to d3hsp as the time-step history.
 class Progress {
  public:
-  Progress(std::ostream& out, std::ostream& log, bool terminal, bool quiet)
-      : out_(out), log_(log), terminal_(terminal), quiet_(quiet), start_(Clock::now()) {}
+  /// `start_fraction`: the share of ENDTIM done before this run started (a restart).
+  Progress(std::ostream& out, std::ostream& log, bool terminal, bool quiet, double start_fraction)
+      : out_(out),
+        log_(log),
+        terminal_(terminal),
+        quiet_(quiet),
+        start_(Clock::now()),
+        start_fraction_(start_fraction) {
+    while (next_fraction_ <= start_fraction_)
+      next_fraction_ += 0.05;
+  }
 
   void update(const solver::State& s) {
     const double end = s.time_control.end_time;
@@ -46,7 +58,8 @@ class Progress {
     const bool refresh = terminal_ && now - last_print_ > std::chrono::milliseconds(200);
     if (!milestone && !refresh) return;
     const double elapsed = seconds(start_, now);
-    const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    const double done = fraction - start_fraction_;
+    const double eta = done > 0.0 ? elapsed * (1.0 - fraction) / done : 0.0;
     const std::string line = fmt::format(
         "cycle {:>9}  t = {:.5e}  dt = {:.4e}  {:5.1f} %  elapsed {:.1f} s  ETA {:.1f} s", s.cycle,
         s.time, s.step, 100.0 * fraction, elapsed, eta);
@@ -79,6 +92,7 @@ class Progress {
   std::ostream& log_;
   bool terminal_, quiet_;
   Clock::time_point start_, last_print_{};
+  double start_fraction_ = 0.0;
   double next_fraction_ = 0.05;
 };
 
@@ -252,39 +266,92 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   std::filesystem::create_directories(dir);
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
-  std::ofstream log(dir / "d3hsp");
-  fmt::print(log,
-             "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}\n\n",
-             options.deck.string(), omp_get_max_threads());
-  print_summary(log, d.deck, d.built.model, count_model(d.built.model));
-  log << report.str();
-  for (const auto& diag : compile_diags.all())
-    log << core::format_diagnostic(diag, d.deck.files);
-  print_state_summary(log, *state);
+  // The options that change the physics go into the dump's fingerprint with the deck's text.
+  const std::string fingerprint = deck_fingerprint(
+      d.deck.files, fmt::format("stabilization={};renewal={};msc={}", options.spg_stabilization,
+                                options.spg_renewal_strain, options.spg_mode_control));
+  std::optional<LoadedDump> dump;
+  if (!options.restart.empty()) {
+    try {
+      dump = read_dump(options.restart, fingerprint, *state);
+    } catch (const std::exception& e) {
+      fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
+      return kRunDeckErrors;
+    }
+  }
+
+  // A restarted run continues d3hsp after what the earlier runs wrote.
+  std::ofstream log(dir / "d3hsp", dump ? std::ios::app : std::ios::trunc);
+  if (dump) {
+    fmt::print(log, "\nRestart from {} at t = {:.6e}, cycle {} (threads: {})\n",
+               options.restart.string(), state->time, state->cycle, omp_get_max_threads());
+  } else {
+    fmt::print(log,
+               "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}\n\n",
+               options.deck.string(), omp_get_max_threads());
+    print_summary(log, d.deck, d.built.model, count_model(d.built.model));
+    log << report.str();
+    for (const auto& diag : compile_diags.all())
+      log << core::format_diagnostic(diag, d.deck.files);
+    print_state_summary(log, *state);
+  }
 
   std::vector<std::string> notes;
-  io::Outputs outputs(d.built.model, *state, dir, notes);
-  for (const auto& n : notes)
-    fmt::print(log, "note: {}\n", n);
-  fmt::print(log, "\nTime-step history (every 5 % of ENDTIM)\n");
+  std::unique_ptr<io::Outputs> outputs_holder;
+  try {
+    outputs_holder = std::make_unique<io::Outputs>(d.built.model, *state, dir, notes,
+                                                   dump ? &dump->outputs : nullptr);
+  } catch (const std::exception& e) {
+    fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
+    return kRunDeckErrors;
+  }
+  io::Outputs& outputs = *outputs_holder;
+  if (!dump) {
+    for (const auto& n : notes)
+      fmt::print(log, "note: {}\n", n);
+    fmt::print(log, "\nTime-step history (every 5 % of ENDTIM)\n");
+  }
+  DumpSchedule dumps(d.built.model.outputs, dir);
 
   g_stop_signal = 0;
   auto old_int = std::signal(SIGINT, on_stop_signal);
   auto old_term = std::signal(SIGTERM, on_stop_signal);
-  Progress progress(out, log, isatty(STDOUT_FILENO) != 0, options.quiet);
+  const double end_time = state->time_control.end_time;
+  Progress progress(out, log, isatty(STDOUT_FILENO) != 0, options.quiet,
+                    end_time > 0.0 ? std::min(1.0, state->time / end_time) : 0.0);
   const auto start = std::chrono::steady_clock::now();
   long zone_cycles = 0;
+  const long start_cycle = state->cycle;  // a restart times only its own cycles
   solver::RunHooks hooks;
   hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
   hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
-    zone_cycles = s.cycle * static_cast<long>(s.solids.count());
+    zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
   };
   hooks.stop_requested = [] { return g_stop_signal != 0; };
   hooks.progress = [&](const solver::State& s) { progress.update(s); };
-  const solver::RunResult result = solver::run(*state, hooks);
+  hooks.dump_due = [&](const solver::State& s, bool interrupted) {
+    return dumps.due(s.cycle, interrupted);
+  };
+  std::string dump_failure;
+  std::filesystem::path last_dump;
+  hooks.dump = [&](const solver::State& s, const solver::ResumePoint& point) {
+    const io::OutputsResume where = outputs.resume_point();
+    for (const std::filesystem::path& path : dumps.take()) {
+      try {
+        write_dump(path, fingerprint, s, point, where);
+        fmt::print(log, "restart dump {} written at t = {:.6e}, cycle {}\n", path.string(), s.time,
+                   s.cycle);
+        last_dump = path;
+      } catch (const std::exception& e) {
+        // A dump that cannot be written does not stop the run; it is reported at the end.
+        if (dump_failure.empty()) dump_failure = e.what();
+      }
+    }
+  };
+  const solver::RunResult result = solver::run(*state, hooks, dump ? &dump->point : nullptr);
   progress.finish();
   std::signal(SIGINT, old_int);
   std::signal(SIGTERM, old_term);
@@ -315,6 +382,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                1e-6 * result.particle_cycles / result.wall_seconds);
   }
   print_spg_summary(summary, *state);
+  if (!dump_failure.empty())
+    fmt::print(summary, "  warning: restart dump failed: {}\n", dump_failure);
+  if (result.reason == solver::StopReason::interrupted && !last_dump.empty())
+    fmt::print(summary,
+               "  continue with: mcdyna run {} --out {} --restart {} (and the same options)\n",
+               options.deck.string(), dir.string(), last_dump.string());
   if (state->mass_scaling_dt > 0.0) {
     fmt::print(summary, "  added mass (DT2MS) {:.6e}\n", solver::total_added_mass(*state));
   }

@@ -19,6 +19,8 @@ struct RunOptions {
   /// SMSTEP check); negative: the default of the solver
   double spg_renewal_strain = -1.0;
   double spg_mode_control = -1.0;  ///< < 0: from the deck (MSC)
+  /// --restart / r=: continue the run from this dump (written by the same deck and options)
+  std::filesystem::path restart;
 };
 
 /// Exit codes of `run` (README and manual list them).

@@ -2,6 +2,8 @@
 // (../shared/reference/keywords.md §3), each with its CSV twin.
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "io/history_file.hpp"
 #include "solver/energy.hpp"
 
@@ -15,8 +17,8 @@ using solver::Vec3;
 
 class Glstat final : public HistoryFile {
  public:
-  Glstat(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "glstat", s.title,
+  Glstat(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "glstat", s.title,
                     "time,time_step,kinetic_energy,internal_energy,stonewall_energy,"
                     "hourglass_energy,sliding_energy,external_work,eroded_internal_energy,"
                     "eroded_hourglass_energy,total_energy,energy_ratio,x_velocity,y_velocity,"
@@ -86,16 +88,24 @@ class Glstat final : public HistoryFile {
         percent, ce_id, cp_node);
     flush();
   }
+  [[nodiscard]] std::vector<double> saved_values() const override {
+    return {initialised_ ? 1.0 : 0.0, initial_};
+  }
 
  private:
+  void restore_values(const std::vector<double>& v) override {
+    if (v.size() != 2) throw std::runtime_error("glstat: the restart dump's values do not fit");
+    initialised_ = v[0] != 0.0;
+    initial_ = v[1];
+  }
   bool initialised_ = false;
   double initial_ = 0.0;
 };
 
 class Matsum final : public HistoryFile {
  public:
-  Matsum(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "matsum", s.title,
+  Matsum(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "matsum", s.title,
                     "time,part,internal_energy,kinetic_energy,eroded_internal_energy,x_momentum,"
                     "y_momentum,z_momentum,x_rigid_velocity,y_rigid_velocity,z_rigid_velocity,"
                     "hourglass_energy,added_mass") {
@@ -130,8 +140,8 @@ class Matsum final : public HistoryFile {
 
 class Nodout final : public HistoryFile {
  public:
-  Nodout(const std::filesystem::path& dir, const State& s, std::vector<Index> nodes)
-      : HistoryFile(dir, "nodout", s.title,
+  Nodout(const HistoryPlace& place, const State& s, std::vector<Index> nodes)
+      : HistoryFile(place, "nodout", s.title,
                     "time,node,x_disp,y_disp,z_disp,x_vel,y_vel,z_vel,x_accl,y_accl,z_accl,"
                     "x_coor,y_coor,z_coor"),
         nodes_(std::move(nodes)) {
@@ -173,8 +183,8 @@ class Nodout final : public HistoryFile {
 
 class Spcforc final : public HistoryFile {
  public:
-  Spcforc(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "spcforc", s.title, "time,node,x_force,y_force,z_force") {}
+  Spcforc(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "spcforc", s.title, "time,node,x_force,y_force,z_force") {}
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
@@ -198,8 +208,8 @@ class Spcforc final : public HistoryFile {
 // know (time, wall, normal force, x/y/z force) with one line per wall.
 class Rwforc final : public HistoryFile {
  public:
-  Rwforc(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "rwforc", s.title, "time,wall,normal_force,x_force,y_force,z_force") {
+  Rwforc(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "rwforc", s.title, "time,wall,normal_force,x_force,y_force,z_force") {
     ascii("\n r i g i d   w a l l   f o r c e s\n\n");
     ascii("     time       wall#   normal-force      x-force        y-force        z-force\n");
     flush();
@@ -224,8 +234,8 @@ class Rwforc final : public HistoryFile {
 // is the mass of the slave nodes in contact (on the master line too).
 class Rcforc final : public HistoryFile {
  public:
-  Rcforc(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "rcforc", s.title,
+  Rcforc(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "rcforc", s.title,
                     "time,contact,side,x_force,y_force,z_force,mass,x_moment,y_moment,z_moment") {
     ascii("\n r e s u l t a n t   i n t e r f a c e   f o r c e s\n\n");
     ascii(" {:>12}  {}\n", "contact", "title");
@@ -258,8 +268,8 @@ class Rcforc final : public HistoryFile {
 
 class Bndout final : public HistoryFile {
  public:
-  Bndout(const std::filesystem::path& dir, const State& s)
-      : HistoryFile(dir, "bndout", s.title,
+  Bndout(const HistoryPlace& place, const State& s)
+      : HistoryFile(place, "bndout", s.title,
                     "time,kind,id,x_force,y_force,z_force,x_moment,y_moment,z_moment,energy") {}
 
   void write(const OutputContext& c) override {
@@ -304,7 +314,7 @@ class Bndout final : public HistoryFile {
 
 }  // namespace
 
-std::unique_ptr<HistoryFile> make_history(const std::string& name, const std::filesystem::path& dir,
+std::unique_ptr<HistoryFile> make_history(const std::string& name, const HistoryPlace& dir,
                                           const State& state,
                                           const std::vector<Index>& history_nodes) {
   if (name == "glstat") return std::make_unique<Glstat>(dir, state);

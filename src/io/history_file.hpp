@@ -3,11 +3,14 @@
 /// time). Both are flushed after every output block, so a killed run leaves whole rows.
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "solver/state.hpp"
 
@@ -21,10 +24,26 @@ struct OutputContext {
   double nanoseconds_per_zone_cycle = 0.0;
 };
 
+/// Where a history file continues after a restart dump: its two files' sizes at the dump (what
+/// was written later is cut off) and the writer's own values (HistoryFile::saved_values).
+struct HistoryResume {
+  std::string name;
+  std::uint64_t ascii_bytes = 0, csv_bytes = 0;
+  std::vector<double> values;
+};
+
+/// The output directory, and for a restarted run the histories to continue (by name).
+struct HistoryPlace {
+  std::filesystem::path dir;
+  const std::vector<HistoryResume>* resume = nullptr;
+};
+
 class HistoryFile {
  public:
-  /// Opens dir/name and dir/name.csv and writes the LS-DYNA header and the CSV header row.
-  HistoryFile(const std::filesystem::path& dir, const std::string& name, const std::string& title,
+  /// Opens dir/name and dir/name.csv and writes the LS-DYNA header and the CSV header row; when
+  /// `place` continues a run, cuts both files back to their size at the dump and appends to them
+  /// instead, writing nothing until continue_records().
+  HistoryFile(const HistoryPlace& place, const std::string& name, const std::string& title,
               const std::string& csv_header);
   virtual ~HistoryFile() = default;
   HistoryFile(const HistoryFile&) = delete;
@@ -32,18 +51,26 @@ class HistoryFile {
 
   virtual void write(const OutputContext& c) = 0;
   [[nodiscard]] const std::string& name() const { return name_; }
+  /// For a restart dump: the files' sizes now and the writer's own values.
+  [[nodiscard]] HistoryResume resume_point() const;
+  /// After a restarted run built this writer: restores its values; records follow.
+  void continue_records(const HistoryResume& r);
 
  protected:
   // The format strings are checked against the arguments at the call site; numbers are printed
   // with -0 as 0 (a reaction of -0.0000E+00 reads like a sign error).
   template <typename... Args>
   void ascii(fmt::format_string<Args...> f, Args&&... args) {
+    if (holding_) return;
     fmt::print(ascii_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
   }
   template <typename... Args>
   void csv(fmt::format_string<Args...> f, Args&&... args) {
+    if (holding_) return;
     fmt::print(csv_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
   }
+  /// Values beside the files that later records depend on (glstat's initial energy).
+  [[nodiscard]] virtual std::vector<double> saved_values() const { return {}; }
   void flush();
   /// "{BEGIN LEGEND}" block listing entity IDs and titles.
   void legend(const std::vector<std::pair<long long, std::string>>& entities);
@@ -61,13 +88,18 @@ class HistoryFile {
       if (f) std::fclose(f);
     }
   };
+  virtual void restore_values(const std::vector<double>& values) {
+    if (!values.empty()) throw std::runtime_error(name_ + ": unexpected values in the dump");
+  }
   std::string name_;
+  std::filesystem::path ascii_path_, csv_path_;
   std::unique_ptr<std::FILE, Closer> ascii_, csv_;
+  bool holding_ = false;  ///< continuing a run: the headers are in the files already
 };
 
 /// Creates the writer for an ASCII database name (glstat, matsum, nodout, spcforc, rwforc,
 /// bndout); nullptr for names mcdyna does not write.
-std::unique_ptr<HistoryFile> make_history(const std::string& name, const std::filesystem::path& dir,
+std::unique_ptr<HistoryFile> make_history(const std::string& name, const HistoryPlace& place,
                                           const solver::State& state,
                                           const std::vector<solver::Index>& history_nodes);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "solver/compile.hpp"
 
@@ -49,7 +50,8 @@ std::vector<solver::Index> history_nodes(const model::ModelDatabase& m) {
 }  // namespace
 
 Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
-                 const std::filesystem::path& dir, std::vector<std::string>& notes) {
+                 const std::filesystem::path& dir, std::vector<std::string>& notes,
+                 const OutputsResume* resume) {
   if (m.outputs.d3plot) {
     const model::D3plotRequest& r = *m.outputs.d3plot;
     double dt = r.interval;
@@ -57,8 +59,13 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     if (dt > 0.0 || r.interval_curve != 0) {
       d3plot_ = std::make_unique<VtkSeries>(dir);
       d3plot_schedule_ = schedule(m, s, dt, r.interval_curve);
+      if (resume) {
+        d3plot_->restore(resume->states);
+        d3plot_schedule_.restore(resume->d3plot);
+      }
     }
   }
+  const HistoryPlace place{dir, resume ? &resume->histories : nullptr};
   const std::vector<solver::Index> nodes = history_nodes(m);
   for (const model::AsciiRequest& r : m.outputs.ascii) {
     if (r.interval <= 0.0 && r.interval_curve == 0) continue;
@@ -71,14 +78,36 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
       notes.push_back("rcforc requested but the deck has no contact: not written");
       continue;
     }
-    auto h = make_history(name, dir, s, nodes);
+    auto h = make_history(name, place, s, nodes);
     if (!h) {
       notes.push_back(fmt::format("{} is not written by mcdyna", name));
       continue;
     }
-    histories_.push_back(std::move(h));
     history_schedules_.push_back(schedule(m, s, r.interval, r.interval_curve));
+    if (resume) {
+      const std::size_t k = histories_.size();
+      if (k >= resume->history_times.size() || resume->histories[k].name != name)
+        throw std::runtime_error("the restart dump's histories are not this deck's");
+      h->continue_records(resume->histories[k]);
+      history_schedules_.back().restore(resume->history_times[k]);
+    }
+    histories_.push_back(std::move(h));
   }
+  if (resume && histories_.size() != resume->histories.size())
+    throw std::runtime_error("the restart dump's histories are not this deck's");
+}
+
+OutputsResume Outputs::resume_point() const {
+  OutputsResume r;
+  if (d3plot_) {
+    r.d3plot = d3plot_schedule_.times();
+    r.states = d3plot_->entries();
+  }
+  for (std::size_t k = 0; k < histories_.size(); ++k) {
+    r.history_times.push_back(history_schedules_[k].times());
+    r.histories.push_back(histories_[k]->resume_point());
+  }
+  return r;
 }
 
 bool Outputs::due(const solver::State& s) const {

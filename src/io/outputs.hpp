@@ -19,11 +19,40 @@
 
 namespace mcdyna::io {
 
+/// Where the outputs stood at a restart dump: the schedules (next output times), the VTK states
+/// written and the history files' sizes.
+struct OutputsResume {
+  struct Times {
+    double interval = 0.0, next = 0.0, last_written = -1.0;
+  };
+  Times d3plot;
+  std::vector<std::pair<double, std::string>> states;  ///< (time, file) of the VTK states
+  std::vector<Times> history_times;                    ///< in the order of `histories`
+  std::vector<HistoryResume> histories;
+};
+
+template <class Ar>
+void fields(Ar& ar, OutputsResume::Times& t) {
+  ar(t.interval, t.next, t.last_written);
+}
+template <class Ar>
+void fields(Ar& ar, HistoryResume& h) {
+  ar(h.name, h.ascii_bytes, h.csv_bytes, h.values);
+}
+template <class Ar>
+void fields(Ar& ar, OutputsResume& o) {
+  ar(o.d3plot, o.states, o.history_times, o.histories);
+}
+
 class Outputs {
  public:
   /// `notes` receives one line per request that cannot be honoured (e.g. rcforc without contact).
+  /// `resume`: continue the outputs of a run restarted from a dump (files are appended to).
   Outputs(const model::ModelDatabase& model, const solver::State& state,
-          const std::filesystem::path& dir, std::vector<std::string>& notes);
+          const std::filesystem::path& dir, std::vector<std::string>& notes,
+          const OutputsResume* resume = nullptr);
+  /// Where the outputs stand now, for a restart dump (flushes the history files).
+  [[nodiscard]] OutputsResume resume_point() const;
 
   [[nodiscard]] bool due(const solver::State& state) const;
   /// `previous`: v^{n-1/2}; the state holds v^{n+1/2}.
@@ -41,6 +70,12 @@ class Outputs {
     double last_written = -1.0;
     [[nodiscard]] bool due(double t) const { return t >= next - 1.0e-9 * interval; }
     void advance(double t);
+    [[nodiscard]] OutputsResume::Times times() const { return {interval, next, last_written}; }
+    void restore(const OutputsResume::Times& t) {
+      interval = t.interval;
+      next = t.next;
+      last_written = t.last_written;
+    }
   };
   static Schedule schedule(const model::ModelDatabase& model, const solver::State& state,
                            double interval, model::Id curve);

@@ -198,6 +198,11 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   write_collection();
 }
 
+void VtkSeries::restore(std::vector<std::pair<double, std::string>> entries) {
+  entries_ = std::move(entries);
+  write_collection();
+}
+
 void VtkSeries::write_collection() const {
   const std::filesystem::path temp = collection().string() + ".part";
   {

@@ -24,6 +24,12 @@ class VtkSeries {
   /// Writes the state at its current time; `velocity` are the nodal velocities at that time.
   void write(const solver::State& state, const Eigen::Matrix3Xd& velocity);
   [[nodiscard]] std::size_t states() const { return entries_.size(); }
+  /// (time, file) of each state written, for a restart dump; `restore` continues such a list
+  /// (the collection is rewritten with it; later states take the following numbers).
+  [[nodiscard]] const std::vector<std::pair<double, std::string>>& entries() const {
+    return entries_;
+  }
+  void restore(std::vector<std::pair<double, std::string>> entries);
   [[nodiscard]] std::filesystem::path collection() const { return dir_ / (base_ + ".pvd"); }
 
  private:

@@ -126,8 +126,17 @@ struct ExtentBinary {
   core::SourceLoc loc;
 };
 
+/// *DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF: restart dumps every `cycles` cycles, a
+/// numbered family (D3DUMP) or `files` running files written in turn (RUNRSF).
+struct RestartDumpRequest {
+  long cycles = 0;  ///< CYCL
+  int files = 1;    ///< NR (RUNRSF)
+  core::SourceLoc loc;
+};
+
 struct OutputRequests {
   std::vector<AsciiRequest> ascii;
+  std::optional<RestartDumpRequest> d3dump, runrsf;
   std::optional<D3plotRequest> d3plot;
   std::vector<HistoryNodes> history_nodes;
   std::optional<ExtentBinary> extent;

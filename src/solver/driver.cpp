@@ -174,29 +174,61 @@ double choose_step(const State& s, const ForcePass& r, bool first) {
 
 }  // namespace
 
-RunResult run(State& s, const RunHooks& hooks) {
+RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
   RunResult result;
   const auto start = Clock::now();
   PhaseClock clock(result.phases);
   const long elements = s.solids.count();
   long particles = 0;
   for (spg::Domain& d : s.spg) {
-    if (d.renewals == 0) spg::initialise(s, d);
+    if (d.renewals == 0 && !resume) spg::initialise(s, d);
     particles += d.count();
   }
-  ForcePass pass = compute_forces(s);
-  clock.charge(PhaseTimes::elements);
-  const double first_step = choose_step(s, pass, true);
+  ForcePass pass;
+  if (resume) {
+    // The dump was taken at the top of a cycle: its forces and step estimate are in the state
+    // and the resume point; computing them again would advance the stresses a second time.
+    pass.critical_step = resume->critical_step;
+    pass.controlling_element = resume->controlling_element;
+    pass.controlling_domain = resume->controlling_domain;
+    pass.controlling_particle = resume->controlling_particle;
+    result.phases = resume->phases;
+    result.element_cycles = resume->element_cycles;
+    result.particle_cycles = resume->particle_cycles;
+  } else {
+    pass = compute_forces(s);
+    clock.charge(PhaseTimes::elements);
+  }
+  const double earlier_wall = resume ? resume->wall_seconds : 0.0;
+  const long first_cycle = s.cycle;
+  const double first_step = resume ? resume->first_step : choose_step(s, pass, true);
   // DTMIN: stop when the step falls below DTMIN x the first step; without it, a step below
   // 1e-6 x the first one is treated as a collapse.
   const double min_step =
       first_step * (s.time_control.min_step_factor > 0.0 ? s.time_control.min_step_factor : 1e-6);
   Eigen::Matrix3Xd velocity_before;
   for (;;) {
-    const double dt = s.cycle == 0 ? first_step : choose_step(s, pass, false);
     const bool at_end = s.time >= s.time_control.end_time * (1.0 - 1e-12) ||
                         (s.time_control.end_cycle > 0 && s.cycle >= s.time_control.end_cycle);
     const bool interrupted = hooks.stop_requested && hooks.stop_requested();
+    // A restart dump at the top of the cycle: everything the cycle starts from is in the state
+    // and in `pass`, so a run continued from here repeats this cycle bit for bit.
+    if (hooks.dump && hooks.dump_due && !at_end && (s.cycle != first_cycle || interrupted) &&
+        hooks.dump_due(s, interrupted)) {
+      clock.charge(PhaseTimes::other);
+      ResumePoint point{pass.critical_step,
+                        pass.controlling_element,
+                        pass.controlling_domain,
+                        pass.controlling_particle,
+                        first_step,
+                        result.phases,
+                        earlier_wall + std::chrono::duration<double>(Clock::now() - start).count(),
+                        result.element_cycles,
+                        result.particle_cycles};
+      hooks.dump(s, point);
+      clock.charge(PhaseTimes::output);
+    }
+    const double dt = s.cycle == 0 ? first_step : choose_step(s, pass, false);
     if (!at_end && !interrupted && !(dt > min_step)) {
       result.reason = StopReason::step_collapse;
       result.message = fmt::format(
@@ -274,7 +306,7 @@ RunResult run(State& s, const RunHooks& hooks) {
     result.phases.seconds[PhaseTimes::contact] += c.seconds;
     result.phases.seconds[PhaseTimes::elements] -= c.seconds;
   }
-  result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall_seconds = earlier_wall + std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }
 

@@ -50,6 +50,19 @@ struct RunResult {
   long particle_cycles = 0;  ///< SPG particle updates performed
 };
 
+/// The time loop's own values at the top of a cycle, beside the State: what a restart dump needs
+/// to continue the loop exactly where it was (the forces of the state are already computed).
+struct ResumePoint {
+  double critical_step = 0.0;  ///< of the last force pass, before TSSFAC
+  Index controlling_element = -1;
+  std::size_t controlling_domain = 0;
+  Index controlling_particle = -1;
+  double first_step = 0.0;  ///< the run's first step (DTMIN is relative to it)
+  PhaseTimes phases;        ///< accumulated so far, as the loop keeps them (SPG not split out)
+  double wall_seconds = 0.0;
+  long element_cycles = 0, particle_cycles = 0;
+};
+
 struct RunHooks {
   /// Asked at t^n before the velocities advance: is an output state due now?
   std::function<bool(const State&)> output_due;
@@ -61,9 +74,14 @@ struct RunHooks {
   std::function<bool()> stop_requested;
   /// Called every cycle after the step (progress display decides how often to print).
   std::function<void(const State&)> progress;
+  /// Asked at the top of every cycle but the first of this run (and when a stop signal came):
+  /// is a restart dump due now? `dump` then writes the state and the loop's resume point.
+  std::function<bool(const State&, bool interrupted)> dump_due;
+  std::function<void(const State&, const ResumePoint&)> dump;
 };
 
 /// Runs the state from its current time to ENDTIM / ENDCYC or until something stops it.
-RunResult run(State& state, const RunHooks& hooks);
+/// `resume`: continue a run read from a restart dump (its forces are in the state already).
+RunResult run(State& state, const RunHooks& hooks, const ResumePoint* resume = nullptr);
 
 }  // namespace mcdyna::solver

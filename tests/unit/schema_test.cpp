@@ -84,6 +84,8 @@ TEST_CASE("the keyword list of issue 2 is supported, with aliases and options") 
                         "RIGIDWALL_PLANAR_MOVING_ID",
                         "RIGIDWALL_PLANAR_ID",
                         "DATABASE_BINARY_D3PLOT",
+                        "DATABASE_BINARY_D3DUMP",
+                        "DATABASE_BINARY_RUNRSF",
                         "DATABASE_GLSTAT",
                         "DATABASE_MATSUM",
                         "DATABASE_RCFORC",

@@ -72,6 +72,7 @@ void set_segment(KeywordRecord& r, model::ModelDatabase& m);
 // database.cpp
 void database_d3plot(KeywordRecord& r, model::ModelDatabase& m);
 void database_ascii(KeywordRecord& r, model::ModelDatabase& m);
+void database_restart_dump(KeywordRecord& r, model::ModelDatabase& m);
 void database_history_node(KeywordRecord& r, model::ModelDatabase& m);
 void database_extent_binary(KeywordRecord& r, model::ModelDatabase& m);
 

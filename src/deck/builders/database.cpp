@@ -1,5 +1,8 @@
-// *DATABASE_BINARY_D3PLOT, the ASCII history databases, *DATABASE_HISTORY_NODE(_SET),
-// *DATABASE_EXTENT_BINARY.
+// *DATABASE_BINARY_D3PLOT, *DATABASE_BINARY_D3DUMP / _RUNRSF, the ASCII history databases,
+// *DATABASE_HISTORY_NODE(_SET), *DATABASE_EXTENT_BINARY.
+#include <algorithm>
+#include <cmath>
+
 #include "deck/builders/builders.hpp"
 
 namespace mcdyna::deck::builders {
@@ -14,6 +17,18 @@ void database_d3plot(KeywordRecord& r, model::ModelDatabase& m) {
   d.excluded_parts = c.integer("PSETID");
   d.loc = c.loc();
   set_once(m.outputs.d3plot, d, r);
+}
+
+void database_restart_dump(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::RestartDumpRequest d;
+  const double cycles = c.real("CYCL");
+  d.cycles = std::lround(cycles);
+  if (cycles > 0.0 && d.cycles < 1) d.cycles = 1;
+  d.files = std::max(1, static_cast<int>(c.integer("NR")));
+  d.loc = c.loc();
+  const bool running = r.schema().name == "DATABASE_BINARY_RUNRSF";
+  set_once(running ? m.outputs.runrsf : m.outputs.d3dump, d, r);
 }
 
 void database_ascii(KeywordRecord& r, model::ModelDatabase& m) {

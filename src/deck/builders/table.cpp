@@ -55,6 +55,8 @@ const std::vector<BuilderEntry>& builder_table() {
       {"SET_PART_LIST", set_part_list},
       {"SET_SEGMENT", set_segment},
       {"DATABASE_BINARY_D3PLOT", database_d3plot},
+      {"DATABASE_BINARY_D3DUMP", database_restart_dump},
+      {"DATABASE_BINARY_RUNRSF", database_restart_dump},
       {"DATABASE_GLSTAT", database_ascii},
       {"DATABASE_MATSUM", database_ascii},
       {"DATABASE_RCFORC", database_ascii},

@@ -1,0 +1,161 @@
+#pragma once
+/// Binary archives for restart dumps. Each struct that goes into a dump lists its members once,
+/// in a function found by argument-dependent lookup:
+///   template <class Archive> void fields(Archive& ar, Nodes& n) { ar(n.ids, n.position, ...); }
+/// and the same function writes (OutArchive) and reads (InArchive). Numbers are stored in the
+/// machine's own representation: a dump is read back by the binary that wrote it, on the same
+/// kind of machine (as LS-DYNA's d3dump), and every double comes back bit for bit.
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace mcdyna::core {
+
+/// A dump that cannot be read: truncated, or not what the reader expects.
+class ArchiveError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <typename T>
+inline constexpr bool kPlainValue = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+
+class OutArchive {
+ public:
+  explicit OutArchive(std::ostream& out) : out_(out) {}
+  template <typename... T>
+  void operator()(T&... values) {
+    (put(values), ...);
+  }
+
+ private:
+  void bytes(const void* p, std::size_t n) {
+    out_.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
+    if (!out_) throw ArchiveError("cannot write the dump (disk full?)");
+  }
+  void size(std::size_t n) {
+    const auto v = static_cast<std::uint64_t>(n);
+    bytes(&v, sizeof v);
+  }
+  template <typename T>
+  void put(T& v) {
+    if constexpr (kPlainValue<T>) {
+      bytes(&v, sizeof v);
+    } else {
+      fields(*this, v);  // the struct's member list (argument-dependent lookup)
+    }
+  }
+  void put(std::string& s) {
+    size(s.size());
+    bytes(s.data(), s.size());
+  }
+  template <typename T>
+  void put(std::vector<T>& v) {
+    size(v.size());
+    if constexpr (kPlainValue<T>) {
+      bytes(v.data(), v.size() * sizeof(T));
+    } else {
+      for (T& x : v)
+        put(x);
+    }
+  }
+  template <typename T, std::size_t N>
+  void put(std::array<T, N>& a) {
+    for (T& x : a)
+      put(x);
+  }
+  template <typename A, typename B>
+  void put(std::pair<A, B>& p) {
+    put(p.first);
+    put(p.second);
+  }
+  template <typename S, int R, int C, int O, int MR, int MC>
+  void put(Eigen::Matrix<S, R, C, O, MR, MC>& m) {
+    size(static_cast<std::size_t>(m.rows()));
+    size(static_cast<std::size_t>(m.cols()));
+    bytes(m.data(), static_cast<std::size_t>(m.size()) * sizeof(S));
+  }
+  std::ostream& out_;
+};
+
+class InArchive {
+ public:
+  /// `available`: bytes left in the stream, to reject a corrupt size before allocating it.
+  InArchive(std::istream& in, std::uint64_t available) : in_(in), left_(available) {}
+  template <typename... T>
+  void operator()(T&... values) {
+    (get(values), ...);
+  }
+
+ private:
+  void bytes(void* p, std::size_t n) {
+    if (n > left_) throw ArchiveError("the dump ends early (truncated file?)");
+    in_.read(static_cast<char*>(p), static_cast<std::streamsize>(n));
+    if (!in_) throw ArchiveError("the dump ends early (truncated file?)");
+    left_ -= n;
+  }
+  // A count of `element` bytes each that cannot fit in what is left is a corrupt dump.
+  std::size_t size(std::size_t element) {
+    std::uint64_t v = 0;
+    bytes(&v, sizeof v);
+    if (element > 0 && v > left_ / element)
+      throw ArchiveError("the dump ends early (truncated file?) or is corrupt");
+    return static_cast<std::size_t>(v);
+  }
+  template <typename T>
+  void get(T& v) {
+    if constexpr (kPlainValue<T>) {
+      bytes(&v, sizeof v);
+    } else {
+      fields(*this, v);
+    }
+  }
+  void get(std::string& s) {
+    s.resize(size(1));
+    bytes(s.data(), s.size());
+  }
+  template <typename T>
+  void get(std::vector<T>& v) {
+    if constexpr (kPlainValue<T>) {
+      v.resize(size(sizeof(T)));
+      bytes(v.data(), v.size() * sizeof(T));
+    } else {
+      v.resize(size(1));
+      for (T& x : v)
+        get(x);
+    }
+  }
+  template <typename T, std::size_t N>
+  void get(std::array<T, N>& a) {
+    for (T& x : a)
+      get(x);
+  }
+  template <typename A, typename B>
+  void get(std::pair<A, B>& p) {
+    get(p.first);
+    get(p.second);
+  }
+  template <typename S, int R, int C, int O, int MR, int MC>
+  void get(Eigen::Matrix<S, R, C, O, MR, MC>& m) {
+    const std::size_t rows = size(0), cols = size(0);
+    if ((R != Eigen::Dynamic && rows != static_cast<std::size_t>(R)) ||
+        (C != Eigen::Dynamic && cols != static_cast<std::size_t>(C)))
+      throw ArchiveError("corrupt dump (matrix shape)");
+    if (rows > 0 && cols > left_ / (rows * sizeof(S)))
+      throw ArchiveError("the dump ends early (truncated file?) or is corrupt");
+    m.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+    bytes(m.data(), rows * cols * sizeof(S));
+  }
+  std::istream& in_;
+  std::uint64_t left_;
+};
+
+}  // namespace mcdyna::core

@@ -1,0 +1,217 @@
+// The member lists of everything a restart dump holds. A member missing here is a restart that
+// silently differs from the run it continues, so the sizes of the structs are pinned below on the
+// platform CI builds on: adding a member to one of them stops the build until it is listed here
+// (or, if it is deck data, said to be left out). tests/unit/restart_test.cpp checks that a run
+// continued from a dump writes the same bits as one that never stopped.
+#include "solver/restart.hpp"
+
+namespace mcdyna::solver {
+
+#if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
+static_assert(sizeof(Nodes) == 248, "Nodes changed: update its fields() in restart.cpp");
+static_assert(sizeof(Solids) == 512, "Solids changed: update fields() in restart.cpp");
+static_assert(sizeof(SolidBlock) == 64, "SolidBlock changed: update fields() in restart.cpp");
+static_assert(sizeof(MaterialPoints) == 80, "MaterialPoints changed: update restart.cpp");
+static_assert(sizeof(RigidBody) == 528, "RigidBody changed: update fields() in restart.cpp");
+static_assert(sizeof(RigidMotion) == 72, "RigidMotion changed: update fields() in restart.cpp");
+static_assert(sizeof(NodalConstraints) == 112, "NodalConstraints changed: update restart.cpp");
+static_assert(sizeof(NodalMotion) == 136, "NodalMotion changed: update fields() in restart.cpp");
+static_assert(sizeof(RigidWallState) == 240, "RigidWallState changed: update restart.cpp");
+static_assert(sizeof(State) == 1384, "State changed: update fields() in restart.cpp");
+static_assert(sizeof(spg::Domain) == 1416, "spg::Domain changed: update fields() in restart.cpp");
+static_assert(sizeof(spg::SpgSettings) == 88, "SpgSettings changed: update restart.cpp");
+static_assert(sizeof(contact::Interface) == 360, "contact::Interface changed: update restart.cpp");
+static_assert(sizeof(contact::Pass) == 328, "contact::Pass changed: update restart.cpp");
+static_assert(sizeof(contact::Surface) == 144, "contact::Surface changed: update restart.cpp");
+static_assert(sizeof(ResumePoint) == 152, "ResumePoint changed: update restart.cpp");
+#endif
+
+template <class Ar>
+void fields(Ar& ar, Nodes& n) {
+  ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.force, n.mass, n.added_mass,
+     n.rigid_body, n.smoothed, n.corner_offsets, n.corners);
+}
+
+template <class Ar>
+void fields(Ar& ar, HourglassParams& h) {
+  ar(h.type, h.coefficient);
+}
+
+template <class Ar>
+void fields(Ar& ar, BulkViscosityParams& b) {
+  ar(b.quadratic, b.linear);
+}
+
+template <class Ar>
+void fields(Ar& ar, SolidBlock& b) {
+  ar(b.part, b.begin, b.end, b.point_begin, b.points_per_element, b.formulation, b.material,
+     b.hourglass, b.bulk_viscosity);
+}
+
+template <class Ar>
+void fields(Ar& ar, MaterialPoints& p) {
+  ar(p.deviator, p.back_stress, p.plastic_strain, p.damage);
+}
+
+template <class Ar>
+void fields(Ar& ar, Solids& s) {
+  ar(s.ids, s.nodes, s.part, s.initial_volume, s.volume, s.mass, s.pressure, s.eos_energy,
+     s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force, s.viscosity,
+     s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
+}
+
+template <class Ar>
+void fields(Ar& ar, RigidMotion& m) {
+  ar(m.dof, m.kind, m.curve, m.scale, m.direction, m.birth, m.death, m.rotated);
+}
+
+template <class Ar>
+void fields(Ar& ar, RigidBody& b) {
+  ar(b.part_id, b.mass, b.center, b.initial_center, b.inertia0, b.rotation, b.velocity,
+     b.angular_momentum, b.omega, b.previous_velocity, b.previous_omega, b.nodes, b.offsets,
+     b.fixed_translation, b.fixed_rotation, b.motions, b.body_force, b.force, b.moment,
+     b.constraint_force, b.constraint_moment, b.constraint_work);
+}
+
+template <class Ar>
+void fields(Ar& ar, NodalConstraints& c) {
+  ar(c.nodes, c.masks, c.birth, c.death, c.reaction);
+}
+
+template <class Ar>
+void fields(Ar& ar, NodalMotion& m) {
+  ar(m.id, m.nodes, m.dof, m.kind, m.curve, m.scale, m.direction, m.birth, m.death, m.node_force,
+     m.node_work);
+}
+
+template <class Ar>
+void fields(Ar& ar, RigidWallState& w) {
+  ar(w.id, w.point, w.normal, w.finite, w.edge_l, w.edge_m, w.length_l, w.length_m, w.friction,
+     w.birth, w.death, w.moving, w.mass, w.velocity, w.displacement, w.nodes, w.force, w.energy);
+}
+
+template <class Ar>
+void fields(Ar& ar, PhaseTimes& p) {
+  ar(p.seconds);
+}
+
+template <class Ar>
+void fields(Ar& ar, ResumePoint& r) {
+  ar(r.critical_step, r.controlling_element, r.controlling_domain, r.controlling_particle,
+     r.first_step, r.phases, r.wall_seconds, r.element_cycles, r.particle_cycles);
+}
+
+namespace spg {
+
+template <class Ar>
+void fields(Ar& ar, SpgSettings& s) {
+  ar(s.shape, s.kernel_update, s.renewal_interval, s.renewal_strain, s.stabilization,
+     s.bond_failure, s.failure_strain, s.failure_stretch, s.damping, s.surface_factor,
+     s.mode_control, s.bulk_viscosity);
+}
+
+template <class Ar>
+void fields(Ar& ar, Supports& s) {
+  ar(s.to_unit, s.reach);
+}
+
+template <class Ar>
+void fields(Ar& ar, NeighbourList& l) {
+  ar(l.offsets, l.neighbours);
+}
+
+template <class Ar>
+void fields(Ar& ar, ShapeFunctions& f) {
+  ar(f.value, f.gradient);
+}
+
+template <class Ar>
+void fields(Ar& ar, Transpose& t) {
+  ar(t.offsets, t.pairs, t.rows, t.gather, t.gradient);
+}
+
+template <class Ar>
+void fields(Ar& ar, Bonds& b) {
+  ar(b.offsets, b.partners, b.broken, b.length);
+}
+
+template <class Ar>
+void fields(Ar& ar, SpgTimes& t) {
+  ar(t.neighbours, t.shape_functions, t.smoothing, t.stress, t.force);
+}
+
+template <class Ar>
+void fields(Ar& ar, Domain& d) {
+  ar(d.part, d.material, d.settings, d.nodes, d.mass, d.base_mass, d.shared, d.surface,
+     d.initial_volume, d.volume, d.initial_position, d.initial_support);
+  ar(d.support, d.reference_deformation, d.list, d.shape, d.transpose, d.smoothed_mass,
+     d.added_mass, d.mass_request, d.pinned, d.length, d.mobility, d.mobility_scale,
+     d.largest_mobility, d.largest_mobility_particle, d.largest_mobility_time, d.step,
+     d.renewal_volume, d.gradient_length_scale, d.steps_since_renewal, d.renewals, d.renewed_rows,
+     d.isolated, d.degenerate_events, d.first_degenerate, d.first_degenerate_time);
+  ar(d.unsmoothed, d.unsmoothed_previous, d.smoothed);
+  ar(d.points, d.pressure, d.eos_energy, d.temperature, d.viscosity, d.internal_energy, d.failed,
+     d.deformation, d.stress_gradient, d.damping_energy);
+  ar(d.mode_stiffness, d.mode_residual, d.mode_force, d.mode_energy);
+  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times);
+}
+
+}  // namespace spg
+
+namespace contact {
+
+template <class Ar>
+void fields(Ar& ar, Surface& s) {
+  ar(s.segments, s.stiffness, s.half_thickness, s.two_sided, s.smallest_node_mass, s.area);
+}
+
+template <class Ar>
+void fields(Ar& ar, Pass& p) {
+  ar(p.nodes, p.stiffness, p.nodes_on_side_a, p.surface, p.candidate_offsets, p.candidates, p.near,
+     p.friction, p.side, p.initial_penetration);
+}
+
+template <class Ar>
+void fields(Ar& ar, AppliedForce& f) {
+  ar(f.node, f.force);
+}
+
+template <class Ar>
+void fields(Ar& ar, Interface& c) {
+  ar(c.id, c.heading, c.passes, c.static_friction, c.dynamic_friction, c.decay, c.viscous_friction,
+     c.damping, c.birth, c.death, c.soft, c.soft_scale, c.penalty_option, c.sort_interval,
+     c.initial_step, c.ignore);
+  ar(c.last_sort, c.sorted_positions, c.tracked, c.capture, c.force_a, c.force_b, c.moment_a,
+     c.moment_b, c.mass_in_contact, c.energy, c.seconds, c.applied);
+}
+
+}  // namespace contact
+
+// Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
+// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC).
+template <class Ar>
+void fields(Ar& ar, State& s) {
+  ar(s.nodes, s.solids, s.spg, s.rigid_bodies, s.constraints, s.nodal_motions, s.rigid_walls,
+     s.contacts);
+  ar(s.time, s.cycle, s.step, s.next_step, s.controlling_element, s.controlling_domain,
+     s.controlling_particle, s.external_work, s.eroded_kinetic, s.eroded_internal,
+     s.eroded_hourglass, s.initial_energy, s.initial_mass);
+}
+
+void save_state(core::OutArchive& ar, const State& state) {
+  ar(const_cast<State&>(state));  // fields() lists members once for both directions; not written
+}
+
+void load_state(core::InArchive& ar, State& state) {
+  ar(state);
+}
+
+void save_resume_point(core::OutArchive& ar, const ResumePoint& point) {
+  ar(const_cast<ResumePoint&>(point));
+}
+
+void load_resume_point(core::InArchive& ar, ResumePoint& point) {
+  ar(point);
+}
+
+}  // namespace mcdyna::solver

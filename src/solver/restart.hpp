@@ -1,0 +1,21 @@
+#pragma once
+/// Restart dumps of the solver state (*DATABASE_BINARY_D3DUMP / RUNRSF, `--restart`): what changes
+/// during a run, bit for bit, so a run continued from a dump is identical to one that never
+/// stopped. What only the deck defines (curves, materials, parts, time controls, body loads) is
+/// not dumped: a restart compiles the same deck again and reads the dump over it (the dump
+/// carries the deck's fingerprint, cli/restart_dump.cpp).
+#include "core/binary_archive.hpp"
+#include "solver/driver.hpp"
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// Writes / reads the state's changing part.
+void save_state(core::OutArchive& ar, const State& state);
+void load_state(core::InArchive& ar, State& state);
+
+/// The time loop's own values at the top of a cycle (driver.hpp ResumePoint).
+void save_resume_point(core::OutArchive& ar, const ResumePoint& point);
+void load_resume_point(core::InArchive& ar, ResumePoint& point);
+
+}  // namespace mcdyna::solver

@@ -1,0 +1,257 @@
+// Restart dumps (*DATABASE_BINARY_D3DUMP / RUNRSF, the running restart file of an interrupted run,
+// `--restart` and r=): a run continued from a dump writes the same bits as one that never
+// stopped, whatever the thread count, and a dump that does not belong to the deck is refused
+// with a message.
+#include <sstream>
+
+#include "solver_support.hpp"
+
+namespace mcdyna::test {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// glstat prints the wall time per zone cycle, which no two runs share; everything else in it
+// is physics.
+std::string without_timing(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.find("time per zone cycle") == std::string::npos) out += line + "\n";
+  return out;
+}
+
+// Every output of `a` (VTK states and collection, ASCII histories, CSV) has a byte-identical
+// twin in `b`; d3hsp (a log with timings) and the dumps themselves (they carry wall times) aside.
+void check_same_outputs(const fs::path& a, const fs::path& b) {
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(a)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "d3hsp" || name.rfind("d3dump", 0) == 0 || name.rfind("runrsf", 0) == 0) continue;
+    REQUIRE_MESSAGE(fs::exists(b / name), name << " missing after the restart");
+    std::string ta = read_text(entry.path()), tb = read_text(b / name);
+    if (name == "glstat") {
+      ta = without_timing(ta);
+      tb = without_timing(tb);
+    }
+    CHECK_MESSAGE(ta == tb, name << " differs after the restart");
+    ++compared;
+  }
+  CHECK(compared >= 5);
+}
+
+// The committed FDS demo cut to `cycles` cycles with `extra` keywords before *PART: a rigid
+// screw driven by prescribed motion, penalty contact with friction, MC-SPG with bond failure
+// and kernel renewals, an FE ring, JC + Gruneisen.
+fs::path fds_deck(const TempDir& dir, int cycles, const std::string& extra) {
+  std::string deck = source_text("decks/fds/fds_h0.3.k");
+  deck = with(deck, "*CONTROL_TERMINATION\n1.2137E-03",
+              "*CONTROL_TERMINATION\n1.2137E-03" + fmt::format("{:10d}", cycles));
+  deck = with(deck, "*DATABASE_BINARY_D3PLOT\n1.2138E-05", "*DATABASE_BINARY_D3PLOT\n2.0E-06");
+  deck = with(deck, "\n*PART\n", "\n" + extra + "*PART\n");
+  return dir.write("fds.k", deck);
+}
+
+std::string run_args(const fs::path& deck, const fs::path& out, const std::string& more = "") {
+  return "run " + deck.string() + " --out " + out.string() + " -q " + more;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "restart: the FDS scene continued from a d3dump is bit for bit the run that never stopped") {
+  TempDir dir;
+  const fs::path deck = fds_deck(dir, 300, "*DATABASE_BINARY_D3DUMP\n       150\n");
+  const fs::path a = dir.path() / "a", b = dir.path() / "b";
+  const Run straight = run_mcdyna(run_args(deck, a, "--threads 2"));
+  REQUIRE_MESSAGE(straight.exit_code == 0, straight.output);
+  REQUIRE(fs::exists(a / "d3dump01"));
+  CHECK_FALSE(fs::exists(a / "d3dump02"));  // none at the end of the run (cycle 300)
+
+  // Continue a copy from the first dump, on one thread.
+  fs::copy(a, b);
+  const Run resumed =
+      run_mcdyna(run_args(deck, b, "--threads 1 --restart " + (b / "d3dump01").string()));
+  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.output);
+  check_same_outputs(a, b);
+  CHECK(read_text(b / "d3hsp").find("Restart from") != std::string::npos);
+  // The contact and the particles were working when the dump was taken.
+  CHECK(read_text(a / "rcforc.csv").size() > 1000);
+}
+
+namespace {
+
+// A 6 x 1 x 1 MAT_003 bar, one end held by SPC, the other pulled by prescribed motion until it
+// necks and elements erode at FS = 0.05 (between cycles 7 and 13): erosion, constraints and nodal
+// motion in one deck. TSSFAC 0.02 gives it ~250 cycles.
+std::string eroding_bar(const std::string& extra) {
+  return "*KEYWORD\n*CONTROL_TERMINATION\n0.2\n*CONTROL_TIMESTEP\n0.0,0.02\n"
+         "*DATABASE_BINARY_D3PLOT\n0.02\n"
+         "*DATABASE_GLSTAT\n0.005\n*DATABASE_BNDOUT\n0.005\n*DATABASE_SPCFORC\n0.005\n"
+         "*DATABASE_MATSUM\n0.005\n" +
+         extra +
+         "*PART\nbar\n1,1,1\n*SECTION_SOLID\n1,1\n"
+         "*MAT_PLASTIC_KINEMATIC\n1,1.0,100.0,0.3,0.5,1.0,1.0\n0,0,0.05\n" +
+         box_mesh(6, 1, 1, 0.5) +
+         "*SET_NODE_LIST\n1\n1,8,15,22\n*SET_NODE_LIST\n2\n7,14,21,28\n"
+         "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,3,1.0\n"
+         "*DEFINE_CURVE\n3\n0,5\n1,5\n*END\n";
+}
+
+// The cycle and time of the last dump into `file`, from its d3hsp line.
+struct DumpLine {
+  long cycle = -1;
+  double time = -1.0;
+};
+DumpLine dump_line(const fs::path& out, const std::string& file) {
+  const std::string log = read_text(out / "d3hsp");
+  const std::string key = (out / file).string() + " written at t = ";
+  DumpLine d;
+  for (auto at = log.find(key); at != std::string::npos; at = log.find(key, at + 1)) {
+    d.time = std::stod(log.substr(at + key.size()));
+    d.cycle = std::stol(log.substr(log.find("cycle ", at) + 6));
+  }
+  return d;
+}
+
+// glstat.csv's eroded internal energy (column 9) at the last row at or before `time`, and at
+// the end.
+std::pair<double, double> eroded_energy(const fs::path& out, double time) {
+  std::istringstream in(read_text(out / "glstat.csv"));
+  std::string line;
+  std::getline(in, line);  // header
+  double before = 0.0, last = 0.0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');)
+      v.push_back(std::stod(f));
+    REQUIRE(v.size() > 8);
+    if (v[0] <= time) before = v[8];
+    last = v[8];
+  }
+  return {before, last};
+}
+
+// A 2 x 2 x 2 elastic block on its base, its top given a small velocity: rings and settles
+// (the hourglass viscosity takes the energy), stable for as long as one likes; 3 us a cycle.
+std::string ringing_block(long cycles) {
+  std::string top;
+  for (int id : {19, 20, 21, 22, 23, 24, 25, 26, 27})
+    top += fmt::format("{},0.0,0.0,0.01\n", id);
+  std::string base;
+  for (int id = 1; id <= 9; ++id)
+    base += fmt::format("{},0,1,1,1,0,0,0\n", id);
+  return fmt::format("*KEYWORD\n*CONTROL_TERMINATION\n1.0e9,{}\n", cycles) +
+         "*DATABASE_BINARY_D3PLOT\n5000.0\n*DATABASE_GLSTAT\n1000.0\n*DATABASE_SPCFORC\n1000.0\n"
+         "*PART\nblock\n1,1,1\n*SECTION_SOLID\n1,1\n*MAT_ELASTIC\n1,1.0,100.0,0.3\n" +
+         box_mesh(2, 2, 2, 1.0) + "*BOUNDARY_SPC_NODE\n" + base + "*INITIAL_VELOCITY_NODE\n" + top +
+         "*END\n";
+}
+
+}  // namespace
+
+TEST_CASE(
+    "restart: RUNRSF with NR 2 writes runrsf01 / runrsf02 in turn; an eroding bar continues "
+    "exactly") {
+  TempDir dir;
+  const fs::path deck =
+      dir.write("bar.k", eroding_bar("*DATABASE_BINARY_RUNRSF\n        40         2\n"
+                                     "*DATABASE_BINARY_D3DUMP\n         5\n"));
+  const fs::path a = dir.path() / "a", b = dir.path() / "b";
+  const Run straight = run_mcdyna(run_args(deck, a));
+  REQUIRE_MESSAGE(straight.exit_code == 0, straight.output);
+  REQUIRE(fs::exists(a / "runrsf01"));
+  REQUIRE(fs::exists(a / "runrsf02"));
+  CHECK_FALSE(fs::exists(a / "runrsf"));
+  const long c1 = dump_line(a, "runrsf01").cycle, c2 = dump_line(a, "runrsf02").cycle;
+  MESSAGE("runrsf01 at cycle ", c1, ", runrsf02 at cycle ", c2);
+  CHECK(c1 % 40 == 0);
+  CHECK(c2 % 40 == 0);
+  CHECK(std::abs(c1 - c2) == 40);  // the last two dumps, one in each file
+  // From d3dump01 (cycle 5): the elements erode after it, in the continued run.
+  const DumpLine first = dump_line(a, "d3dump01");
+  CHECK(first.cycle == 5);
+  const auto [before, end] = eroded_energy(a, first.time);
+  CHECK(before == 0.0);
+  CHECK(end > 0.0);
+  fs::copy(a, b);
+  const Run resumed = run_mcdyna(run_args(deck, b, "--restart " + (b / "d3dump01").string()));
+  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.output);
+  check_same_outputs(a, b);
+}
+
+TEST_CASE(
+    "restart: an interrupted run leaves runrsf and says how to continue; the continued run "
+    "ends as if never stopped") {
+  TempDir dir;
+  // ~1 s of cycles: the signal at 0.3 s lands mid-run.
+  const fs::path deck = dir.write("block.k", ringing_block(300000));
+  const fs::path a = dir.path() / "a", b = dir.path() / "b";
+  const Run stopped = run_mcdyna(run_args(deck, b), "timeout --preserve-status -s INT 0.3");
+  REQUIRE_MESSAGE(stopped.exit_code == 5, stopped.output);
+  REQUIRE(fs::exists(b / "runrsf"));
+  CHECK_MESSAGE(
+      stopped.output.find("continue with: mcdyna run " + deck.string() + " --out " + b.string() +
+                          " --restart " + (b / "runrsf").string()) != std::string::npos,
+      stopped.output);
+  const Run resumed = run_mcdyna(run_args(deck, b, "--restart " + (b / "runrsf").string()));
+  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.output);
+  const Run straight = run_mcdyna(run_args(deck, a));
+  REQUIRE_MESSAGE(straight.exit_code == 0, straight.output);
+  check_same_outputs(a, b);
+}
+
+TEST_CASE("restart: a dump of another deck, a truncated dump or another file are refused") {
+  TempDir dir;
+  const fs::path deck = dir.write("bar.k", eroding_bar("*DATABASE_BINARY_D3DUMP\n        40\n"));
+  const fs::path out = dir.path() / "out";
+  REQUIRE(run_mcdyna(run_args(deck, out)).exit_code == 0);
+  REQUIRE(fs::exists(out / "d3dump01"));
+
+  // The same deck with another end time: the fingerprint differs.
+  const fs::path other = dir.write(
+      "other.k", with(read_text(deck), "*CONTROL_TERMINATION\n0.2", "*CONTROL_TERMINATION\n0.3"));
+  Run r =
+      run_mcdyna(run_args(other, dir.path() / "o1", "--restart " + (out / "d3dump01").string()));
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(r.output.find("written from another deck") != std::string::npos, r.output);
+  // Other physics options than the run that wrote it.
+  r = run_mcdyna(run_args(deck, dir.path() / "o2",
+                          "--spg-stabilization none --restart " + (out / "d3dump01").string()));
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("other --spg-* options") != std::string::npos);
+
+  // Cut in half.
+  const std::string bytes = read_text(out / "d3dump01");
+  dir.write("half", bytes.substr(0, bytes.size() / 2));
+  r = run_mcdyna(run_args(deck, dir.path() / "o3", "--restart " + (dir.path() / "half").string()));
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(r.output.find("ends early (truncated file?)") != std::string::npos, r.output);
+  // Not a dump at all.
+  r = run_mcdyna(run_args(deck, dir.path() / "o4", "--restart " + deck.string()));
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("not an mcdyna restart dump") != std::string::npos);
+  // Missing; and LS-DYNA's r= without i=.
+  r = run_mcdyna(run_args(deck, dir.path() / "o5", "--restart " + (dir.path() / "none").string()));
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("cannot read the restart dump") != std::string::npos);
+  r = run_mcdyna("r=" + (out / "d3dump01").string());
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("r=DUMP needs i=DECK too") != std::string::npos);
+}
+
+TEST_CASE("restart: LS-DYNA's i= r= continues in the working directory") {
+  TempDir dir;
+  dir.write("bar.k", eroding_bar("*DATABASE_BINARY_D3DUMP\n        40\n"));
+  const std::string cd = "cd " + dir.path().string() + " &&";
+  REQUIRE(run_mcdyna("i=bar.k", cd).exit_code == 0);
+  const std::string glstat = read_text(dir.path() / "glstat.csv");
+  const Run r = run_mcdyna("i=bar.k r=d3dump01", cd);
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(read_text(dir.path() / "glstat.csv") == glstat);
+  CHECK(read_text(dir.path() / "d3hsp").find("Restart from d3dump01") != std::string::npos);
+}
+
+}  // namespace mcdyna::test
