@@ -312,6 +312,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(log, "\nTime-step history (every 5 % of ENDTIM)\n");
   }
   DumpSchedule dumps(d.built.model.outputs, dir);
+  log.flush();  // the model summary is there to read while the run goes on
 
   g_stop_signal = 0;
   auto old_int = std::signal(SIGINT, on_stop_signal);
@@ -344,6 +345,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
         write_dump(path, fingerprint, s, point, where);
         fmt::print(log, "restart dump {} written at t = {:.6e}, cycle {}\n", path.string(), s.time,
                    s.cycle);
+        log.flush();
         last_dump = path;
       } catch (const std::exception& e) {
         // A dump that cannot be written does not stop the run; it is reported at the end.

@@ -18,10 +18,12 @@ std::FILE* open_or_throw(const std::filesystem::path& p, const char* mode) {
 std::FILE* continue_file(const std::filesystem::path& p, std::uint64_t bytes) {
   std::error_code ec;
   const std::uintmax_t have = std::filesystem::file_size(p, ec);
-  if (ec || have < bytes)
-    throw std::runtime_error(fmt::format(
-        "cannot continue {}: it is {} than when the restart dump was written ({} bytes)",
-        p.string(), ec ? "missing, not longer" : "shorter", bytes));
+  if (ec) throw std::runtime_error(fmt::format("cannot continue {}: it is missing", p.string()));
+  if (have < bytes)
+    throw std::runtime_error(
+        fmt::format("cannot continue {}: it is shorter ({} bytes) than when the restart dump was "
+                    "written ({} bytes)",
+                    p.string(), have, bytes));
   std::filesystem::resize_file(p, bytes);
   return open_or_throw(p, "a");
 }
