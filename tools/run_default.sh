@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian machine, builds mcdyna (Release) and runs the default deck: the
 # flow-drill-screw scene at h = 0.3 mm (2,742 MC-SPG particles, FE ring, rigid screw, contact,
-# time scale 20; about 3 minutes on 2 cores), then prints the force on the screw against plunge.
+# time scale 20; about 7 minutes on 2 cores), then prints the force on the screw against plunge.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh

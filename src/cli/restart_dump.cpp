@@ -16,7 +16,7 @@ namespace {
 // The file opens with these bytes (no length before them, so any other file fails here first).
 constexpr std::array<char, 20> kMagic = {'m', 'c', 'd', 'y', 'n', 'a', ' ', 'r', 'e', 's',
                                          't', 'a', 'r', 't', ' ', 'd', 'u', 'm', 'p', '\n'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: the layout string after the version
 constexpr const char* kEnd = "end of dump";
 
 void fnv1a(std::uint64_t& h, std::string_view bytes) {
@@ -51,7 +51,8 @@ void write_dump(const std::filesystem::path& path, const std::string& fingerprin
     std::uint32_t version = kVersion;
     double time = state.time;
     long cycle = state.cycle;
-    ar(magic, version, print, time, cycle);
+    std::string layout = solver::dump_layout();
+    ar(magic, version, layout, print, time, cycle);
     solver::save_resume_point(ar, point);
     solver::save_state(ar, state);
     io::OutputsResume o = outputs;
@@ -81,9 +82,14 @@ LoadedDump read_dump(const std::filesystem::path& path, const std::string& finge
     if (version != kVersion)
       throw core::ArchiveError(
           fmt::format("dump format {} (this mcdyna reads {})", version, kVersion));
-    std::string print;
+    std::string layout, print;
     double time = 0.0;
     long cycle = 0;
+    ar(layout);
+    if (layout != solver::dump_layout())
+      throw core::ArchiveError(
+          "written by an mcdyna build whose solver state differs from this one's (restart with "
+          "the binary that wrote it)");
     ar(print, time, cycle);
     if (print != fingerprint)
       throw core::ArchiveError(

@@ -198,6 +198,29 @@ void fields(Ar& ar, State& s) {
      s.eroded_hourglass, s.initial_energy, s.initial_mass);
 }
 
+std::string dump_layout() {
+  const std::size_t sizes[] = {sizeof(Nodes),
+                               sizeof(Solids),
+                               sizeof(SolidBlock),
+                               sizeof(MaterialPoints),
+                               sizeof(RigidBody),
+                               sizeof(RigidMotion),
+                               sizeof(NodalConstraints),
+                               sizeof(NodalMotion),
+                               sizeof(RigidWallState),
+                               sizeof(State),
+                               sizeof(spg::Domain),
+                               sizeof(spg::SpgSettings),
+                               sizeof(contact::Interface),
+                               sizeof(contact::Pass),
+                               sizeof(contact::Surface),
+                               sizeof(ResumePoint)};
+  std::string out;
+  for (const std::size_t n : sizes)
+    out += std::to_string(n) + " ";
+  return out;
+}
+
 void save_state(core::OutArchive& ar, const State& state) {
   ar(const_cast<State&>(state));  // fields() lists members once for both directions; not written
 }

@@ -4,6 +4,8 @@
 /// stopped. What only the deck defines (curves, materials, parts, time controls, body loads) is
 /// not dumped: a restart compiles the same deck again and reads the dump over it (the dump
 /// carries the deck's fingerprint, cli/restart_dump.cpp).
+#include <string>
+
 #include "core/binary_archive.hpp"
 #include "solver/driver.hpp"
 #include "solver/state.hpp"
@@ -13,6 +15,10 @@ namespace mcdyna::solver {
 /// Writes / reads the state's changing part.
 void save_state(core::OutArchive& ar, const State& state);
 void load_state(core::InArchive& ar, State& state);
+
+/// The sizes of the dumped structs, as text: a dump written by a build whose structs differ
+/// (a member added or removed) is refused instead of being misread.
+std::string dump_layout();
 
 /// The time loop's own values at the top of a cycle (driver.hpp ResumePoint).
 void save_resume_point(core::OutArchive& ar, const ResumePoint& point);

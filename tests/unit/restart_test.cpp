@@ -203,7 +203,9 @@ TEST_CASE(
   check_same_outputs(a, b);
 }
 
-TEST_CASE("restart: a dump of another deck, a truncated dump or another file are refused") {
+TEST_CASE(
+    "restart: a dump of another deck, options, format or build, a truncated dump or another file "
+    "are refused") {
   TempDir dir;
   const fs::path deck = dir.write("bar.k", eroding_bar("*DATABASE_BINARY_D3DUMP\n        40\n"));
   const fs::path out = dir.path() / "out";
@@ -229,6 +231,25 @@ TEST_CASE("restart: a dump of another deck, a truncated dump or another file are
   r = run_mcdyna(run_args(deck, dir.path() / "o3", "--restart " + (dir.path() / "half").string()));
   CHECK(r.exit_code == 1);
   CHECK_MESSAGE(r.output.find("ends early (truncated file?)") != std::string::npos, r.output);
+  // Another format version, and another build's solver state (the dump opens with 20 bytes of
+  // magic, the 4-byte version, then the length and text of the struct-size list).
+  std::string other_version = bytes;
+  other_version[20] = 99;
+  dir.write("version", other_version);
+  r = run_mcdyna(
+      run_args(deck, dir.path() / "o6", "--restart " + (dir.path() / "version").string()));
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(r.output.find("dump format 99") != std::string::npos, r.output);
+  std::string other_build = bytes;
+  REQUIRE(other_build[32] >= '1');
+  REQUIRE(other_build[32] <= '9');
+  other_build[32] = other_build[32] == '9' ? '1' : '9';
+  dir.write("build", other_build);
+  r = run_mcdyna(run_args(deck, dir.path() / "o7", "--restart " + (dir.path() / "build").string()));
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(
+      r.output.find("written by an mcdyna build whose solver state differs") != std::string::npos,
+      r.output);
   // Not a dump at all.
   r = run_mcdyna(run_args(deck, dir.path() / "o4", "--restart " + deck.string()));
   CHECK(r.exit_code == 1);
