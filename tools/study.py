@@ -24,7 +24,8 @@ Families, methods and references (benchmarks.md, paper §4):
 Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
 OUT/taylor_bar.png, OUT/fds_force.png. --reuse skips runs whose d3hsp reports a normal
-termination. The quick study takes about 8 minutes on 2 cores; the full one several hours.
+termination and continues stopped runs from their running restart file (OUT/runs/NAME/runrsf).
+The quick study takes about 8 minutes on 2 cores; the full one several hours.
 """
 import argparse
 import csv
@@ -146,8 +147,14 @@ def run_case(case, out_dir, threads, reuse):
     cmd = [MCDYNA, "run", os.path.join(ROOT, deck), "--out", run_dir, "-q"] + case.flags
     if threads:
         cmd += ["--threads", str(threads)]
+    # A run that was stopped (signal, or killed after a *DATABASE_BINARY_RUNRSF dump) continues
+    # from its running restart file, bit for bit.
+    resume = os.path.join(run_dir, "runrsf")
+    if reuse and os.path.exists(resume):
+        cmd += ["--restart", resume]
     start = time.time()
-    print(f"  {case.family:<13} {case.method:<13} {case.resolution:<7}", end="", flush=True)
+    print(f"  {case.family:<13} {case.method:<13} {case.resolution:<7}"
+          + (" (continued)" if "--restart" in cmd else ""), end="", flush=True)
     done = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                           text=True)
     print(f" {time.time() - start:8.1f} s" + ("" if done.returncode == 0 else

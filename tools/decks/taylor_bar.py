@@ -8,6 +8,7 @@ Lagrangian kernel renewed every 15 steps) at the paper's three nodal distances (
 0.33 and 0.25 mm, 11,809 / 38,380 / 86,500 particles (paper: 11,809 / 38,325 / 86,621).
 
 usage: taylor_bar.py {coarse|medium|fine} OUT.k [--elform 1|2] [--spg] [--end 8.0e-5]
+                      [--restart-cycles 20000]
 """
 import argparse
 import math
@@ -121,6 +122,8 @@ def main():
     ap.add_argument("--end", type=float, default=8.0e-5)
     ap.add_argument("--cycles", type=int, default=0,
                     help="ENDCYC: stop after this many cycles (benchmarks; 0: at ENDTIM)")
+    ap.add_argument("--restart-cycles", type=int, default=20000,
+                    help="*DATABASE_BINARY_RUNRSF: running restart file every N cycles (0: none)")
     a = ap.parse_args()
     n, nr, nz = (SPG_RESOLUTIONS if a.spg else RESOLUTIONS)[a.resolution]
     name = f"taylor_spg_{a.resolution}" if a.spg else f"taylor_{a.resolution}"
@@ -153,6 +156,10 @@ def main():
     w(f"{a.end:10.3E}" + (f"{a.cycles:10d}" if a.cycles else ""))
     w("*CONTROL_TIMESTEP")
     w("       0.0       0.9")
+    if a.restart_cycles > 0:
+        # The fine bars run for hours: a stopped run continues from runrsf (--restart).
+        w("*DATABASE_BINARY_RUNRSF")
+        w(f"{a.restart_cycles:10d}")
     w("*DATABASE_BINARY_D3PLOT")
     w(f"{a.end / 20:10.3E}")
     w("*DATABASE_GLSTAT")
