@@ -375,6 +375,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
   }
   fmt::print(summary, "  {:<22}{:10.3f} s\n", "total", result.wall_seconds);
+  // A restarted run may have run its parts on different thread counts: its cost in core time.
+  if (dump)
+    fmt::print(summary, "  {:<22}{:10.3f} s (wall x threads over the run's parts)\n", "core time",
+               result.core_seconds);
   if (result.element_cycles > 0) {
     fmt::print(summary, "  {:.3f} million element-cycles/s\n",
                1e-6 * result.element_cycles / result.wall_seconds);

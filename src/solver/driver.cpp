@@ -4,6 +4,7 @@
 #include "solver/driver.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <chrono>
 #include <cmath>
@@ -200,6 +201,9 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     clock.charge(PhaseTimes::elements);
   }
   const double earlier_wall = resume ? resume->wall_seconds : 0.0;
+  const double earlier_core = resume ? resume->core_seconds : 0.0;
+  const int threads = omp_get_max_threads();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   const long first_cycle = s.cycle;
   const double first_step = resume ? resume->first_step : choose_step(s, pass, true);
   // DTMIN: stop when the step falls below DTMIN x the first step; without it, a step below
@@ -222,7 +226,8 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
                         pass.controlling_particle,
                         first_step,
                         result.phases,
-                        earlier_wall + std::chrono::duration<double>(Clock::now() - start).count(),
+                        earlier_wall + elapsed(),
+                        earlier_core + threads * elapsed(),
                         result.element_cycles,
                         result.particle_cycles};
       hooks.dump(s, point);
@@ -306,7 +311,8 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     result.phases.seconds[PhaseTimes::contact] += c.seconds;
     result.phases.seconds[PhaseTimes::elements] -= c.seconds;
   }
-  result.wall_seconds = earlier_wall + std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall_seconds = earlier_wall + elapsed();
+  result.core_seconds = earlier_core + threads * elapsed();
   return result;
 }
 

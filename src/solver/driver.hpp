@@ -46,6 +46,9 @@ struct RunResult {
   std::string message;  ///< diagnostic for the abnormal stops (names element/node, part, time)
   PhaseTimes phases;
   double wall_seconds = 0.0;
+  /// Wall time x OpenMP threads, summed over the parts of a restarted run (which may have run on
+  /// different thread counts); wall x threads for a run in one piece.
+  double core_seconds = 0.0;
   long element_cycles = 0;   ///< deformable element updates performed
   long particle_cycles = 0;  ///< SPG particle updates performed
 };
@@ -60,6 +63,7 @@ struct ResumePoint {
   double first_step = 0.0;  ///< the run's first step (DTMIN is relative to it)
   PhaseTimes phases;        ///< accumulated so far, as the loop keeps them (SPG not split out)
   double wall_seconds = 0.0;
+  double core_seconds = 0.0;  ///< wall x threads, summed over the run's parts
   long element_cycles = 0, particle_cycles = 0;
 };
 

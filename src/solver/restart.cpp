@@ -23,7 +23,7 @@ static_assert(sizeof(spg::SpgSettings) == 88, "SpgSettings changed: update resta
 static_assert(sizeof(contact::Interface) == 360, "contact::Interface changed: update restart.cpp");
 static_assert(sizeof(contact::Pass) == 328, "contact::Pass changed: update restart.cpp");
 static_assert(sizeof(contact::Surface) == 144, "contact::Surface changed: update restart.cpp");
-static_assert(sizeof(ResumePoint) == 152, "ResumePoint changed: update restart.cpp");
+static_assert(sizeof(ResumePoint) == 160, "ResumePoint changed: update restart.cpp");
 #endif
 
 template <class Ar>
@@ -98,7 +98,7 @@ void fields(Ar& ar, PhaseTimes& p) {
 template <class Ar>
 void fields(Ar& ar, ResumePoint& r) {
   ar(r.critical_step, r.controlling_element, r.controlling_domain, r.controlling_particle,
-     r.first_step, r.phases, r.wall_seconds, r.element_cycles, r.particle_cycles);
+     r.first_step, r.phases, r.wall_seconds, r.core_seconds, r.element_cycles, r.particle_cycles);
 }
 
 namespace spg {
