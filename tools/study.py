@@ -123,10 +123,14 @@ def run_facts(run_dir):
     # particles).
     solids = sum(int(m.group(1)) for m in
                  re.finditer(r"^\s+\d+\s+(\d+)\s+\d+ solid ELFORM", text, re.M))
+    wall, threads = number(r"^  total\s+([0-9.]+) s"), number(r"^threads: (\d+)", int)
     return dict(
         cycles=number(r"normal termination .* cycle (\d+)", int),
-        wall=number(r"^  total\s+([0-9.]+) s"),
-        threads=number(r"^threads: (\d+)", int),
+        wall=wall,
+        threads=threads,
+        # A run continued from a restart dump may have run its parts on other thread counts:
+        # d3hsp then gives its core time (wall x threads over the parts).
+        core=number(r"^  core time\s+([0-9.]+) s", default=wall * threads),
         particles=number(r"^  SPG particles\s+(\d+)", int),
         solids=solids,
     )
@@ -299,7 +303,7 @@ def main():
         rows.append(dict(family=case.family, method=case.method, resolution=case.resolution,
                          particles=facts["particles"], elements=facts["solids"],
                          cycles=facts["cycles"], threads=facts["threads"],
-                         wall_s=facts["wall"],
+                         wall_s=facts["wall"], core_s=facts["core"],
                          steps_per_s=work * facts["cycles"] / facts["wall"] if facts["wall"] else 0,
                          error=error, **figures))
     columns = []
