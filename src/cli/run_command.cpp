@@ -342,9 +342,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     const io::OutputsResume where = outputs.resume_point();
     for (const std::filesystem::path& path : dumps.take()) {
       try {
+        const auto begin = std::chrono::steady_clock::now();
         write_dump(path, fingerprint, s, point, where);
-        fmt::print(log, "restart dump {} written at t = {:.6e}, cycle {}\n", path.string(), s.time,
-                   s.cycle);
+        fmt::print(log, "restart dump {} written at t = {:.6e}, cycle {} ({:.1f} MB in {:.3f} s)\n",
+                   path.string(), s.time, s.cycle,
+                   1e-6 * static_cast<double>(std::filesystem::file_size(path)),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
         log.flush();
         last_dump = path;
       } catch (const std::exception& e) {
