@@ -64,10 +64,10 @@ struct Run {
   std::string output;  ///< stdout and stderr
 };
 
-/// Runs `mcdyna ARGS` (optionally with a command prefix such as "cd DIR &&" or "timeout ...").
-inline Run run_mcdyna(const std::string& args, const std::string& prefix = "") {
+/// Runs a shell command line, stdout and stderr captured.
+inline Run run_shell(const std::string& command) {
   Run r;
-  const std::string cmd = prefix + " " + std::string(MCDYNA_BINARY) + " " + args + " 2>&1";
+  const std::string cmd = command + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   REQUIRE(pipe != nullptr);
   std::array<char, 4096> buf{};
@@ -77,6 +77,11 @@ inline Run run_mcdyna(const std::string& args, const std::string& prefix = "") {
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return r;
+}
+
+/// Runs `mcdyna ARGS` (optionally with a command prefix such as "cd DIR &&" or "timeout ...").
+inline Run run_mcdyna(const std::string& args, const std::string& prefix = "") {
+  return run_shell(prefix + " " + std::string(MCDYNA_BINARY) + " " + args);
 }
 
 /// Everything reading a deck produces.
