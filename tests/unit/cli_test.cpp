@@ -24,7 +24,7 @@ TEST_CASE("check: a clean deck exits 0 with summary and migration report") {
   CHECK(r.output.find("ready to run") != std::string::npos);
 }
 
-TEST_CASE("deck errors exit 1; usage errors exit 2") {
+TEST_CASE("deck errors exit 1, usage errors exit 2") {
   mcdyna::test::TempDir d;
   const auto bad = d.write("bad.k", "*NODE\n       1   garbage\n");
   const Run r = run_mcdyna("check " + bad.string());
@@ -38,7 +38,7 @@ TEST_CASE("deck errors exit 1; usage errors exit 2") {
   CHECK(run_mcdyna("check /nonexistent/deck.k").exit_code == 1);
 }
 
-TEST_CASE("unsupported physics fails check unless --allow-unsupported; no-effect keywords pass") {
+TEST_CASE("unsupported physics fails check unless --allow-unsupported, no-effect keywords pass") {
   mcdyna::test::TempDir d;
   const std::string body = "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
   const auto deck = d.write("deck.k",

@@ -25,7 +25,7 @@ std::vector<fs::path> corpus_files() {
 
 }  // namespace
 
-TEST_CASE("corpus: every public deck is read, built and checked; every keyword is classified") {
+TEST_CASE("corpus: every public deck is read, built and checked, every keyword is classified") {
   const auto files = corpus_files();
   REQUIRE(files.size() == 79);
   std::map<deck::Support, std::size_t> distinct_by_class;

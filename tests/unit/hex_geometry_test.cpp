@@ -88,7 +88,7 @@ std::string skewed_element_deck(const std::string& velocity_cards) {
 
 TEST_CASE(
     "one-point hex: rigid motion of a distorted element gives no strain rate and no "
-    "hourglass force; an hourglass mode is resisted") {
+    "hourglass force, an hourglass mode is resisted") {
   TempDir dir;
   // Translation + spin about an axis through (0.5, 0.5, 0.5): the hourglass rates vanish, since
   // gamma is orthogonal to every linear field. (The stress does not stay zero: a constant

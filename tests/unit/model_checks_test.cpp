@@ -54,7 +54,7 @@ TEST_CASE("physical sanity: density, moduli, TM > TR, EPSO with C, DX >= 1, EOS 
   CHECK(l->has_message("*MAT_JOHNSON_COOK solids need an equation of state"));
 }
 
-TEST_CASE("inverted and collapsed hexahedra are reported; a degenerate tetrahedron is accepted") {
+TEST_CASE("inverted and collapsed hexahedra are reported, a degenerate tetrahedron is accepted") {
   auto l = load_text(std::string(kCube) +
                          "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SOLID\n1,1\n*PART\np\n1,1,1\n"
                          "*ELEMENT_SOLID\n"

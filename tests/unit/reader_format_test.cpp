@@ -71,7 +71,7 @@ TEST_CASE("*DEFINE_CURVE: title option, 20-wide points, zero scale factors mean 
   CHECK(c.points[1].second == -3.25);
 }
 
-TEST_CASE("free format with commas; empty slots take defaults") {
+TEST_CASE("free format with commas, empty slots take defaults") {
   auto l = load_text(
       "*SECTION_SOLID_SPG_TITLE\n"
       "plate, with a comma in the title\n"
@@ -109,7 +109,7 @@ TEST_CASE("*SECTION_SPG alias and KERNEL-dependent defaults with card 3 omitted"
   CHECK(s.spg.failure_strain == 1.0e11);
 }
 
-TEST_CASE("LONG=Y widens fields to 20 columns; '-' suffix restores standard format") {
+TEST_CASE("LONG=Y widens fields to 20 columns, '-' suffix restores standard format") {
   auto l = load_text(
       "*KEYWORD LONG=Y\n"
       "*NODE\n"
@@ -143,7 +143,7 @@ TEST_CASE("per-keyword '+' long format and I10=Y") {
   CHECK(i10->model().solids[0].nodes[7] == 8);
 }
 
-TEST_CASE("_ID card before card 1 for contacts; optional cards A-D may be omitted") {
+TEST_CASE("_ID card before card 1 for contacts, optional cards A-D may be omitted") {
   auto l = load_text(
       "*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID\n"
       "        17screw on plate\n"
@@ -185,7 +185,7 @@ TEST_CASE("*COMMENT lines, text after *END and CRLF line ends are ignored") {
   CHECK(l->model().nodes.empty());
 }
 
-TEST_CASE("bad field: error names file, line, columns, keyword, card and field; echoes the line") {
+TEST_CASE("bad field: error names file, line, columns, keyword, card and field, echoes the line") {
   auto l = load_text(
       "*MAT_JOHNSON_COOK\n"
       "         1    2.7E-9   26000.0\n"
@@ -197,7 +197,7 @@ TEST_CASE("bad field: error names file, line, columns, keyword, card and field; 
   CHECK(text.find("     324.0     114.0") != std::string::npos);
 }
 
-TEST_CASE("required fields, constraints and tabs are reported; values still read") {
+TEST_CASE("required fields, constraints and tabs are reported, values still read") {
   auto l = load_text(
       "*MAT_ELASTIC\n"
       "         1      -7.8     200.0\n"

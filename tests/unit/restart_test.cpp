@@ -153,7 +153,7 @@ std::string ringing_block(long cycles) {
 }  // namespace
 
 TEST_CASE(
-    "restart: RUNRSF with NR 2 writes runrsf01 / runrsf02 in turn; an eroding bar continues "
+    "restart: RUNRSF with NR 2 writes runrsf01 / runrsf02 in turn, an eroding bar continues "
     "exactly") {
   TempDir dir;
   const fs::path deck =
@@ -183,7 +183,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "restart: an interrupted run leaves runrsf and says how to continue; the continued run "
+    "restart: an interrupted run leaves runrsf and says how to continue, the continued run "
     "ends as if never stopped") {
   TempDir dir;
   // ~1 s of cycles (10 s under the sanitizers): the signal, sent once the time loop has

@@ -412,7 +412,7 @@ TEST_CASE("rcforc: a slave and a master line per contact and output time, equal 
   check_ascii_matches_csv(out, "glstat", 1e-4, 13);
 }
 
-TEST_CASE("eroded elements vanish from the forces and the d3plot states; their mass stays") {
+TEST_CASE("eroded elements vanish from the forces and the d3plot states, their mass stays") {
   TempDir dir;
   // A 6 x 1 x 1 bar of MAT_003 with FS = 0.05, its far end pulled at 5 length/time: it necks
   // and fails.

@@ -118,7 +118,7 @@ TEST_CASE("rigid wall with Coulomb friction takes tangential momentum mu times t
   CHECK(ratio > 0.99 * mu);
 }
 
-TEST_CASE("finite rigid wall only stops nodes over its extent; moving wall exchanges momentum") {
+TEST_CASE("finite rigid wall only stops nodes over its extent, moving wall exchanges momentum") {
   TempDir dir;
   // A 0.3 x 0.3 finite wall far from the cube's footprint (x, y in [0, 1]): the cube passes.
   Simulation miss =

@@ -90,7 +90,7 @@ TEST_CASE("MAT_003: reverse yield at -q_max (isotropic) and at q_max - 2 sy (kin
   CHECK(rev_kin == doctest::Approx(q_kin - 2.0 * 200.0).epsilon(1e-3));
 }
 
-TEST_CASE("MAT_003: Cowper-Symonds scales the yield stress; FS erodes") {
+TEST_CASE("MAT_003: Cowper-Symonds scales the yield stress, FS erodes") {
   Material m = kinematic_material(1.0);
   m.hardening_modulus = 0.0;
   m.cowper_symonds_c = 40.0;
@@ -110,7 +110,7 @@ TEST_CASE("MAT_003: Cowper-Symonds scales the yield stress; FS erodes") {
   CHECK(p.ep < 0.02 + equivalent(1.0e-3));  // failed on the increment that crossed FS
 }
 
-TEST_CASE("MAT_024: the flow stress follows the hardening curve; FAIL erodes") {
+TEST_CASE("MAT_024: the flow stress follows the hardening curve, FAIL erodes") {
   Material m;
   m.model = MaterialModel::piecewise_linear;
   m.shear_modulus = 26.0e3;
@@ -132,7 +132,7 @@ TEST_CASE("MAT_024: the flow stress follows the hardening curve; FAIL erodes") {
   CHECK(p.ep >= 0.15);
 }
 
-TEST_CASE("MAT_015 Johnson-Cook: flow stress with rate and thermal factors; damage sum") {
+TEST_CASE("MAT_015 Johnson-Cook: flow stress with rate and thermal factors, damage sum") {
   Material m;
   m.model = MaterialModel::johnson_cook;
   m.shear_modulus = 26.0e3;  // MPa
