@@ -55,8 +55,7 @@ void write_dump(const std::filesystem::path& path, const std::string& fingerprin
     ar(magic, version, layout, print, time, cycle);
     solver::save_resume_point(ar, point);
     solver::save_state(ar, state);
-    io::OutputsResume o = outputs;
-    ar(o, end);
+    ar(const_cast<io::OutputsResume&>(outputs), end);  // one member list for both directions
     out.close();
     if (!out) throw std::runtime_error(fmt::format("cannot write {} (disk full?)", part.string()));
   }

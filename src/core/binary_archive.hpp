@@ -28,6 +28,18 @@ class ArchiveError : public std::runtime_error {
 template <typename T>
 inline constexpr bool kPlainValue = std::is_arithmetic_v<T> || std::is_enum_v<T>;
 
+// Fixed-size aggregates are their members in order, in either direction (found by
+// argument-dependent lookup through the archive, which lives here).
+template <class Ar, typename T, std::size_t N>
+void fields(Ar& ar, std::array<T, N>& a) {
+  for (T& x : a)
+    ar(x);
+}
+template <class Ar, typename A, typename B>
+void fields(Ar& ar, std::pair<A, B>& p) {
+  ar(p.first, p.second);
+}
+
 class OutArchive {
  public:
   explicit OutArchive(std::ostream& out) : out_(out) {}
@@ -66,16 +78,6 @@ class OutArchive {
       for (T& x : v)
         put(x);
     }
-  }
-  template <typename T, std::size_t N>
-  void put(std::array<T, N>& a) {
-    for (T& x : a)
-      put(x);
-  }
-  template <typename A, typename B>
-  void put(std::pair<A, B>& p) {
-    put(p.first);
-    put(p.second);
   }
   template <typename S, int R, int C, int O, int MR, int MC>
   void put(Eigen::Matrix<S, R, C, O, MR, MC>& m) {
@@ -132,16 +134,6 @@ class InArchive {
       for (T& x : v)
         get(x);
     }
-  }
-  template <typename T, std::size_t N>
-  void get(std::array<T, N>& a) {
-    for (T& x : a)
-      get(x);
-  }
-  template <typename A, typename B>
-  void get(std::pair<A, B>& p) {
-    get(p.first);
-    get(p.second);
   }
   template <typename S, int R, int C, int O, int MR, int MC>
   void get(Eigen::Matrix<S, R, C, O, MR, MC>& m) {

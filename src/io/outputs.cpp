@@ -86,7 +86,8 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     history_schedules_.push_back(schedule(m, s, r.interval, r.interval_curve));
     if (resume) {
       const std::size_t k = histories_.size();
-      if (k >= resume->history_times.size() || resume->histories[k].name != name)
+      if (k >= resume->histories.size() || k >= resume->history_times.size() ||
+          resume->histories[k].name != name)
         throw std::runtime_error("the restart dump's histories are not this deck's");
       h->continue_records(resume->histories[k]);
       history_schedules_.back().restore(resume->history_times[k]);

@@ -220,14 +220,15 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     if (hooks.dump && hooks.dump_due && !at_end && (s.cycle != first_cycle || interrupted) &&
         hooks.dump_due(s, interrupted)) {
       clock.charge(PhaseTimes::other);
+      const double seconds = elapsed();
       ResumePoint point{pass.critical_step,
                         pass.controlling_element,
                         pass.controlling_domain,
                         pass.controlling_particle,
                         first_step,
                         result.phases,
-                        earlier_wall + elapsed(),
-                        earlier_core + threads * elapsed(),
+                        earlier_wall + seconds,
+                        earlier_core + threads * seconds,
                         result.element_cycles,
                         result.particle_cycles};
       hooks.dump(s, point);
@@ -311,8 +312,9 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     result.phases.seconds[PhaseTimes::contact] += c.seconds;
     result.phases.seconds[PhaseTimes::elements] -= c.seconds;
   }
-  result.wall_seconds = earlier_wall + elapsed();
-  result.core_seconds = earlier_core + threads * elapsed();
+  const double seconds = elapsed();
+  result.wall_seconds = earlier_wall + seconds;
+  result.core_seconds = earlier_core + threads * seconds;
   return result;
 }
 

@@ -5,25 +5,33 @@
 // continued from a dump writes the same bits as one that never stopped.
 #include "solver/restart.hpp"
 
+#include <array>
+
 namespace mcdyna::solver {
 
+// The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
+constexpr std::array<std::size_t, 16> kDumpedSizes = {sizeof(Nodes),
+                                                      sizeof(Solids),
+                                                      sizeof(SolidBlock),
+                                                      sizeof(MaterialPoints),
+                                                      sizeof(RigidBody),
+                                                      sizeof(RigidMotion),
+                                                      sizeof(NodalConstraints),
+                                                      sizeof(NodalMotion),
+                                                      sizeof(RigidWallState),
+                                                      sizeof(State),
+                                                      sizeof(spg::Domain),
+                                                      sizeof(spg::SpgSettings),
+                                                      sizeof(contact::Interface),
+                                                      sizeof(contact::Pass),
+                                                      sizeof(contact::Surface),
+                                                      sizeof(ResumePoint)};
+
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(sizeof(Nodes) == 248, "Nodes changed: update its fields() in restart.cpp");
-static_assert(sizeof(Solids) == 512, "Solids changed: update fields() in restart.cpp");
-static_assert(sizeof(SolidBlock) == 64, "SolidBlock changed: update fields() in restart.cpp");
-static_assert(sizeof(MaterialPoints) == 80, "MaterialPoints changed: update restart.cpp");
-static_assert(sizeof(RigidBody) == 528, "RigidBody changed: update fields() in restart.cpp");
-static_assert(sizeof(RigidMotion) == 72, "RigidMotion changed: update fields() in restart.cpp");
-static_assert(sizeof(NodalConstraints) == 112, "NodalConstraints changed: update restart.cpp");
-static_assert(sizeof(NodalMotion) == 136, "NodalMotion changed: update fields() in restart.cpp");
-static_assert(sizeof(RigidWallState) == 240, "RigidWallState changed: update restart.cpp");
-static_assert(sizeof(State) == 1384, "State changed: update fields() in restart.cpp");
-static_assert(sizeof(spg::Domain) == 1416, "spg::Domain changed: update fields() in restart.cpp");
-static_assert(sizeof(spg::SpgSettings) == 88, "SpgSettings changed: update restart.cpp");
-static_assert(sizeof(contact::Interface) == 360, "contact::Interface changed: update restart.cpp");
-static_assert(sizeof(contact::Pass) == 328, "contact::Pass changed: update restart.cpp");
-static_assert(sizeof(contact::Surface) == 144, "contact::Surface changed: update restart.cpp");
-static_assert(sizeof(ResumePoint) == 160, "ResumePoint changed: update restart.cpp");
+static_assert(kDumpedSizes == std::array<std::size_t, 16>{248, 512, 64, 80, 528, 72, 112, 136, 240,
+                                                          1384, 1416, 88, 360, 328, 144, 160},
+              "a struct of kDumpedSizes changed (same order): list its new member in fields() "
+              "below, or note it among the deck data left out");
 #endif
 
 template <class Ar>
@@ -199,24 +207,8 @@ void fields(Ar& ar, State& s) {
 }
 
 std::string dump_layout() {
-  const std::size_t sizes[] = {sizeof(Nodes),
-                               sizeof(Solids),
-                               sizeof(SolidBlock),
-                               sizeof(MaterialPoints),
-                               sizeof(RigidBody),
-                               sizeof(RigidMotion),
-                               sizeof(NodalConstraints),
-                               sizeof(NodalMotion),
-                               sizeof(RigidWallState),
-                               sizeof(State),
-                               sizeof(spg::Domain),
-                               sizeof(spg::SpgSettings),
-                               sizeof(contact::Interface),
-                               sizeof(contact::Pass),
-                               sizeof(contact::Surface),
-                               sizeof(ResumePoint)};
   std::string out;
-  for (const std::size_t n : sizes)
+  for (const std::size_t n : kDumpedSizes)
     out += std::to_string(n) + " ";
   return out;
 }

@@ -82,21 +82,14 @@ TEST_CASE(
 
 namespace {
 
-// A 6 x 1 x 1 MAT_003 bar, one end held by SPC, the other pulled by prescribed motion until it
-// necks and elements erode at FS = 0.05 (between cycles 7 and 13): erosion, constraints and nodal
-// motion in one deck. TSSFAC 0.02 gives it ~250 cycles.
-std::string eroding_bar(const std::string& extra) {
-  return "*KEYWORD\n*CONTROL_TERMINATION\n0.2\n*CONTROL_TIMESTEP\n0.0,0.02\n"
-         "*DATABASE_BINARY_D3PLOT\n0.02\n"
-         "*DATABASE_GLSTAT\n0.005\n*DATABASE_BNDOUT\n0.005\n*DATABASE_SPCFORC\n0.005\n"
-         "*DATABASE_MATSUM\n0.005\n" +
-         extra +
-         "*PART\nbar\n1,1,1\n*SECTION_SOLID\n1,1\n"
-         "*MAT_PLASTIC_KINEMATIC\n1,1.0,100.0,0.3,0.5,1.0,1.0\n0,0,0.05\n" +
-         box_mesh(6, 1, 1, 0.5) +
-         "*SET_NODE_LIST\n1\n1,8,15,22\n*SET_NODE_LIST\n2\n7,14,21,28\n"
-         "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,3,1.0\n"
-         "*DEFINE_CURVE\n3\n0,5\n1,5\n*END\n";
+// The eroding bar (solver_support.hpp) with histories; its elements erode between cycles 7 and
+// 13: erosion, constraints and nodal motion in one deck. TSSFAC 0.02 gives it ~250 cycles.
+std::string eroding_bar_run(const std::string& extra) {
+  return eroding_bar(
+      "*CONTROL_TERMINATION\n0.2\n*CONTROL_TIMESTEP\n0.0,0.02\n*DATABASE_BINARY_D3PLOT\n0.02\n"
+      "*DATABASE_GLSTAT\n0.005\n*DATABASE_BNDOUT\n0.005\n*DATABASE_SPCFORC\n0.005\n"
+      "*DATABASE_MATSUM\n0.005\n" +
+      extra);
 }
 
 // The cycle and time of the last dump into `file`, from its d3hsp line.
@@ -157,8 +150,8 @@ TEST_CASE(
     "exactly") {
   TempDir dir;
   const fs::path deck =
-      dir.write("bar.k", eroding_bar("*DATABASE_BINARY_RUNRSF\n        40         2\n"
-                                     "*DATABASE_BINARY_D3DUMP\n         5\n"));
+      dir.write("bar.k", eroding_bar_run("*DATABASE_BINARY_RUNRSF\n        40         2\n"
+                                         "*DATABASE_BINARY_D3DUMP\n         5\n"));
   const fs::path a = dir.path() / "a", b = dir.path() / "b";
   const Run straight = run_mcdyna(run_args(deck, a));
   REQUIRE_MESSAGE(straight.exit_code == 0, straight.output);
@@ -213,7 +206,8 @@ TEST_CASE(
     "restart: a dump of another deck, options, format or build, a truncated dump or another file "
     "are refused") {
   TempDir dir;
-  const fs::path deck = dir.write("bar.k", eroding_bar("*DATABASE_BINARY_D3DUMP\n        40\n"));
+  const fs::path deck =
+      dir.write("bar.k", eroding_bar_run("*DATABASE_BINARY_D3DUMP\n        40\n"));
   const fs::path out = dir.path() / "out";
   REQUIRE(run_mcdyna(run_args(deck, out)).exit_code == 0);
   REQUIRE(fs::exists(out / "d3dump01"));
@@ -271,7 +265,7 @@ TEST_CASE(
 
 TEST_CASE("restart: LS-DYNA's i= r= continues in the working directory") {
   TempDir dir;
-  dir.write("bar.k", eroding_bar("*DATABASE_BINARY_D3DUMP\n        40\n"));
+  dir.write("bar.k", eroding_bar_run("*DATABASE_BINARY_D3DUMP\n        40\n"));
   const std::string cd = "cd " + dir.path().string() + " &&";
   REQUIRE(run_mcdyna("i=bar.k", cd).exit_code == 0);
   const std::string glstat = read_text(dir.path() / "glstat.csv");

@@ -416,14 +416,8 @@ TEST_CASE("eroded elements vanish from the forces and the d3plot states, their m
   TempDir dir;
   // A 6 x 1 x 1 bar of MAT_003 with FS = 0.05, its far end pulled at 5 length/time: it necks
   // and fails.
-  std::string deck =
-      "*KEYWORD\n*CONTROL_TERMINATION\n0.2\n*DATABASE_BINARY_D3PLOT\n0.02\n"
-      "*PART\nbar\n1,1,1\n*SECTION_SOLID\n1,1\n"
-      "*MAT_PLASTIC_KINEMATIC\n1,1.0,100.0,0.3,0.5,1.0,1.0\n0,0,0.05\n" +
-      box_mesh(6, 1, 1, 0.5) +
-      "*SET_NODE_LIST\n1\n1,8,15,22\n*SET_NODE_LIST\n2\n7,14,21,28\n"
-      "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,3,1.0\n"
-      "*DEFINE_CURVE\n3\n0,5\n1,5\n*END\n";
+  const std::string deck =
+      eroding_bar("*CONTROL_TERMINATION\n0.2\n*DATABASE_BINARY_D3PLOT\n0.02\n");
   Simulation sim = prepare(dir, deck);
   double mass0 = 0.0;
   for (double m : sim.state->nodes.mass)

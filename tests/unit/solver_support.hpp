@@ -37,6 +37,19 @@ inline std::string box_mesh(int nx, int ny, int nz, double h, int first_node = 1
   return s;
 }
 
+/// A 6 x 1 x 1 MAT_003 bar (FS = 0.05), one end held by SPC, the other pulled at 5 length/time
+/// by prescribed motion until it necks and its elements erode. `controls`: the control and
+/// database keywords after *KEYWORD.
+inline std::string eroding_bar(const std::string& controls) {
+  return "*KEYWORD\n" + controls +
+         "*PART\nbar\n1,1,1\n*SECTION_SOLID\n1,1\n"
+         "*MAT_PLASTIC_KINEMATIC\n1,1.0,100.0,0.3,0.5,1.0,1.0\n0,0,0.05\n" +
+         box_mesh(6, 1, 1, 0.5) +
+         "*SET_NODE_LIST\n1\n1,8,15,22\n*SET_NODE_LIST\n2\n7,14,21,28\n"
+         "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,3,1.0\n"
+         "*DEFINE_CURVE\n3\n0,5\n1,5\n*END\n";
+}
+
 struct Simulation {
   std::unique_ptr<Loaded> loaded;
   std::unique_ptr<solver::State> state;
