@@ -17,9 +17,9 @@ Families, methods and references (benchmarks.md, paper §4):
                 error: RMS difference of the axial force on the screw against the reference run,
                 aligned on plunge, over the reference's peak (`mcdyna compare`); the reference
                 is the finest MC-SPG run of the study, or decks/fds/reference_force_h0.15.csv
-                when the study has no finer run than h 0.3 (the corrected scene's h 0.15 run of
-                2026-11-27, decks/fds/fds_h0.15.k on 2 threads, plunge 0 to 6.65 mm: the whole
-                schedule; manual/verification.md)
+                when the study has no finer run than h 0.3 (decks/fds/fds_h0.15.k run through the
+                whole schedule, stage 2 of 4.4 mm, plunge 0 to 8.95 mm, 2026-11-27;
+                manual/verification.md)
 
 Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
