@@ -20,6 +20,9 @@ ctest --test-dir build --output-on-failure -j "$jobs"
 echo "== study smoke: tools/study.py --quick --only elastic_wave (the six quick elastic-wave runs)"
 /usr/bin/python3 tools/study.py --quick --only elastic_wave --threads "$jobs" --out build/study_smoke
 
+echo "== FDS thread measure on synthetic walls: tools/verify/fds_unwrap.py --check"
+/usr/bin/python3 tools/verify/fds_unwrap.py --check
+
 echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMCDYNA_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
