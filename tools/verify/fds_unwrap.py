@@ -15,7 +15,7 @@ cells: about 0.43 mm for a fully formed M5 thread, with offset 0 (wall out at th
 same fit along the opposite-handed helix, which no thread follows, gives the noise floor of
 the measurement (an unthreaded, ragged wall gives about that much along either helix).
 
-usage: fds_unwrap.py RUN_DIR OUT.png [--state N (default: last)] [--z-range -3.0 1.0]
+usage: fds_unwrap.py RUN_DIR OUT.png [--state N (default: last)] [--z-range -3.0 1.5]
                      [--title TEXT]
        fds_unwrap.py --check   (the fit on synthetic walls with known answers; tools/test.sh)
 """
@@ -81,7 +81,7 @@ def main():
     ap.add_argument("run")
     ap.add_argument("png")
     ap.add_argument("--state", type=int, default=-1)
-    ap.add_argument("--z-range", type=float, nargs=2, default=(-3.0, 1.0))
+    ap.add_argument("--z-range", type=float, nargs=2, default=(-3.0, 1.5))
     ap.add_argument("--title", default="")
     a = ap.parse_args()
     time, name = states(a.run)[a.state]
