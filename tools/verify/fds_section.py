@@ -41,6 +41,16 @@ def point_fields(grid):
     return part, strain
 
 
+def load_state(run, state):
+    """(time, file name, point coordinates, part id and plastic strain per point) of a run's state
+    (index into d3plot.pvd, -1 the last)."""
+    time, name = states(run)[state]
+    grid = read_state(run, name)
+    x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
+    part, strain = point_fields(grid)
+    return time, name, x, part, strain
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("run")
@@ -49,10 +59,7 @@ def main():
     ap.add_argument("--half-width", type=float, default=0.1)
     ap.add_argument("--title", default="")
     a = ap.parse_args()
-    time, name = states(a.run)[a.state]
-    grid = read_state(a.run, name)
-    x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
-    part, strain = point_fields(grid)
+    time, name, x, part, strain = load_state(a.run, a.state)
     slab = np.abs(x[:, 1]) < a.half_width
     plate = slab & (part != SCREW_PART) & (part != 0)
     screw = slab & (part == SCREW_PART)

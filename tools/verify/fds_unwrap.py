@@ -23,10 +23,7 @@ import argparse
 import sys
 
 import numpy as np
-from vtk.util.numpy_support import vtk_to_numpy
-
-from d3plot import read_state, states
-from fds_section import SCREW_PART, point_fields
+from fds_section import SCREW_PART, load_state
 
 PITCH = 0.7  # mm, the M5 thread of tools/decks/fds.py (its lead: single start)
 MINOR, MAJOR = 2.067, 2.5  # mm
@@ -41,19 +38,16 @@ def phase(theta, z, sense):
     return np.mod(z - sense * PITCH * theta / (2.0 * np.pi), PITCH)
 
 
-def circular_spread(p):
-    """1 − |mean of exp(2πi p / PITCH)|: 0 when all phases agree, ~1 when they are uniform."""
-    return 1.0 - abs(np.mean(np.exp(2j * np.pi * p / PITCH)))
+def mean_phasor(p):
+    """Mean of exp(2πi p / PITCH): its length is 1 when all phases agree, ~0 when they are
+    uniform; its angle is their circular mean."""
+    return np.mean(np.exp(2j * np.pi * p / PITCH))
 
 
 def harmonic(r, p):
     """(peak-to-trough 2a, offset) of the first harmonic of r over the phase p (one pitch)."""
     c = np.mean((r - r.mean()) * np.exp(-2j * np.pi * p / PITCH))
     return 4.0 * abs(c), np.mod(-np.angle(c) * PITCH / (2 * np.pi) + PITCH / 2, PITCH) - PITCH / 2
-
-
-def circular_mean(p):
-    return np.mod(np.angle(np.mean(np.exp(2j * np.pi * p / PITCH))) * PITCH / (2 * np.pi), PITCH)
 
 
 def check():
@@ -84,10 +78,7 @@ def main():
     ap.add_argument("--z-range", type=float, nargs=2, default=(-3.0, 1.5))
     ap.add_argument("--title", default="")
     a = ap.parse_args()
-    time, name = states(a.run)[a.state]
-    grid = read_state(a.run, name)
-    x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
-    part, _ = point_fields(grid)
+    time, name, x, part, _ = load_state(a.run, a.state)
     r = np.hypot(x[:, 0], x[:, 1])
     theta = np.mod(np.arctan2(x[:, 1], x[:, 0]), 2.0 * np.pi)
     z = x[:, 2]
@@ -96,17 +87,18 @@ def main():
     crest = (part == SCREW_PART) & (r > CREST_RADIUS) & (z > z0) & (z < z1)
     if crest.sum() < 10:
         raise SystemExit(f"{name}: only {crest.sum()} screw crest points in z {z0} … {z1}")
-    sense = min((+1.0, -1.0), key=lambda s: circular_spread(phase(theta[crest], z[crest], s)))
-    crest_phase = circular_mean(phase(theta[crest], z[crest], sense))
+    # The sense along which the crests line up (the longest mean phasor), and their phase.
+    sense = max((+1.0, -1.0), key=lambda s: abs(mean_phasor(phase(theta[crest], z[crest], s))))
+    crest_phase = np.mod(np.angle(mean_phasor(phase(theta[crest], z[crest], sense)))
+                         * PITCH / (2 * np.pi), PITCH)
 
     plate = (part != SCREW_PART) & (part != 0) & (r < WALL_SEARCH) & (z > z0) & (z < z1)
     nt, nz = 36, int(round((z1 - z0) / 0.05))
     it = np.minimum((theta[plate] / (2 * np.pi) * nt).astype(int), nt - 1)
     iz = np.minimum(((z[plate] - z0) / (z1 - z0) * nz).astype(int), nz - 1)
-    wall = np.full((nz, nt), np.nan)
-    for i, j, rr in zip(iz, it, r[plate]):
-        if np.isnan(wall[i, j]) or rr < wall[i, j]:
-            wall[i, j] = rr
+    wall = np.full((nz, nt), np.inf)
+    np.minimum.at(wall, (iz, it), r[plate])
+    wall[np.isinf(wall)] = np.nan
     tc = (np.arange(nt) + 0.5) * 2 * np.pi / nt
     zc = z0 + (np.arange(nz) + 0.5) * (z1 - z0) / nz
     T, Z = np.meshgrid(tc, zc)
