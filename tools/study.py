@@ -4,7 +4,7 @@ and methods with build/mcdyna, measures every run's error against its reference 
 and writes a table and plots.
 
 usage: tools/study.py [--quick] [--out results/study] [--threads N] [--only FAMILY ...]
-                      [--reuse]
+                      [--reuse] [--records DIR]
 
 Families, methods and references (benchmarks.md, paper §4):
   elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
@@ -23,14 +23,20 @@ Families, methods and references (benchmarks.md, paper §4):
 
 Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
-OUT/taylor_bar.png, OUT/fds_force.png. --reuse skips runs whose d3hsp reports a normal
-termination and continues stopped runs from their running restart file (OUT/runs/NAME/runrsf).
+OUT/taylor_bar.png, OUT/fds_force.png. Every finished run leaves a record in RECORDS (default
+OUT/records): NAME.json with its facts and error figures, and the histories the plots draw, a few
+hundred kB in all, so the full study's records are committed (manual/data/study_full) and a
+study is assembled from runs made over several sessions or machines. --reuse keeps runs whose
+d3hsp reports a normal termination or, when the run directory is gone, whose record exists, and
+continues stopped runs from their running restart file (OUT/runs/NAME/runrsf).
 The quick study takes about 8 minutes on 2 cores; the full one several hours.
 """
 import argparse
 import csv
+import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import time
@@ -168,10 +174,74 @@ def run_case(case, out_dir, threads, reuse):
     return run_dir
 
 
-def compare_force(run_dir, reference_csv):
-    """Axial force on the screw (RUN/force_vs_plunge.csv, written by main) against the reference,
-    aligned on plunge, by `mcdyna compare`: (RMS |A - B| / peak B, max |A - B| / peak B, corr)."""
-    mine = os.path.join(run_dir, "force_vs_plunge.csv")
+def record_base(records, case):
+    return os.path.join(records, case.name)
+
+
+def write_record(records, case, run_dir, facts):
+    """Keeps what the table and the plots need of a finished run, small enough to commit:
+    RECORDS/NAME.json (the run's facts and, for the analytic and experimental references, its
+    error figures) and the histories the plots draw (NAME_u.csv and NAME_sigma.csv, NAME_outline.csv
+    or NAME_force.csv). A study assembled over several sessions or machines takes finished runs
+    from their records (--reuse) when their run directories are gone."""
+    os.makedirs(records, exist_ok=True)
+    base = record_base(records, case)
+    rec = dict(family=case.family, method=case.method, resolution=case.resolution,
+               deck=case.deck, flags=case.flags, facts=facts,
+               recorded=time.strftime("%Y-%m-%d"), source_commit=source_commit())
+    if case.family == "elastic_wave":
+        r = elastic_wave.analyse(run_dir)
+        rec["figures"] = {"u_l2": r["l2"], "sigma_error": r["stress"],
+                          "sigma_overshoot": r["overshoot"]}
+        write_columns(base + "_u.csv", ("time", "u"), (r["t"], r["u"]))
+        write_columns(base + "_sigma.csv", ("time", "sigma"), (r["ts"], r["s"]))
+    elif case.family == "taylor_bar":
+        length, diameter = taylor_bar.final_shape(run_dir)
+        err = abs(length / TAYLOR_EXPERIMENT_LENGTH - 1.0)
+        rec["figures"] = {"final_length": length, "footprint_diameter": diameter,
+                          "length_error_vs_experiment": err,
+                          "diameter_error_vs_experiment":
+                              abs(diameter / TAYLOR_EXPERIMENT_DIAMETER - 1),
+                          "length_error_vs_fe_codes": abs(length / TAYLOR_FE_LENGTH - 1.0)}
+        write_columns(base + "_outline.csv", ("z", "r"), taylor_bar.outline(run_dir))
+    else:
+        # The FDS error depends on the study's reference: measured when the table is made.
+        shutil.copyfile(os.path.join(run_dir, "force_vs_plunge.csv"), base + "_force.csv")
+    with open(base + ".json", "w") as f:
+        json.dump(rec, f, indent=1)
+        f.write("\n")
+    return rec
+
+
+def read_record(records, case):
+    path = record_base(records, case) + ".json"
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def write_columns(path, names, columns):
+    with open(path, "w") as f:
+        f.write(",".join(names) + "\n")
+        for row in zip(*columns):
+            f.write(",".join(f"{v:.9e}" for v in row) + "\n")
+
+
+def read_columns(path):
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    return [data[n] for n in data.dtype.names]
+
+
+def source_commit():
+    done = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                          capture_output=True, text=True)
+    return done.stdout.strip() or "unknown"
+
+
+def compare_force(mine, reference_csv):
+    """Axial force on the screw (a force_vs_plunge.csv) against the reference, aligned on
+    plunge, by `mcdyna compare`: (RMS |A - B| / peak B, max |A - B| / peak B, corr)."""
     if os.path.abspath(mine) == os.path.abspath(reference_csv):
         return 0.0, 0.0, 1.0
     done = subprocess.run([MCDYNA, "compare", mine, reference_csv, "--x", "plunge", "-c",
@@ -185,20 +255,13 @@ def compare_force(run_dir, reference_csv):
     raise RuntimeError(f"mcdyna compare gave no axial_force row:\n{done.stdout}")
 
 
-def measure(case, run_dir, fds_reference):
-    """Error figures of one finished run: (error for the plot, dict of all figures)."""
+def measure(case, rec, records, fds_reference):
+    """Error figures of one finished run from its record: (error for the plot, all figures)."""
     if case.family == "elastic_wave":
-        r = elastic_wave.analyse(run_dir)
-        return r["l2"], {"u_l2": r["l2"], "sigma_error": r["stress"],
-                         "sigma_overshoot": r["overshoot"]}
+        return rec["figures"]["u_l2"], rec["figures"]
     if case.family == "taylor_bar":
-        length, diameter = taylor_bar.final_shape(run_dir)
-        err = abs(length / TAYLOR_EXPERIMENT_LENGTH - 1.0)
-        return err, {"final_length": length, "footprint_diameter": diameter,
-                     "length_error_vs_experiment": err,
-                     "diameter_error_vs_experiment": abs(diameter / TAYLOR_EXPERIMENT_DIAMETER - 1),
-                     "length_error_vs_fe_codes": abs(length / TAYLOR_FE_LENGTH - 1.0)}
-    rms, worst, corr = compare_force(run_dir, fds_reference)
+        return rec["figures"]["length_error_vs_experiment"], rec["figures"]
+    rms, worst, corr = compare_force(record_base(records, case) + "_force.csv", fds_reference)
     return rms, {"force_rms_over_peak": rms, "force_max_over_peak": worst,
                  "force_correlation": corr}
 
@@ -244,27 +307,26 @@ def plot_error_vs_time(rows, path):
     fig.savefig(path, dpi=120)
 
 
-def history_plots(out_dir, finished):
-    by_family = {}
-    for case, run_dir in finished:
-        by_family.setdefault(case.family, []).append((case, run_dir))
-    py = "/usr/bin/python3"
-    verify = os.path.join(ROOT, "tools", "verify")
-    if "elastic_wave" in by_family:
-        dirs = [d for c, d in by_family["elastic_wave"] if c.method != "plain DNI"]
-        subprocess.run([py, os.path.join(verify, "elastic_wave.py")] + dirs +
-                       ["--png", os.path.join(out_dir, "elastic_wave.png")], check=True,
-                       stdout=subprocess.DEVNULL)
-    if "taylor_bar" in by_family:
-        taylor_bar.plot_profiles([(f"{c.method} {c.resolution}", d)
-                                  for c, d in by_family["taylor_bar"]],
+def history_plots(out_dir, records, finished):
+    """OUT/elastic_wave.png, taylor_bar.png and fds_force.png from the records of the finished
+    runs [(case, record)]."""
+    def label(case):
+        return f"{case.method} {case.resolution}"
+    elastic = [c for c, _ in finished if c.family == "elastic_wave" and c.method != "plain DNI"]
+    if elastic:
+        series = [(label(c), *read_columns(record_base(records, c) + "_u.csv"),
+                   *read_columns(record_base(records, c) + "_sigma.csv")) for c in elastic]
+        elastic_wave.plot_histories(series, os.path.join(out_dir, "elastic_wave.png"))
+    taylor = [c for c, _ in finished if c.family == "taylor_bar"]
+    if taylor:
+        taylor_bar.plot_profiles([(label(c), *read_columns(record_base(records, c) +
+                                                           "_outline.csv")) for c in taylor],
                                  os.path.join(out_dir, "taylor_bar.png"))
-    if "fds" in by_family:
-        argv = [py, os.path.join(verify, "fds_force.py")] + [d for _, d in by_family["fds"]]
-        for c, _ in by_family["fds"]:
-            argv += ["--label", f"{c.method} {c.resolution}"]
-        subprocess.run(argv + ["--png", os.path.join(out_dir, "fds_force.png")], check=True,
-                       stdout=subprocess.DEVNULL)
+    fds = [c for c, _ in finished if c.family == "fds"]
+    if fds:
+        fds_force.plot_curves([(label(c), *fds_force.read_force_csv(record_base(records, c) +
+                                                                    "_force.csv")) for c in fds],
+                              os.path.join(out_dir, "fds_force.png"))
 
 
 def main():
@@ -273,7 +335,9 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "study"))
     ap.add_argument("--threads", type=int, default=0, help="OpenMP threads (default: all)")
     ap.add_argument("--only", nargs="+", choices=["elastic_wave", "taylor_bar", "fds"])
-    ap.add_argument("--reuse", action="store_true", help="keep runs that finished before")
+    ap.add_argument("--reuse", action="store_true",
+                    help="keep runs that finished before (their run directories or records)")
+    ap.add_argument("--records", help="where the runs' records go (default OUT/records)")
     a = ap.parse_args()
     if not os.path.exists(MCDYNA):
         sys.exit("study: build/mcdyna is missing (cmake --build build)")
@@ -284,23 +348,34 @@ def main():
     selected = [c for c in selected if not a.only or c.family in a.only]
     os.makedirs(a.out, exist_ok=True)
     print(f"study ({'quick' if a.quick else 'full'}): {len(selected)} runs into {a.out}")
-    finished = []  # (case, run directory, run_facts)
+    records = a.records or os.path.join(a.out, "records")
+    finished = []  # (case, record)
     for case in selected:
-        run_dir = run_case(case, a.out, a.threads, a.reuse)
-        facts = run_facts(run_dir)
+        run_dir = os.path.join(a.out, "runs", case.name)
+        rec = read_record(records, case) if a.reuse else None
+        facts = run_facts(run_dir) if a.reuse else None
+        if not facts and not rec:
+            run_case(case, a.out, a.threads, a.reuse)
+            facts = run_facts(run_dir)
         if facts:
-            finished.append((case, run_dir, facts))
             if case.family == "fds":
                 fds_force.write_force_csv(run_dir)
+            rec = write_record(records, case, run_dir, facts)
+        elif rec:
+            print(f"  {case.family:<13} {case.method:<13} {case.resolution:<7} (from its record, "
+                  f"{rec['recorded']})", flush=True)
+        if rec:
+            finished.append((case, rec))
     # The FDS reference: the finest MC-SPG run of the study, unless that is only h 0.3.
-    spg_fds = sorted((c for c, _, _ in finished if c.family == "fds" and c.method == "MC-SPG"),
+    spg_fds = sorted((c for c, _ in finished if c.family == "fds" and c.method == "MC-SPG"),
                      key=resolution_key)
     fds_reference = FDS_REFERENCE
     if spg_fds and spg_fds[-1].resolution != "h 0.3":
-        fds_reference = os.path.join(a.out, "runs", spg_fds[-1].name, "force_vs_plunge.csv")
+        fds_reference = record_base(records, spg_fds[-1]) + "_force.csv"
     rows = []
-    for case, run_dir, facts in finished:
-        error, figures = measure(case, run_dir, fds_reference)
+    for case, rec in finished:
+        facts = rec["facts"]
+        error, figures = measure(case, rec, records, fds_reference)
         work = facts["particles"] + facts["solids"]
         rows.append(dict(family=case.family, method=case.method, resolution=case.resolution,
                          particles=facts["particles"], elements=facts["solids"],
@@ -321,10 +396,10 @@ def main():
         print(f"{r['family']:<13} {r['method']:<13} {r['resolution']:<7} {r['particles']:>9} "
               f"{r['elements']:>8} {r['cycles']:>7} {r['wall_s']:>8.1f} {r['core_s']:>8.1f} "
               f"{r['steps_per_s'] / 1e6:>12.3f}M {r['error']:>9.4f}")
-    if any(c.family == "fds" for c, _, _ in finished):
+    if any(c.family == "fds" for c, _ in finished):
         print(f"fds reference: {os.path.relpath(fds_reference, ROOT)}")
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
-    history_plots(a.out, [(c, d) for c, d, _ in finished])
+    history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
     if len(finished) < len(selected):
         sys.exit(f"study: {len(selected) - len(finished)} run(s) did not finish")

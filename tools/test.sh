@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian machine, builds (Release), checks formatting, runs the whole test suite
-# and the elastic-wave family of the quick study (tools/study.py end to end, ~25 s), then builds
-# the unit tests with AddressSanitizer + UndefinedBehaviorSanitizer (optimised, -O2 -g, so the
-# solver tests stay CI-length) and runs them too.
+# and the elastic-wave family of the quick study (tools/study.py end to end, ~25 s, then its table
+# again from the runs' records alone), then builds the unit tests with AddressSanitizer +
+# UndefinedBehaviorSanitizer (optimised, -O2 -g, so the solver tests stay CI-length) and runs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
@@ -18,7 +18,14 @@ echo "== tests (Release)"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
 echo "== study smoke: tools/study.py --quick --only elastic_wave (the six quick elastic-wave runs)"
+rm -rf build/study_smoke
 /usr/bin/python3 tools/study.py --quick --only elastic_wave --threads "$jobs" --out build/study_smoke
+# The same table again from the runs' records alone (run directories gone), as a study assembled
+# over several sessions is.
+cp build/study_smoke/study.csv build/study_smoke/study_from_runs.csv
+rm -rf build/study_smoke/runs
+/usr/bin/python3 tools/study.py --quick --only elastic_wave --reuse --out build/study_smoke >/dev/null
+cmp build/study_smoke/study.csv build/study_smoke/study_from_runs.csv
 
 echo "== FDS thread measure on synthetic walls: tools/verify/fds_unwrap.py --check"
 /usr/bin/python3 tools/verify/fds_unwrap.py --check

@@ -90,6 +90,26 @@ def analyse(results):
                 cycles=cycles, wall=wall, t=t, u=u, ts=ts, s=s)
 
 
+def plot_histories(series, png):
+    """u(L, t) and sigma_xx(L/2, t) of [(label, t, u, ts, s)] over the analytic solution."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    tt = np.linspace(0, T_END, 2001)
+    ax1.plot(tt, u_free_end(tt), "k-", lw=2, label="analytic")
+    ax2.plot(tt, sigma_mid(tt), "k-", lw=2, label="analytic")
+    for label, t, u, ts, s in series:
+        ax1.plot(t, u, lw=1, label=label)
+        ax2.plot(ts, s, ".-", lw=0.8, ms=3, label=label)
+    ax1.set_ylabel("u(L, t)")
+    ax2.set_ylabel("sigma_xx(L/2, t)")
+    ax2.set_xlabel("t")
+    ax1.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("results", nargs="+")
@@ -106,22 +126,7 @@ def main():
             print(f"observed order {a_['dir']} -> {b_['dir']}: u {np.log2(a_['l2'] / b_['l2']):.2f}, "
                   f"sigma {np.log2(a_['stress'] / b_['stress']):.2f} (per halving of h)")
     if a.png:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-        tt = np.linspace(0, T_END, 2001)
-        ax1.plot(tt, u_free_end(tt), "k-", lw=2, label="analytic")
-        ax2.plot(tt, sigma_mid(tt), "k-", lw=2, label="analytic")
-        for r in rows:
-            ax1.plot(r["t"], r["u"], lw=1, label=r["dir"])
-            ax2.plot(r["ts"], r["s"], ".-", lw=0.8, ms=3, label=r["dir"])
-        ax1.set_ylabel("u(L, t)")
-        ax2.set_ylabel("sigma_xx(L/2, t)")
-        ax2.set_xlabel("t")
-        ax1.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(a.png, dpi=120)
+        plot_histories([(r["dir"], r["t"], r["u"], r["ts"], r["s"]) for r in rows], a.png)
 
 
 if __name__ == "__main__":

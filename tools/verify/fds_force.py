@@ -55,6 +55,32 @@ def summary(plunge, fz):
     return out
 
 
+def read_force_csv(path):
+    """(plunge, axial_force, torque) of a force_vs_plunge.csv (write_force_csv's layout)."""
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    return data["plunge"], data["axial_force"], data["torque"]
+
+
+def plot_curves(curves, png):
+    """Axial force and torque against plunge of [(label, plunge, fz, mz)]."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
+    for label, plunge, fz, mz in curves:
+        ax.plot(plunge, fz, label=label)
+        bx.plot(plunge, mz, label=label)
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_ylabel("axial force on the screw, N (+ thrust)")
+    bx.set_ylabel("torque about the axis, N mm")
+    bx.set_xlabel("plunge distance, mm")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    bx.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("runs", nargs="+")
@@ -74,24 +100,8 @@ def main():
               f"largest torque {np.abs(mz).max():.2f} N mm")
         curves.append((label, plunge, fz, mz))
     if a.png:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
-        for label, plunge, fz, mz in curves:
-            ax.plot(plunge, fz, label=label)
-            bx.plot(plunge, mz, label=label)
-        ax.axhline(0.0, color="k", lw=0.5)
-        ax.set_ylabel("axial force on the screw, N (+ thrust)")
-        bx.set_ylabel("torque about the axis, N mm")
-        bx.set_xlabel("plunge distance, mm")
-        ax.legend()
-        ax.grid(alpha=0.3)
-        bx.grid(alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(a.png, dpi=120)
+        plot_curves(curves, a.png)
         print(f"wrote {a.png}")
-
 
 if __name__ == "__main__":
     main()

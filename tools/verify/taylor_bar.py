@@ -4,7 +4,8 @@
 usage: taylor_bar.py RESULTS_DIR [RESULTS_DIR ...] [--png shape.png]
 Prints: final length Lf (max z - min z), footprint diameter Df (2 x largest radius of the nodes
 that started on the impact face), and Lf against the references of benchmarks.md §1.1. --png
-draws each run's final outline (r, z) over Wilkins & Guinan's digitized profile.
+draws each run's final outline (the outermost node of each initial layer) over Wilkins &
+Guinan's digitized profile.
 """
 import argparse
 
@@ -40,21 +41,33 @@ def final_shape(results):
     return x[:, 2].max() - x[:, 2].min(), 2.0 * np.hypot(face[:, 0], face[:, 1]).max()
 
 
+def outline(results):
+    """The final silhouette: per node layer of the undeformed bar (both the FE and the SPG decks
+    are built in layers), the node of largest radius: (its z from the lowest point, its r), mm.
+    The curve compared with Wilkins & Guinan's outline; one row per layer, so a study record can
+    keep it."""
+    _, x, x_initial = final_points(results)
+    z = x[:, 2] - x[:, 2].min()
+    r = np.hypot(x[:, 0], x[:, 1])
+    _, layer = np.unique(np.round(x_initial[:, 2], 6), return_inverse=True)
+    order = np.lexsort((r, layer))  # by layer, then radius: each layer's last is its outermost
+    outer = order[np.r_[layer[order][1:] != layer[order][:-1], True]]
+    return z[outer], r[outer]
+
+
 def plot_profiles(runs, png):
-    """Final outlines of [(label, results)] in the (r, z) plane over the experiment's."""
+    """Final outlines [(label, z, r)] (from outline()) in the (r, z) plane over the experiment's."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     plt.figure(figsize=(4.5, 6))
-    for label, results in runs:
-        _, x, _ = final_points(results)
-        r = np.hypot(x[:, 0], x[:, 1])
-        plt.plot(r, x[:, 2] - x[:, 2].min(), ".", ms=1, label=label)  # from its lowest point
+    for label, z, r in runs:
+        plt.plot(r, z, "-", lw=1, label=label)
     plt.plot(*zip(*PROFILE), "k-", lw=1.5, label="Wilkins & Guinan (digitized)")
     plt.xlabel("r (mm)")
     plt.ylabel("z (mm)")
     plt.axis("equal")
-    plt.legend(fontsize=7, markerscale=6)
+    plt.legend(fontsize=7)
     plt.tight_layout()
     plt.savefig(png, dpi=120)
 
@@ -72,7 +85,7 @@ def main():
         for name, ref in REFERENCES.items():
             print(f"  vs {name}: Lf {ref:.2f} mm, difference {100 * (length / ref - 1):+.2f} %")
     if a.png:
-        plot_profiles([(r, r) for r in a.results], a.png)
+        plot_profiles([(r, *outline(r)) for r in a.results], a.png)
 
 
 if __name__ == "__main__":
