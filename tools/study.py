@@ -4,7 +4,7 @@ and methods with build/mcdyna, measures every run's error against its reference 
 and writes a table and plots.
 
 usage: tools/study.py [--quick] [--out results/study] [--threads N] [--only FAMILY ...]
-                      [--reuse] [--records DIR]
+                      [--cases NAME ...] [--reuse] [--records DIR]
 
 Families, methods and references (benchmarks.md, paper §4):
   elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
@@ -335,6 +335,9 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "study"))
     ap.add_argument("--threads", type=int, default=0, help="OpenMP threads (default: all)")
     ap.add_argument("--only", nargs="+", choices=["elastic_wave", "taylor_bar", "fds"])
+    ap.add_argument("--cases", nargs="+", metavar="NAME",
+                    help="only the runs whose names (OUT/runs/NAME) contain one of these, e.g. "
+                         "taylor_bar_MC-SPG_MSC_1_fine: to share a study between processes")
     ap.add_argument("--reuse", action="store_true",
                     help="keep runs that finished before (their run directories or records)")
     ap.add_argument("--records", help="where the runs' records go (default OUT/records)")
@@ -346,6 +349,7 @@ def main():
     selected = [c for c in cases()
                 if c.quick == a.quick or (not a.quick and c.family != "fds")]
     selected = [c for c in selected if not a.only or c.family in a.only]
+    selected = [c for c in selected if not a.cases or any(k in c.name for k in a.cases)]
     os.makedirs(a.out, exist_ok=True)
     print(f"study ({'quick' if a.quick else 'full'}): {len(selected)} runs into {a.out}")
     records = a.records or os.path.join(a.out, "records")
