@@ -181,9 +181,9 @@ def record_base(records, case):
 def write_record(records, case, run_dir, facts):
     """Keeps what the table and the plots need of a finished run, small enough to commit:
     RECORDS/NAME.json (the run's facts and, for the analytic and experimental references, its
-    error figures) and the histories the plots draw (NAME_u.csv and NAME_sigma.csv, NAME_outline.csv
-    or NAME_force.csv). A study assembled over several sessions or machines takes finished runs
-    from their records (--reuse) when their run directories are gone."""
+    error figures) and the histories the plots draw (NAME_u.csv and NAME_sigma.csv,
+    NAME_outline.csv or NAME_force.csv). A study assembled over several sessions or machines
+    takes finished runs from their records (--reuse) when their run directories are gone."""
     os.makedirs(records, exist_ok=True)
     base = record_base(records, case)
     rec = dict(family=case.family, method=case.method, resolution=case.resolution,
