@@ -21,7 +21,8 @@ Families, methods and references (benchmarks.md, paper §4):
                 whole schedule, stage 2 of 4.4 mm, plunge 0 to 8.95 mm, 2026-11-27;
                 manual/verification.md)
 
-Writes OUT/study.csv (one row per run, one header row), OUT/error_vs_time.png (log-log, one
+Writes OUT/study.csv (one row per run, one header row), the same as a Markdown table
+(OUT/study.md, for manual/verification.md), OUT/error_vs_time.png (log-log, one
 line per method, one panel per family) and the history plots OUT/elastic_wave.png,
 OUT/taylor_bar.png, OUT/fds_force.png. Every finished run leaves a record in RECORDS (default
 OUT/records): NAME.json with its facts and error figures, and the histories the plots draw, a few
@@ -329,6 +330,36 @@ def history_plots(out_dir, records, finished):
                               os.path.join(out_dir, "fds_force.png"))
 
 
+# The figures beside the plotted error in study.md, per family: (key, heading, format).
+OTHER_FIGURES = {
+    "elastic_wave": [("sigma_error", "σ(L/2) error", "{:.4f}")],
+    "taylor_bar": [("final_length", "Lf mm", "{:.3f}"), ("footprint_diameter", "Df mm", "{:.2f}"),
+                   ("length_error_vs_fe_codes", "Lf vs FE codes", "{:.4f}")],
+    "fds": [("force_max_over_peak", "max/peak", "{:.3f}"), ("force_correlation", "corr",
+                                                             "{:.3f}")],
+}
+
+
+def write_markdown(rows, path):
+    """The table for manual/verification.md: one row per run; the cost per core second so runs
+    made on 1 and 2 threads (or continued on another count) compare."""
+    with open(path, "w") as f:
+        f.write("| family | method | resolution | particles | elements | cycles | wall s "
+                "(threads) | core s | (p+e)-steps per core-s | error | other figures |\n")
+        f.write("|---" * 11 + "|\n")
+        for r in rows:
+            work = (r["particles"] + r["elements"]) * r["cycles"]
+            # A run continued on another thread count: its core time is not wall x threads.
+            mixed = abs(r["core_s"] - r["wall_s"] * r["threads"]) > 0.01 * r["core_s"]
+            threads = "mixed" if mixed else r["threads"]
+            other = ", ".join(f"{head} {fmt.format(r[key])}"
+                              for key, head, fmt in OTHER_FIGURES[r["family"]] if key in r)
+            f.write(f"| {r['family'].replace('_', ' ')} | {r['method']} | {r['resolution']} | "
+                    f"{r['particles']:,} | {r['elements']:,} | {r['cycles']:,} | "
+                    f"{r['wall_s']:,.1f} ({threads}) | {r['core_s']:,.1f} | "
+                    f"{work / r['core_s'] / 1e6:.2f} M | {r['error']:.4f} | {other} |\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help="the CI-length subset (~8 min)")
@@ -402,6 +433,7 @@ def main():
               f"{r['steps_per_s'] / 1e6:>12.3f}M {r['error']:>9.4f}")
     if any(c.family == "fds" for c, _ in finished):
         print(f"fds reference: {os.path.relpath(fds_reference, ROOT)}")
+    write_markdown(rows, os.path.join(a.out, "study.md"))
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
     history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
