@@ -4,7 +4,7 @@ and methods with build/mcdyna, measures every run's error against its reference 
 and writes a table and plots.
 
 usage: tools/study.py [--quick] [--out results/study] [--threads N] [--only FAMILY ...]
-                      [--cases NAME ...] [--reuse] [--records DIR]
+                      [--cases NAME ...] [--reuse] [--records DIR] [--no-run]
 
 Families, methods and references (benchmarks.md, paper §4):
   elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
@@ -29,7 +29,9 @@ OUT/records): NAME.json with its facts and error figures, and the histories the 
 hundred kB in all, so the full study's records are committed (manual/data/study_full) and a
 study is assembled from runs made over several sessions or machines. --reuse keeps runs whose
 d3hsp reports a normal termination or, when the run directory is gone, whose record exists, and
-continues stopped runs from their running restart file (OUT/runs/NAME/runrsf).
+continues stopped runs from their running restart file (OUT/runs/NAME/runrsf); a record, once
+written, stands for its run under --reuse. --no-run starts no run and makes the table and plots
+from what has finished, naming the runs still missing.
 The quick study takes about 8 minutes on 2 cores; the full one several hours.
 """
 import argparse
@@ -189,7 +191,8 @@ def write_record(records, case, run_dir, facts):
     base = record_base(records, case)
     rec = dict(family=case.family, method=case.method, resolution=case.resolution,
                deck=case.deck, flags=case.flags, facts=facts,
-               recorded=time.strftime("%Y-%m-%d"), source_commit=source_commit())
+               recorded=time.strftime("%Y-%m-%d"), checkout=checkout_commit(),
+               solver=os.path.relpath(MCDYNA, ROOT))
     if case.family == "elastic_wave":
         r = elastic_wave.analyse(run_dir)
         rec["figures"] = {"u_l2": r["l2"], "sigma_error": r["stress"],
@@ -234,7 +237,9 @@ def read_columns(path):
     return [data[n] for n in data.dtype.names]
 
 
-def source_commit():
+def checkout_commit():
+    """The commit of the checkout the study ran from (the solver may be a copy built earlier:
+    `solver` names it)."""
     done = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                           capture_output=True, text=True)
     return done.stdout.strip() or "unknown"
@@ -354,6 +359,8 @@ def write_markdown(rows, path):
             threads = "mixed" if mixed else r["threads"]
             other = ", ".join(f"{head} {fmt.format(r[key])}"
                               for key, head, fmt in OTHER_FIGURES[r["family"]] if key in r)
+            if r["family"] == "fds" and r["force_correlation"] == 1.0 and r["error"] == 0.0:
+                other = "the reference"
             f.write(f"| {r['family'].replace('_', ' ')} | {r['method']} | {r['resolution']} | "
                     f"{r['particles']:,} | {r['elements']:,} | {r['cycles']:,} | "
                     f"{r['wall_s']:,.1f} ({threads}) | {r['core_s']:,.1f} | "
@@ -372,6 +379,8 @@ def main():
     ap.add_argument("--reuse", action="store_true",
                     help="keep runs that finished before (their run directories or records)")
     ap.add_argument("--records", help="where the runs' records go (default OUT/records)")
+    ap.add_argument("--no-run", action="store_true",
+                    help="start no run: the table and plots from finished runs and records only")
     a = ap.parse_args()
     if not os.path.exists(MCDYNA):
         sys.exit("study: build/mcdyna is missing (cmake --build build)")
@@ -385,20 +394,25 @@ def main():
     print(f"study ({'quick' if a.quick else 'full'}): {len(selected)} runs into {a.out}")
     records = a.records or os.path.join(a.out, "records")
     finished = []  # (case, record)
+    missing = []  # runs with neither a record nor a finished run directory
     for case in selected:
         run_dir = os.path.join(a.out, "runs", case.name)
+        # Under --reuse a record, once written, stands for its run (delete it to measure again).
         rec = read_record(records, case) if a.reuse else None
-        facts = run_facts(run_dir) if a.reuse else None
-        if not facts and not rec:
-            run_case(case, a.out, a.threads, a.reuse)
-            facts = run_facts(run_dir)
-        if facts:
-            if case.family == "fds":
-                fds_force.write_force_csv(run_dir)
-            rec = write_record(records, case, run_dir, facts)
-        elif rec:
+        if rec:
             print(f"  {case.family:<13} {case.method:<13} {case.resolution:<7} (from its record, "
                   f"{rec['recorded']})", flush=True)
+        else:
+            facts = run_facts(run_dir) if a.reuse else None
+            if not facts and not a.no_run:
+                run_case(case, a.out, a.threads, a.reuse)
+                facts = run_facts(run_dir)
+            if facts:
+                if case.family == "fds":
+                    fds_force.write_force_csv(run_dir)
+                rec = write_record(records, case, run_dir, facts)
+            else:
+                missing.append(case.name)
         if rec:
             finished.append((case, rec))
     # The FDS reference: the finest MC-SPG run of the study, unless that is only h 0.3.
@@ -437,8 +451,8 @@ def main():
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
     history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
-    if len(finished) < len(selected):
-        sys.exit(f"study: {len(selected) - len(finished)} run(s) did not finish")
+    if missing:
+        sys.exit(f"study: {len(missing)} run(s) without a result: {' '.join(missing)}")
 
 
 if __name__ == "__main__":
