@@ -45,12 +45,11 @@ import sys
 import time
 from dataclasses import dataclass, field
 
-import numpy as np
-
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools", "verify"))
 
 import elastic_wave  # noqa: E402  (tools/verify)
+from columns import read_columns, write_columns  # noqa: E402
 import fds_force  # noqa: E402
 import taylor_bar  # noqa: E402
 
@@ -148,8 +147,6 @@ def run_facts(run_dir):
 def run_case(case, out_dir, threads, reuse):
     run_dir = os.path.join(out_dir, "runs", case.name)
     deck = case.deck.format(out=out_dir)
-    if reuse and run_facts(run_dir):
-        return run_dir
     if case.generate:
         os.makedirs(os.path.dirname(deck), exist_ok=True)
         argv = [a.format(deck=deck) for a in case.generate]
@@ -174,7 +171,6 @@ def run_case(case, out_dir, threads, reuse):
                                                f"  exit {done.returncode}"), flush=True)
     if done.returncode != 0:
         print(done.stderr.strip()[-2000:], file=sys.stderr)
-    return run_dir
 
 
 def record_base(records, case):
@@ -210,6 +206,7 @@ def write_record(records, case, run_dir, facts):
         write_columns(base + "_outline.csv", ("z", "r"), taylor_bar.outline(run_dir))
     else:
         # The FDS error depends on the study's reference: measured when the table is made.
+        fds_force.write_force_csv(run_dir)
         shutil.copyfile(os.path.join(run_dir, "force_vs_plunge.csv"), base + "_force.csv")
     with open(base + ".json", "w") as f:
         json.dump(rec, f, indent=1)
@@ -223,18 +220,6 @@ def read_record(records, case):
         return None
     with open(path) as f:
         return json.load(f)
-
-
-def write_columns(path, names, columns):
-    with open(path, "w") as f:
-        f.write(",".join(names) + "\n")
-        for row in zip(*columns):
-            f.write(",".join(f"{v:.9e}" for v in row) + "\n")
-
-
-def read_columns(path):
-    data = np.genfromtxt(path, delimiter=",", names=True)
-    return [data[n] for n in data.dtype.names]
 
 
 def checkout_commit():
@@ -408,8 +393,6 @@ def main():
                 run_case(case, a.out, a.threads, a.reuse)
                 facts = run_facts(run_dir)
             if facts:
-                if case.family == "fds":
-                    fds_force.write_force_csv(run_dir)
                 rec = write_record(records, case, run_dir, facts)
             else:
                 missing.append(case.name)

@@ -15,6 +15,8 @@ import os
 
 import numpy as np
 
+from columns import read_columns, write_columns
+
 
 def read_csv(path):
     with open(path) as f:
@@ -37,10 +39,8 @@ def history(run):
 def write_force_csv(run):
     """RUN/force_vs_plunge.csv (time, plunge, axial_force, torque); returns the columns."""
     t, plunge, fz, mz = history(run)
-    with open(os.path.join(run, "force_vs_plunge.csv"), "w") as f:
-        f.write("time,plunge,axial_force,torque\n")
-        for row in zip(t, plunge, fz, mz):
-            f.write(",".join(f"{v:.9e}" for v in row) + "\n")
+    write_columns(os.path.join(run, "force_vs_plunge.csv"),
+                  ("time", "plunge", "axial_force", "torque"), (t, plunge, fz, mz))
     return t, plunge, fz, mz
 
 
@@ -57,8 +57,8 @@ def summary(plunge, fz):
 
 def read_force_csv(path):
     """(plunge, axial_force, torque) of a force_vs_plunge.csv (write_force_csv's layout)."""
-    data = np.genfromtxt(path, delimiter=",", names=True)
-    return data["plunge"], data["axial_force"], data["torque"]
+    _, plunge, fz, mz = read_columns(path)
+    return plunge, fz, mz
 
 
 def plot_curves(curves, png):
