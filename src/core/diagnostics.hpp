@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/source.hpp"
@@ -48,6 +49,10 @@ class Diagnostics {
   std::size_t errors_ = 0;
   std::size_t warnings_ = 0;
 };
+
+/// `text` for quoting in a message: as it is up to `max` characters, else its head and the count
+/// ("1**1**1** ... (900000 characters)"), so a 70 kB field does not become a 70 kB message.
+std::string excerpt(std::string_view text, std::size_t max = 60);
 
 /// "file:line:cols: severity: message" followed by the echoed line and a caret marker.
 std::string format_diagnostic(const Diagnostic& d, const SourceFiles& files);

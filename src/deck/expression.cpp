@@ -84,7 +84,20 @@ class ExpressionParser {
     }
   }
 
+  // Every recursion of the grammar (unary signs, right-associative powers, parentheses, function
+  // arguments) passes through here, so one depth guard bounds the stack for any input.
   double unary() {
+    if (++depth_ > kMaxDepth) {
+      fail("expression nested too deeply (more than " + std::to_string(kMaxDepth) +
+           " signs, powers or parentheses inside each other)");
+      pos_ = text_.size();  // stop reading: the rest cannot be evaluated either
+      --depth_;
+      return 0.0;
+    }
+    struct DepthGuard {
+      int& d;
+      ~DepthGuard() { --d; }
+    } guard{depth_};
     if (accept("-")) return -unary();
     if (accept("+")) return unary();
     return power();
@@ -97,14 +110,6 @@ class ExpressionParser {
   }
 
   double primary() {
-    if (++depth_ > 200) {
-      fail("expression nested too deeply");
-      return 0.0;
-    }
-    struct DepthGuard {
-      int& d;
-      ~DepthGuard() { --d; }
-    } guard{depth_};
     skip_blanks();
     if (pos_ >= text_.size()) {
       fail("expression ends early");
@@ -239,6 +244,7 @@ class ExpressionParser {
     return 0.0;
   }
 
+  static constexpr int kMaxDepth = 256;
   std::string_view text_;
   const std::function<std::optional<double>(const std::string&)>& resolve_;
   std::size_t pos_ = 0;

@@ -55,7 +55,12 @@ class Parameters {
     ParameterValue value;
   };
   [[nodiscard]] int find(std::string_view upper_name, std::uint32_t scope) const;
-  bool evaluate(int index, core::Diagnostics& diags);
+  /// The definitions an expression uses (indices into defs_), in the order it uses them.
+  [[nodiscard]] std::vector<int> dependencies(int index) const;
+  /// Evaluates `root` and everything it depends on that is still pending, in dependency order.
+  void evaluate_from(int root, core::Diagnostics& diags);
+  /// Evaluates one definition whose dependencies are all done or failed.
+  void compute(int index, core::Diagnostics& diags);
 
   std::vector<Entry> defs_;
   std::vector<std::optional<std::uint32_t>> scope_parent_;

@@ -273,11 +273,15 @@ bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int co
     }
   } else if (f.type == FieldType::integer) {
     const auto i = parse_integer(s);
-    if (!i) return report(fmt::format("expected an integer, got \"{}\"{}", s, blank_hint(s)));
+    if (!i)
+      return report(
+          fmt::format("expected an integer, got \"{}\"{}", core::excerpt(s), blank_hint(s)));
     number = static_cast<double>(*i);
   } else {
     const auto r = parse_real(s);
-    if (!r) return report(fmt::format("expected a real number, got \"{}\"{}", s, blank_hint(s)));
+    if (!r)
+      return report(
+          fmt::format("expected a real number, got \"{}\"{}", core::excerpt(s), blank_hint(s)));
     number = *r;
   }
   if (f.zero_means_default && number == 0.0) return true;  // "EQ.0: default" fields stay default

@@ -206,3 +206,23 @@ TEST_CASE("required fields, constraints and tabs are reported, values still read
   CHECK(l->has_message("*MAT_ELASTIC card 1 field RO: value -7.8 is not allowed (must be > 0)"));
   CHECK(l->has_message("tab character in a fixed-column card"));
 }
+
+TEST_CASE("a 70 kB free-format field: the message and the echoed line stay short") {
+  const std::string field(70000, '7');
+  auto l = load_text("*NODE\n1,0.0," + field + "x,0.0\n");
+  REQUIRE(l->diags.has_errors());
+  const std::string m = l->messages();
+  CAPTURE(m.substr(0, 1500));
+  CHECK(m.find("main.k:2:7-") != std::string::npos);
+  CHECK(m.find("(70001 characters)") != std::string::npos);  // the quoted field is cut
+  CHECK(m.size() < 1000);  // was 140,000+ bytes (the field, then 65,000 carets)
+  CHECK(m.find(std::string(241, '^')) == std::string::npos);
+  CHECK(m.find(std::string(200, '^')) != std::string::npos);
+  // A bad field further right than the echo's width: the echo starts shortly before it.
+  auto r = load_text("*NODE\n1,0.0,0." + std::string(400, '0') + ",1.2.3\n");
+  const std::string mr = r->messages();
+  CAPTURE(mr);
+  CHECK(mr.find("got \"1.2.3\"") != std::string::npos);
+  CHECK(mr.find("\n  ...") != std::string::npos);
+  CHECK(mr.size() < 800);
+}

@@ -1,6 +1,8 @@
 // *INCLUDE (search paths, continuation, cycles, depth) and *PARAMETER (types, expressions, scopes).
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
 #include "deck/parameters.hpp"
 #include "test_support.hpp"
 
@@ -157,4 +159,64 @@ TEST_CASE("parameter of the wrong kind for a field") {
       "*SECTION_SOLID\n     &half\n*NODE\n       1   &name\n");
   CHECK(l->has_message("parameter &half = 0.5 is not an integer"));
   CHECK(l->has_message("parameter &name is text (\"abc\"), expected a real number"));
+}
+
+TEST_CASE("*PARAMETER_EXPRESSION: a deep chain written in reverse order is evaluated") {
+  // Q10000 = Q9999 + 1, ..., Q1 = Q0 + 1, Q0 = 1: every definition uses one defined after it,
+  // 10,000 deep (this overflowed the stack when dependencies were evaluated recursively).
+  std::string text = "*PARAMETER_EXPRESSION\n";
+  for (int i = 10000; i > 0; --i)
+    text += fmt::format("R Q{},Q{}+1\n", i, i - 1);
+  text += "R Q0,1\n";
+  auto l = load_text(text);
+  CHECK_MESSAGE(!l->diags.has_errors(), l->messages());
+  CHECK(l->deck.parameters.lookup("Q10000", 0)->number == 10001.0);
+  CHECK(l->deck.parameters.lookup("Q5000", 0)->number == 5001.0);
+}
+
+TEST_CASE("*PARAMETER_EXPRESSION: cycles and their users are errors at their lines") {
+  auto l = load_text(
+      "*PARAMETER_EXPRESSION\n"
+      "R a,&b+1\n"
+      "R b,&c*2\n"
+      "R c,a-1\n"
+      "R d,c+1\n"
+      "R e,e\n");
+  CHECK_MESSAGE(l->has_message("parameter A depends on itself: A -> B -> C -> A"), l->messages());
+  CHECK_MESSAGE(l->has_message("parameter E depends on itself: E -> E"), l->messages());
+  // The users of a parameter with an error say which one (not "unknown parameter").
+  CHECK_MESSAGE(l->has_message("parameter D: cannot evaluate 'c+1': C (line 4) has an error"),
+                l->messages());
+  CHECK_FALSE(l->has_message("unknown parameter"));
+  CHECK(l->messages().find("main.k:2:") != std::string::npos);
+  CHECK(l->messages().find("main.k:6:") != std::string::npos);
+  // A long cycle is named by its ends.
+  std::string text = "*PARAMETER_EXPRESSION\n";
+  for (int i = 0; i < 1000; ++i)
+    text += fmt::format("R P{},P{}+1\n", i, (i + 1) % 1000);
+  auto c = load_text(text);
+  CHECK_MESSAGE(c->has_message("P0 -> P1 -> P2 -> P3 -> P4 -> P5 -> ... -> P995 -> P996 -> P997 -> "
+                               "P998 -> P999 -> P0"),
+                c->messages());
+}
+
+TEST_CASE("*PARAMETER_EXPRESSION: 300,000 powers or signs in a row are an error, not a crash") {
+  for (const std::string& op : {std::string("1**"), std::string("-"), std::string("+"),
+                                std::string("("), std::string("sqrt(")}) {
+    CAPTURE(op);
+    std::string expr;
+    for (int i = 0; i < 300000; ++i)
+      expr += op;
+    auto l = load_text("*PARAMETER_EXPRESSION\nR x," + expr + "1\n");
+    CHECK_MESSAGE(l->has_message("expression nested too deeply"), l->messages().substr(0, 2000));
+    // The message quotes the expression's head and tail only; the echoed line is a window.
+    const std::string m = l->messages();
+    CHECK(m.find("main.k:2:") != std::string::npos);
+    CHECK(m.size() < 2000);
+  }
+  // 256 levels are fine.
+  auto ok = load_text("*PARAMETER_EXPRESSION\nR x," + std::string(200, '(') + "2" +
+                      std::string(200, ')') + "**2\n");
+  CHECK_MESSAGE(!ok->diags.has_errors(), ok->messages());
+  CHECK(ok->deck.parameters.lookup("X", 0)->number == 4.0);
 }
