@@ -8,10 +8,15 @@
 
 #include "cli/load.hpp"
 #include "cli/report.hpp"
+#include "deck/deck.hpp"
 
 namespace mcdyna::cli {
 
 int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+  if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
+    fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
+    return 2;  // a usage error, as for `run`
+  }
   std::ostringstream report;
   LoadedDeck d = load_deck(options.deck, report);
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);

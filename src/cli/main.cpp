@@ -78,7 +78,10 @@ int main(int argc, char** argv) {
     std::cerr << "mcdyna: " << error << "\n";
     return kExitUsage;
   }
-  CLI::App app{"mcdyna - LS-DYNA-style keyword decks, explicit dynamics with MC-SPG particles"};
+  // The name is given: the arguments are parsed from a vector (after the i= r= translation),
+  // so CLI11 never sees argv[0] and its usage line would read "Usage: [OPTIONS]".
+  CLI::App app{"mcdyna - LS-DYNA-style keyword decks, explicit dynamics with MC-SPG particles",
+               "mcdyna"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "mcdyna 0.1");
 

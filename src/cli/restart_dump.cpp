@@ -7,23 +7,68 @@
 #include <fstream>
 
 #include "core/binary_archive.hpp"
+#include "core/diagnostics.hpp"
+#include "io/checked_file.hpp"
 #include "solver/restart.hpp"
 
 namespace mcdyna::cli {
 
 namespace {
 
-// The file opens with these bytes (no length before them, so any other file fails here first).
+// The file opens with these bytes (no length before them, so any other file fails here first),
+// then the format version, then checksummed sections: each its name, its size, the checksum of
+// its bytes (core::checksum) and the bytes. A flipped byte anywhere is a refusal naming the
+// section, never a run from a damaged state.
 constexpr std::array<char, 20> kMagic = {'m', 'c', 'd', 'y', 'n', 'a', ' ', 'r', 'e', 's',
                                          't', 'a', 'r', 't', ' ', 'd', 'u', 'm', 'p', '\n'};
-constexpr std::uint32_t kVersion = 2;  // 2: the layout string after the version
-constexpr const char* kEnd = "end of dump";
+constexpr std::uint32_t kVersion = 3;  // 2: the layout string; 3: checksummed sections
+constexpr std::string_view kHeader = "header", kResume = "resume point", kOutputs = "outputs",
+                           kEnd = "end of dump";
 
 void fnv1a(std::uint64_t& h, std::string_view bytes) {
   for (const char c : bytes) {
     h ^= static_cast<unsigned char>(c);
     h *= 1099511628211ULL;
   }
+}
+
+// Appends one section: name, size, checksum, bytes.
+template <class Write>
+void put_section(std::string& file, std::string_view name, Write&& write) {
+  std::string bytes;
+  core::OutArchive ar(bytes);
+  write(ar);
+  std::string label(name);
+  std::uint64_t size = bytes.size(), sum = core::checksum(bytes);
+  core::OutArchive head(file);
+  head(label, size, sum);
+  file += bytes;
+}
+
+// Reads the next section, which must be `name`, checks its sum and hands its bytes to `read`,
+// which must use them all.
+template <class Read>
+void get_section(core::InArchive& file, std::string_view whole, std::string_view name,
+                 Read&& read) {
+  std::string label;
+  std::uint64_t size = 0, sum = 0;
+  file(label, size, sum);
+  if (label != name)
+    throw core::ArchiveError(fmt::format("corrupt dump: section '{}' expected, found '{}'", name,
+                                         core::excerpt(label, 40)));
+  if (size > file.left()) throw core::ArchiveError("the dump ends early (truncated file?)");
+  const std::string_view bytes = whole.substr(whole.size() - file.left(), size);
+  if (core::checksum(bytes) != sum)
+    throw core::ArchiveError(fmt::format(
+        "section '{}' is damaged (its checksum does not match: the file changed after it was "
+        "written)",
+        name));
+  file.skip(size);
+  core::InArchive ar(bytes);
+  read(ar);
+  if (ar.left() != 0)
+    throw core::ArchiveError(fmt::format(
+        "section '{}' does not match this mcdyna's layout ({} bytes left over)", name, ar.left()));
 }
 
 }  // namespace
@@ -41,64 +86,76 @@ std::string deck_fingerprint(const core::SourceFiles& files, const std::string& 
 void write_dump(const std::filesystem::path& path, const std::string& fingerprint,
                 const solver::State& state, const solver::ResumePoint& point,
                 const io::OutputsResume& outputs) {
-  const std::filesystem::path part = path.string() + ".part";
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", part.string()));
-    core::OutArchive ar(out);
-    std::array<char, 20> magic = kMagic;
-    std::string print = fingerprint, end = kEnd;
-    std::uint32_t version = kVersion;
+  std::string file(kMagic.begin(), kMagic.end());
+  std::uint32_t version = kVersion;
+  core::OutArchive prologue(file);
+  prologue(version);
+  put_section(file, kHeader, [&](core::OutArchive& ar) {
+    std::string layout = solver::dump_layout(), print = fingerprint;
     double time = state.time;
     long cycle = state.cycle;
-    std::string layout = solver::dump_layout();
-    ar(magic, version, layout, print, time, cycle);
-    solver::save_resume_point(ar, point);
-    solver::save_state(ar, state);
-    ar(const_cast<io::OutputsResume&>(outputs), end);  // one member list for both directions
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("cannot write {} (disk full?)", part.string()));
-  }
-  std::filesystem::rename(part, path);
+    ar(layout, print, time, cycle);
+  });
+  put_section(file, kResume, [&](core::OutArchive& ar) { solver::save_resume_point(ar, point); });
+  for (std::size_t k = 0; k < solver::kStateSections.size(); ++k)
+    put_section(file, solver::kStateSections[k],
+                [&](core::OutArchive& ar) { solver::save_state_section(ar, state, k); });
+  put_section(file, kOutputs, [&](core::OutArchive& ar) {
+    ar(const_cast<io::OutputsResume&>(outputs));  // one member list for both directions
+  });
+  put_section(file, kEnd, [](core::OutArchive&) {});
+  io::write_file_atomically(path, file);  // through path.part and a rename: always whole
 }
 
 LoadedDump read_dump(const std::filesystem::path& path, const std::string& fingerprint,
                      solver::State& state) {
-  std::ifstream in(path, std::ios::binary);
+  // A FIFO or device would block the read (or never end); a dump is a regular file.
   std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw std::runtime_error(
+        fmt::format("cannot read the restart dump {}: {}", path.string(),
+                    std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+  std::ifstream in(path, std::ios::binary);
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!in || ec)
+  std::string whole(ec ? 0 : size, '\0');
+  if (!in || ec || !in.read(whole.data(), static_cast<std::streamsize>(whole.size())))
     throw std::runtime_error(fmt::format("cannot read the restart dump {}", path.string()));
-  core::InArchive ar(in, size);
+  core::InArchive ar(whole);
   LoadedDump d;
   try {
     std::array<char, 20> magic{};
     std::uint32_t version = 0;
-    if (size < magic.size()) throw core::ArchiveError("not an mcdyna restart dump");
+    if (whole.size() < magic.size()) throw core::ArchiveError("not an mcdyna restart dump");
     ar(magic);
     if (magic != kMagic) throw core::ArchiveError("not an mcdyna restart dump");
     ar(version);
     if (version != kVersion)
       throw core::ArchiveError(
           fmt::format("dump format {} (this mcdyna reads {})", version, kVersion));
-    std::string layout, print;
-    double time = 0.0;
-    long cycle = 0;
-    ar(layout);
-    if (layout != solver::dump_layout())
-      throw core::ArchiveError(
-          "written by an mcdyna build whose solver state differs from this one's (restart with "
-          "the binary that wrote it)");
-    ar(print, time, cycle);
-    if (print != fingerprint)
-      throw core::ArchiveError(
-          "written from another deck or with other --spg-* options (a restart needs the deck and "
-          "options of the run that wrote the dump, unchanged)");
-    solver::load_resume_point(ar, d.point);
-    solver::load_state(ar, state);
-    std::string end;
-    ar(d.outputs, end);
-    if (end != kEnd) throw core::ArchiveError("corrupt dump (no end marker)");
+    get_section(ar, whole, kHeader, [&](core::InArchive& h) {
+      std::string layout, print;
+      double time = 0.0;
+      long cycle = 0;
+      h(layout);
+      if (layout != solver::dump_layout())
+        throw core::ArchiveError(
+            "written by an mcdyna build whose solver state differs from this one's (restart "
+            "with the binary that wrote it)");
+      h(print, time, cycle);
+      if (print != fingerprint)
+        throw core::ArchiveError(
+            "written from another deck or with other --spg-* options (a restart needs the deck "
+            "and options of the run that wrote the dump, unchanged)");
+    });
+    get_section(ar, whole, kResume,
+                [&](core::InArchive& r) { solver::load_resume_point(r, d.point); });
+    for (std::size_t k = 0; k < solver::kStateSections.size(); ++k)
+      get_section(ar, whole, solver::kStateSections[k],
+                  [&](core::InArchive& r) { solver::load_state_section(r, state, k); });
+    get_section(ar, whole, kOutputs, [&](core::InArchive& r) { r(d.outputs); });
+    get_section(ar, whole, kEnd, [](core::InArchive&) {});
+    if (ar.left() != 0)
+      throw core::ArchiveError(fmt::format("corrupt dump ({} bytes after its end)", ar.left()));
   } catch (const core::ArchiveError& e) {
     throw std::runtime_error(fmt::format("restart dump {}: {}", path.string(), e.what()));
   }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <fstream>
@@ -13,10 +14,14 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <system_error>
 
 #include "cli/load.hpp"
+#include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/restart_dump.hpp"
+#include "deck/deck.hpp"
+#include "io/checked_file.hpp"
 #include "io/outputs.hpp"
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
@@ -32,69 +37,6 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 extern "C" void on_stop_signal(int sig) {
   g_stop_signal = sig;
 }
-
-// Progress: a refreshed line on a terminal, otherwise a plain line every 5 % of the end time,
-// flushed (a batch run's redirected output is block-buffered and showed nothing until the end).
-// The same lines (every 5 %) go to d3hsp as the time-step history.
-class Progress {
- public:
-  /// `start_fraction`: the share of ENDTIM done before this run started (a restart).
-  Progress(std::ostream& out, std::ostream& log, bool terminal, bool quiet, double start_fraction)
-      : out_(out),
-        log_(log),
-        terminal_(terminal),
-        quiet_(quiet),
-        start_(Clock::now()),
-        start_fraction_(start_fraction) {
-    while (next_fraction_ <= start_fraction_)
-      next_fraction_ += 0.05;
-  }
-
-  void update(const solver::State& s) {
-    const double end = s.time_control.end_time;
-    const double fraction = end > 0.0 ? std::min(1.0, s.time / end) : 0.0;
-    const auto now = Clock::now();
-    const bool milestone = fraction >= next_fraction_;
-    const bool refresh = terminal_ && now - last_print_ > std::chrono::milliseconds(200);
-    if (!milestone && !refresh) return;
-    const double elapsed = seconds(start_, now);
-    const double done = fraction - start_fraction_;
-    const double eta = done > 0.0 ? elapsed * (1.0 - fraction) / done : 0.0;
-    const std::string line = fmt::format(
-        "cycle {:>9}  t = {:.5e}  dt = {:.4e}  {:5.1f} %  elapsed {:.1f} s  ETA {:.1f} s", s.cycle,
-        s.time, s.step, 100.0 * fraction, elapsed, eta);
-    if (milestone) {
-      fmt::print(log_, "{}\n", line);
-      log_.flush();  // a user tailing d3hsp (or a batch log) sees the run advance
-      while (next_fraction_ <= fraction)
-        next_fraction_ += 0.05;
-    }
-    if (quiet_) return;
-    if (terminal_) {
-      fmt::print(out_, "\r{}", line);
-      out_.flush();
-      last_print_ = now;
-    } else if (milestone) {
-      fmt::print(out_, "{}\n", line);
-      out_.flush();
-    }
-  }
-  void finish() {
-    if (terminal_ && !quiet_) fmt::print(out_, "\n");
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  static double seconds(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-  }
-  std::ostream& out_;
-  std::ostream& log_;
-  bool terminal_, quiet_;
-  Clock::time_point start_, last_print_{};
-  double start_fraction_ = 0.0;
-  double next_fraction_ = 0.05;
-};
 
 const char* reason_text(solver::StopReason r) {
   switch (r) {
@@ -224,7 +166,34 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
 
 }  // namespace
 
+std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options) {
+  // The options that change the physics go into the dump's fingerprint with the deck's text.
+  return deck_fingerprint(
+      files, fmt::format("stabilization={};renewal={};msc={}", options.spg_stabilization,
+                         options.spg_renewal_strain, options.spg_mode_control));
+}
+
+namespace {
+
+// --out DIR: created if missing; a path that is not (and cannot become) a directory one can
+// write in is a usage error. Returns the problem, or "".
+std::string prepare_output_directory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    return fmt::format("cannot create the output directory {}: {}", dir.string(), ec.message());
+  if (!std::filesystem::is_directory(dir, ec))
+    return fmt::format("the output directory {} is not a directory", dir.string());
+  return {};
+}
+
+}  // namespace
+
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
+    fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
+    return kRunUsage;
+  }
   std::ostringstream report;
   LoadedDeck d = load_deck(options.deck, report);
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
@@ -263,13 +232,14 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.mode_control = options.spg_mode_control;
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
-  std::filesystem::create_directories(dir);
+  if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
+    fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,
+               options.deck.string());
+    return kRunUsage;
+  }
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
-  // The options that change the physics go into the dump's fingerprint with the deck's text.
-  const std::string fingerprint = deck_fingerprint(
-      d.deck.files, fmt::format("stabilization={};renewal={};msc={}", options.spg_stabilization,
-                                options.spg_renewal_strain, options.spg_mode_control));
+  const std::string fingerprint = run_fingerprint(d.deck.files, options);
   std::optional<LoadedDump> dump;
   if (!options.restart.empty()) {
     try {
@@ -282,6 +252,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
   // A restarted run continues d3hsp after what the earlier runs wrote.
   std::ofstream log(dir / "d3hsp", dump ? std::ios::app : std::ios::trunc);
+  if (!log) {
+    fmt::print(err, "mcdyna: error: --out: cannot write {} ({})\nmcdyna: {} not run\n",
+               (dir / "d3hsp").string(), std::generic_category().message(errno),
+               options.deck.string());
+    return kRunUsage;
+  }
   if (dump) {
     fmt::print(log, "\nRestart from {} at t = {:.6e}, cycle {} (threads: {})\n",
                options.restart.string(), state->time, state->cycle, omp_get_max_threads());
@@ -301,6 +277,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   try {
     outputs_holder = std::make_unique<io::Outputs>(d.built.model, *state, dir, notes,
                                                    dump ? &dump->outputs : nullptr);
+  } catch (const io::WriteError& e) {
+    fmt::print(err, "mcdyna: error termination: {}\nmcdyna: {} not run\n", e.what(),
+               options.deck.string());
+    return kRunOutputFailed;
   } catch (const std::exception& e) {
     fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
     return kRunDeckErrors;
@@ -323,20 +303,32 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const auto start = std::chrono::steady_clock::now();
   long zone_cycles = 0;
   const long start_cycle = state->cycle;  // a restart times only its own cycles
+  // The first write that failed (disk full, ...): the run stops at the next cycle, writes
+  // nothing more (no restart dump either: its history sizes would include the failed block) and
+  // exits with kRunOutputFailed; every file on disk stays whole.
+  std::string output_failure;
   solver::RunHooks hooks;
   hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
   hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
+    if (!output_failure.empty()) return;
     zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+    try {
+      outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+    } catch (const io::WriteError& e) {
+      output_failure = e.what();
+    }
   };
-  hooks.stop_requested = [] { return g_stop_signal != 0; };
-  hooks.progress = [&](const solver::State& s) { progress.update(s); };
+  hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
+  hooks.progress = [&](const solver::State& s) {
+    progress.update(s);
+    if (!log && output_failure.empty())
+      output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
+  };
   hooks.dump_due = [&](const solver::State& s, bool interrupted) {
-    return dumps.due(s.cycle, interrupted);
+    return output_failure.empty() && dumps.due(s.cycle, interrupted);
   };
-  std::string dump_failure;
   std::filesystem::path last_dump;
   hooks.dump = [&](const solver::State& s, const solver::ResumePoint& point) {
     const io::OutputsResume where = outputs.resume_point();
@@ -351,8 +343,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
         log.flush();
         last_dump = path;
       } catch (const std::exception& e) {
-        // A dump that cannot be written does not stop the run; it is reported at the end.
-        if (dump_failure.empty()) dump_failure = e.what();
+        if (output_failure.empty()) output_failure = e.what();
       }
     }
   };
@@ -362,8 +353,11 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   std::signal(SIGTERM, old_term);
 
   std::ostringstream summary;
-  fmt::print(summary, "\n{} at t = {:.6e}, cycle {}\n", reason_text(result.reason), state->time,
-             state->cycle);
+  fmt::print(summary, "\n{} at t = {:.6e}, cycle {}\n",
+             output_failure.empty() ? reason_text(result.reason)
+                                    : "error termination: an output could not be written",
+             state->time, state->cycle);
+  if (!output_failure.empty()) fmt::print(summary, "  {}\n", output_failure);
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
   fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s))\n", omp_get_max_threads());
   for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
@@ -391,8 +385,6 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                1e-6 * result.particle_cycles / result.wall_seconds);
   }
   print_spg_summary(summary, *state);
-  if (!dump_failure.empty())
-    fmt::print(summary, "  warning: restart dump failed: {}\n", dump_failure);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())
     fmt::print(summary,
                "  continue with: mcdyna run {} --out {} --restart {} (and the same options)\n",
@@ -405,7 +397,15 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(summary, " {};", f);
   fmt::print(summary, " d3hsp\n");
   log << summary.str();
-  if (!options.quiet || result.reason != solver::StopReason::end_time) out << summary.str();
+  log.flush();
+  if (!log && output_failure.empty())
+    output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
+  if (!options.quiet || result.reason != solver::StopReason::end_time || !output_failure.empty())
+    out << summary.str();
+  if (!output_failure.empty()) {
+    fmt::print(err, "mcdyna: error termination: {}\n", output_failure);
+    return kRunOutputFailed;
+  }
   switch (result.reason) {
     case solver::StopReason::end_time:
     case solver::StopReason::end_cycle:

@@ -3,6 +3,9 @@
 /// loop and write d3plot.pvd (+ states), the ASCII/CSV histories and d3hsp.
 #include <filesystem>
 #include <iosfwd>
+#include <string>
+
+#include "core/source.hpp"
 
 namespace mcdyna::cli {
 
@@ -27,10 +30,16 @@ struct RunOptions {
 enum RunExit : int {
   kRunOk = 0,
   kRunDeckErrors = 1,
-  kRunUnstable = 4,     ///< stopped by NaN, negative volume or step collapse
-  kRunInterrupted = 5,  ///< SIGINT / SIGTERM: final state written, files closed
+  kRunUsage = 2,         ///< a missing deck, an --out that cannot be a directory
+  kRunUnstable = 4,      ///< stopped by NaN, negative volume or step collapse
+  kRunInterrupted = 5,   ///< SIGINT / SIGTERM: final state written, files closed
+  kRunOutputFailed = 6,  ///< a write failed (disk full ...): stopped, the files on disk whole
 };
 
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+/// The fingerprint a run's restart dumps carry: the deck's files and the options that change
+/// the physics (cli/restart_dump.hpp deck_fingerprint).
+std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options);
 
 }  // namespace mcdyna::cli

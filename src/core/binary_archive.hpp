@@ -9,10 +9,10 @@
 
 #include <array>
 #include <cstdint>
-#include <istream>
-#include <ostream>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -40,19 +40,40 @@ void fields(Ar& ar, std::pair<A, B>& p) {
   ar(p.first, p.second);
 }
 
+/// 64-bit checksum of a dump section: FNV-1a over 8-byte words with an xorshift after each
+/// multiply, so that a change in a high bit reaches every bit. Each step is a bijection of the
+/// running value for a given word, so any change confined to one word (a flipped bit, a
+/// overwritten byte) always changes the sum; other damage goes unseen with odds of 2^-64.
+inline std::uint64_t checksum(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ULL ^ bytes.size();
+  auto step = [&h](std::uint64_t word) {
+    h ^= word;
+    h *= 1099511628211ULL;
+    h ^= h >> 32;
+  };
+  std::size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, bytes.data() + i, 8);
+    step(w);
+  }
+  std::uint64_t tail = 0;
+  if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+  step(tail);
+  return h;
+}
+
+/// Writes values into a byte string (a dump section).
 class OutArchive {
  public:
-  explicit OutArchive(std::ostream& out) : out_(out) {}
+  explicit OutArchive(std::string& out) : out_(out) {}
   template <typename... T>
   void operator()(T&... values) {
     (put(values), ...);
   }
 
  private:
-  void bytes(const void* p, std::size_t n) {
-    out_.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
-    if (!out_) throw ArchiveError("cannot write the dump (disk full?)");
-  }
+  void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
   void size(std::size_t n) {
     const auto v = static_cast<std::uint64_t>(n);
     bytes(&v, sizeof v);
@@ -85,23 +106,30 @@ class OutArchive {
     size(static_cast<std::size_t>(m.cols()));
     bytes(m.data(), static_cast<std::size_t>(m.size()) * sizeof(S));
   }
-  std::ostream& out_;
+  std::string& out_;
 };
 
+/// Reads values back from bytes written by OutArchive; a size that cannot fit in what is left is
+/// refused before anything is allocated for it.
 class InArchive {
  public:
-  /// `available`: bytes left in the stream, to reject a corrupt size before allocating it.
-  InArchive(std::istream& in, std::uint64_t available) : in_(in), left_(available) {}
+  explicit InArchive(std::string_view in) : in_(in), left_(in.size()) {}
   template <typename... T>
   void operator()(T&... values) {
     (get(values), ...);
+  }
+  /// Bytes not read yet.
+  [[nodiscard]] std::uint64_t left() const { return left_; }
+  /// Passes over `n` bytes (read by another archive over them).
+  void skip(std::uint64_t n) {
+    if (n > left_) throw ArchiveError("the dump ends early (truncated file?)");
+    left_ -= n;
   }
 
  private:
   void bytes(void* p, std::size_t n) {
     if (n > left_) throw ArchiveError("the dump ends early (truncated file?)");
-    in_.read(static_cast<char*>(p), static_cast<std::streamsize>(n));
-    if (!in_) throw ArchiveError("the dump ends early (truncated file?)");
+    if (n > 0) std::memcpy(p, in_.data() + (in_.size() - left_), n);
     left_ -= n;
   }
   // A count of `element` bytes each that cannot fit in what is left is a corrupt dump.
@@ -146,7 +174,7 @@ class InArchive {
     m.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
     bytes(m.data(), rows * cols * sizeof(S));
   }
-  std::istream& in_;
+  std::string_view in_;
   std::uint64_t left_;
 };
 

@@ -58,6 +58,10 @@ struct ReadOptions {
 /// Reads a deck and everything it includes, collecting parameters and evaluating them. Problems
 /// (missing files, include cycles, malformed *KEYWORD arguments …) go to `diags`; never throws
 /// for bad input.
+/// Why `path` cannot be read as a deck or include ("no such file", "is a directory", "is not a
+/// regular file": a FIFO or device would block), or "" when it can be opened as a file.
+std::string file_problem(const std::filesystem::path& path);
+
 Deck read_deck(const std::filesystem::path& path, core::Diagnostics& diags,
                const ReadOptions& options = {});
 

@@ -43,11 +43,8 @@ KeywordLine parse_keyword_line(std::string_view text) {
 }
 
 std::optional<std::string> read_file(const fs::path& path, std::string& error) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    error = "is a directory";
-    return std::nullopt;
-  }
+  error = file_problem(path);
+  if (!error.empty()) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     error = "cannot open";
@@ -401,6 +398,15 @@ void Lexer::handle_duplication(const KeywordBlock& b) {
 }
 
 }  // namespace
+
+std::string file_problem(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) return "no such file";
+  if (fs::is_directory(status)) return "is a directory";
+  if (!fs::is_regular_file(status)) return "is not a regular file";  // a FIFO would block
+  return {};
+}
 
 Deck read_deck_text(std::string text, const fs::path& virtual_path, core::Diagnostics& diags,
                     const ReadOptions& options) {

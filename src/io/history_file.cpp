@@ -7,26 +7,6 @@
 namespace mcdyna::io {
 
 namespace {
-std::FILE* open_or_throw(const std::filesystem::path& p, const char* mode) {
-  std::FILE* f = std::fopen(p.string().c_str(), mode);
-  if (f == nullptr) throw std::runtime_error(fmt::format("cannot open {} for writing", p.string()));
-  return f;
-}
-
-// A restarted run continues the file as it was at the dump: what a run killed later wrote past
-// that point is cut off. A file shorter than at the dump is not the one the dump continues.
-std::FILE* continue_file(const std::filesystem::path& p, std::uint64_t bytes) {
-  std::error_code ec;
-  const std::uintmax_t have = std::filesystem::file_size(p, ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot continue {}: it is missing", p.string()));
-  if (have < bytes)
-    throw std::runtime_error(
-        fmt::format("cannot continue {}: it is shorter ({} bytes) than when the restart dump was "
-                    "written ({} bytes)",
-                    p.string(), have, bytes));
-  std::filesystem::resize_file(p, bytes);
-  return open_or_throw(p, "a");
-}
 
 const HistoryResume* find_resume(const HistoryPlace& place, const std::string& name) {
   if (!place.resume) return nullptr;
@@ -46,15 +26,18 @@ std::string today() {
 
 HistoryFile::HistoryFile(const HistoryPlace& place, const std::string& name,
                          const std::string& title, const std::string& csv_header)
-    : name_(name), ascii_path_(place.dir / name), csv_path_(place.dir / (name + ".csv")) {
+    : name_(name) {
+  const std::filesystem::path ascii_path = place.dir / name, csv_path = place.dir / (name + ".csv");
   if (const HistoryResume* r = find_resume(place, name)) {
-    ascii_.reset(continue_file(ascii_path_, r->ascii_bytes));
-    csv_.reset(continue_file(csv_path_, r->csv_bytes));
+    // A restarted run continues the files as they were at the dump: what a run stopped later
+    // wrote past that point is cut off.
+    ascii_ = RecordFile::continue_at(ascii_path, r->ascii_bytes);
+    csv_ = RecordFile::continue_at(csv_path, r->csv_bytes);
     holding_ = true;
     return;
   }
-  ascii_.reset(open_or_throw(ascii_path_, "w"));
-  csv_.reset(open_or_throw(csv_path_, "w"));
+  ascii_ = RecordFile::create(ascii_path);
+  csv_ = RecordFile::create(csv_path);
   ascii(" {}\n", title.substr(0, 72));
   ascii("                         ls-dyna (version mcdyna 0.1)     date {}\n", today());
   csv("{}\n", csv_header);
@@ -62,10 +45,7 @@ HistoryFile::HistoryFile(const HistoryPlace& place, const std::string& name,
 }
 
 HistoryResume HistoryFile::resume_point() const {
-  std::fflush(ascii_.get());
-  std::fflush(csv_.get());
-  return {name_, std::filesystem::file_size(ascii_path_), std::filesystem::file_size(csv_path_),
-          saved_values()};
+  return {name_, ascii_.size(), csv_.size(), saved_values()};
 }
 
 void HistoryFile::continue_records(const HistoryResume& r) {
@@ -74,8 +54,8 @@ void HistoryFile::continue_records(const HistoryResume& r) {
 }
 
 void HistoryFile::flush() {
-  std::fflush(ascii_.get());
-  std::fflush(csv_.get());
+  ascii_.commit();
+  csv_.commit();
 }
 
 void HistoryFile::legend(const std::vector<std::pair<long long, std::string>>& entities) {

@@ -1,17 +1,20 @@
 #pragma once
 /// An LS-DYNA ASCII history file and its CSV twin (one header row, one row per entity and output
-/// time). Both are flushed after every output block, so a killed run leaves whole rows.
+/// time). Each output block is written whole at flush(), every write checked: a killed run or a
+/// full disk leaves whole rows (a block that cannot be written is cut off again and WriteError
+/// names the file).
 #include <fmt/format.h>
 
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "io/checked_file.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::io {
@@ -62,15 +65,18 @@ class HistoryFile {
   template <typename... Args>
   void ascii(fmt::format_string<Args...> f, Args&&... args) {
     if (holding_) return;
-    fmt::print(ascii_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
+    fmt::format_to(std::back_inserter(ascii_.pending()), fmt::runtime(fmt::string_view(f)),
+                   without_negative_zero(args)...);
   }
   template <typename... Args>
   void csv(fmt::format_string<Args...> f, Args&&... args) {
     if (holding_) return;
-    fmt::print(csv_.get(), fmt::runtime(fmt::string_view(f)), without_negative_zero(args)...);
+    fmt::format_to(std::back_inserter(csv_.pending()), fmt::runtime(fmt::string_view(f)),
+                   without_negative_zero(args)...);
   }
   /// Values beside the files that later records depend on (glstat's initial energy).
   [[nodiscard]] virtual std::vector<double> saved_values() const { return {}; }
+  /// Writes the block built since the last flush to both files; WriteError if it cannot.
   void flush();
   /// "{BEGIN LEGEND}" block listing entity IDs and titles.
   void legend(const std::vector<std::pair<long long, std::string>>& entities);
@@ -83,17 +89,11 @@ class HistoryFile {
     else
       return (v);
   }
-  struct Closer {
-    void operator()(std::FILE* f) const {
-      if (f) std::fclose(f);
-    }
-  };
   virtual void restore_values(const std::vector<double>& values) {
     if (!values.empty()) throw std::runtime_error(name_ + ": unexpected values in the dump");
   }
   std::string name_;
-  std::filesystem::path ascii_path_, csv_path_;
-  std::unique_ptr<std::FILE, Closer> ascii_, csv_;
+  RecordFile ascii_, csv_;
   bool holding_ = false;  ///< continuing a run: the headers are in the files already
 };
 

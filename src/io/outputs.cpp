@@ -19,8 +19,13 @@ void Outputs::Schedule::advance(double t) {
     next = interval > 0.0 ? t + interval : std::nextafter(t, std::numeric_limits<double>::max());
     return;
   }
-  while (due(t))
+  // Usually one interval. A step longer than many intervals jumps in one go: stepping would
+  // loop for ever once next + interval == next (an interval below the resolution of t).
+  for (int k = 0; k < 8 && due(t); ++k)
     next += interval;
+  if (due(t)) next = std::max(interval * (std::floor(t / interval) + 1.0), next);
+  // An interval too short for t to tell apart: written at every cycle from here.
+  if (due(t)) next = std::nextafter(t, std::numeric_limits<double>::max());
 }
 
 Outputs::Schedule Outputs::schedule(const model::ModelDatabase& m, const solver::State& s,

@@ -1,7 +1,6 @@
 #include "io/vtk_series.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
@@ -15,6 +14,7 @@
 
 #include <stdexcept>
 
+#include "io/checked_file.hpp"
 #include "solver/results.hpp"
 
 namespace mcdyna::io {
@@ -182,39 +182,40 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   }
   fields.attach(grid);
 
+  // VTK writes into memory and the file is written here, every write checked: VTK's own file
+  // writer on a full disk corrupted its heap on its error path (SEGV in
+  // vtkXMLUnstructuredDataWriter::DeletePositionArrays).
   const std::string name = fmt::format("{}_{:04d}.vtu", base_, entries_.size());
-  const std::filesystem::path final_path = dir_ / name;
-  const std::filesystem::path temp_path = dir_ / (name + ".part");
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(temp_path.string().c_str());
+  writer->WriteToOutputStringOn();
   writer->SetInputData(grid);
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToLZ4();
-  if (writer->Write() != 1) {
-    throw std::runtime_error(fmt::format("cannot write {}", temp_path.string()));
-  }
-  std::filesystem::rename(temp_path, final_path);
-  entries_.emplace_back(s.time, name);
-  write_collection();
+  if (writer->Write() != 1)
+    throw WriteError(fmt::format("cannot write {}: VTK's writer failed", (dir_ / name).string()));
+  write_file_atomically(dir_ / name, writer->GetOutputString());
+  // The collection lists a state only once its file is whole on disk, and `entries_` only what
+  // the collection on disk lists.
+  auto entries = entries_;
+  entries.emplace_back(s.time, name);
+  write_collection(entries);
+  entries_ = std::move(entries);
 }
 
 void VtkSeries::restore(std::vector<std::pair<double, std::string>> entries) {
+  write_collection(entries);
   entries_ = std::move(entries);
-  write_collection();
 }
 
-void VtkSeries::write_collection() const {
-  const std::filesystem::path temp = collection().string() + ".part";
-  {
-    auto out = fmt::output_file(temp.string());
-    out.print("<?xml version=\"1.0\"?>\n");
-    out.print("<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
-    out.print("  <Collection>\n");
-    for (const auto& [t, file] : entries_)
-      out.print("    <DataSet timestep=\"{:.9e}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, file);
-    out.print("  </Collection>\n</VTKFile>\n");
-  }
-  std::filesystem::rename(temp, collection());
+void VtkSeries::write_collection(const std::vector<std::pair<double, std::string>>& entries) const {
+  std::string text = "<?xml version=\"1.0\"?>\n";
+  text += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
+  text += "  <Collection>\n";
+  for (const auto& [t, file] : entries)
+    text += fmt::format("    <DataSet timestep=\"{:.9e}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t,
+                        file);
+  text += "  </Collection>\n</VTKFile>\n";
+  write_file_atomically(collection(), text);
 }
 
 }  // namespace mcdyna::io

@@ -4,8 +4,9 @@
 /// compression, fields in single precision as in d3plot: measured on the h = 0.1 elastic-wave
 /// rod (81 states of 14,400 cells), output took 7.3 s with double fields and zlib (level 5),
 /// 3.0 s with float fields and zlib level 1 (120 MB), 1.5 s with float fields and LZ4 (187 MB).
-/// Each file is written under a temporary name and renamed, so every file on disk is complete
-/// even if the run is killed.
+/// Each file is written under a temporary name and renamed, every write checked (WriteError), so
+/// every file on disk is complete even if the run is killed or the disk fills, and the collection
+/// lists only states whose files are whole.
 #include <Eigen/Core>
 
 #include <filesystem>
@@ -33,7 +34,7 @@ class VtkSeries {
   [[nodiscard]] std::filesystem::path collection() const { return dir_ / (base_ + ".pvd"); }
 
  private:
-  void write_collection() const;
+  void write_collection(const std::vector<std::pair<double, std::string>>& entries) const;
   std::filesystem::path dir_;
   std::string base_;
   std::vector<std::pair<double, std::string>> entries_;

@@ -13,8 +13,57 @@ struct PartUse {
   std::size_t solids = 0, shells = 0;
 };
 
+// Output intervals far below ENDTIM ask for more outputs than any run can use; they are written
+// at most once per cycle (io::Outputs), so the deck runs, but the user hears of it.
+constexpr double kMostStates = 1e5, kMostHistoryRows = 1e6;
+
+void check_output_intervals(const ModelDatabase& m, double end_time, core::Diagnostics& diags) {
+  auto warn = [&](core::SourceLoc loc, const std::string& what, double dt, double most) {
+    if (dt > 0.0 && end_time / dt > most)
+      diags.warning(loc,
+                    "{} DT = {:g} asks for {:.3g} outputs over ENDTIM = {:g}: they are written at "
+                    "most once per cycle",
+                    what, dt, end_time / dt, end_time);
+  };
+  if (m.outputs.d3plot && m.outputs.d3plot->interval_curve == 0)
+    warn(m.outputs.d3plot->loc, "*DATABASE_BINARY_D3PLOT", m.outputs.d3plot->interval, kMostStates);
+  for (const AsciiRequest& r : m.outputs.ascii)
+    if (r.interval_curve == 0)
+      warn(r.loc, fmt::format("*DATABASE_{}", ascii_database_name(r.database)), r.interval,
+           kMostHistoryRows);
+}
+
+// DT2MS is the step mass scaling holds the run to (|DT2MS| x TSSFAC): one that is not shorter
+// than the end time makes the whole run a single step with the mass scaled to match.
+void check_mass_scaling(const ModelDatabase& m, double end_time, core::Diagnostics& diags) {
+  if (!m.controls.time_step || !(end_time > 0.0)) return;
+  const TimeStepControl& ts = *m.controls.time_step;
+  const double dt2ms = std::fabs(ts.mass_scaling_step);
+  if (dt2ms >= end_time) {
+    diags.error(ts.loc,
+                "*CONTROL_TIMESTEP DT2MS = {:g} is not shorter than ENDTIM = {:g}: the run would "
+                "be a single step with its mass scaled up to match",
+                ts.mass_scaling_step, end_time);
+  } else if (dt2ms * std::fabs(ts.scale_factor) * 100.0 > end_time) {
+    diags.warning(ts.loc,
+                  "*CONTROL_TIMESTEP DT2MS = {:g} (x TSSFAC {:g}) leaves fewer than 100 steps to "
+                  "ENDTIM = {:g}",
+                  ts.mass_scaling_step, ts.scale_factor, end_time);
+  }
+}
+
 void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_elements) {
-  if (!has_elements) return;
+  if (!has_elements) {
+    // Nodes alone have no mass (elements and their materials give it), so nothing would move.
+    if (m.nodes.empty())
+      diags.error(core::SourceLoc{}, "the deck defines no nodes and no elements: nothing to run");
+    else
+      diags.error(m.nodes.front().loc,
+                  "the deck defines {} node(s) but no elements: nothing to run (elements and "
+                  "their materials give the nodes their mass)",
+                  m.nodes.size());
+    return;
+  }
   if (!m.controls.termination) {
     diags.error(core::SourceLoc{},
                 "the deck has no *CONTROL_TERMINATION: the end time is not "
@@ -26,6 +75,8 @@ void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_e
     diags.error(t.loc, "*CONTROL_TERMINATION: ENDTIM = {} and no ENDCYC; the run would not advance",
                 t.end_time);
   }
+  check_mass_scaling(m, t.end_time, diags);
+  if (t.end_cycle <= 0) check_output_intervals(m, t.end_time, diags);  // ENDCYC may end it early
 }
 
 void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,

@@ -6,6 +6,7 @@
 #include "solver/restart.hpp"
 
 #include <array>
+#include <stdexcept>
 
 namespace mcdyna::solver {
 
@@ -196,15 +197,34 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
-// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC).
+// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC). Each section of
+// kStateSections is checksummed on its own in the dump, so a damaged one is named.
 template <class Ar>
-void fields(Ar& ar, State& s) {
-  ar(s.nodes, s.solids, s.spg, s.rigid_bodies, s.constraints, s.nodal_motions, s.rigid_walls,
-     s.contacts);
-  ar(s.time, s.cycle, s.step, s.next_step, s.controlling_element, s.controlling_domain,
-     s.controlling_particle, s.external_work, s.eroded_kinetic, s.eroded_internal,
-     s.eroded_hourglass, s.initial_energy, s.initial_mass);
+void state_section(Ar& ar, State& s, std::size_t section) {
+  switch (section) {
+    case 0:
+      return ar(s.nodes);
+    case 1:
+      return ar(s.solids);
+    case 2:
+      return ar(s.spg);
+    case 3:
+      return ar(s.rigid_bodies);
+    case 4:
+      return ar(s.constraints, s.nodal_motions);
+    case 5:
+      return ar(s.rigid_walls);
+    case 6:
+      return ar(s.contacts);
+    case 7:
+      return ar(s.time, s.cycle, s.step, s.next_step, s.controlling_element, s.controlling_domain,
+                s.controlling_particle, s.external_work, s.eroded_kinetic, s.eroded_internal,
+                s.eroded_hourglass, s.initial_energy, s.initial_mass);
+    default:
+      throw std::logic_error("no such dump section");
+  }
 }
+static_assert(kStateSections.size() == 8, "state_section() lists one case per section");
 
 std::string dump_layout() {
   std::string out;
@@ -213,12 +233,13 @@ std::string dump_layout() {
   return out;
 }
 
-void save_state(core::OutArchive& ar, const State& state) {
-  ar(const_cast<State&>(state));  // fields() lists members once for both directions; not written
+void save_state_section(core::OutArchive& ar, const State& state, std::size_t section) {
+  // fields() lists members once for both directions; nothing is written to `state`
+  state_section(ar, const_cast<State&>(state), section);
 }
 
-void load_state(core::InArchive& ar, State& state) {
-  ar(state);
+void load_state_section(core::InArchive& ar, State& state, std::size_t section) {
+  state_section(ar, state, section);
 }
 
 void save_resume_point(core::OutArchive& ar, const ResumePoint& point) {

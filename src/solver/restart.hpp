@@ -4,7 +4,9 @@
 /// stopped. What only the deck defines (curves, materials, parts, time controls, body loads) is
 /// not dumped: a restart compiles the same deck again and reads the dump over it (the dump
 /// carries the deck's fingerprint, cli/restart_dump.cpp).
+#include <array>
 #include <string>
+#include <string_view>
 
 #include "core/binary_archive.hpp"
 #include "solver/driver.hpp"
@@ -12,9 +14,15 @@
 
 namespace mcdyna::solver {
 
-/// Writes / reads the state's changing part.
-void save_state(core::OutArchive& ar, const State& state);
-void load_state(core::InArchive& ar, State& state);
+/// The sections the state's changing part is dumped in, in order (each checksummed on its own,
+/// so a damaged dump says which part is damaged).
+inline constexpr std::array<std::string_view, 8> kStateSections = {
+    "nodes",       "solids",   "SPG domains",      "rigid bodies", "constraints and motions",
+    "rigid walls", "contacts", "time and energies"};
+
+/// Writes / reads section `section` (an index into kStateSections) of the state's changing part.
+void save_state_section(core::OutArchive& ar, const State& state, std::size_t section);
+void load_state_section(core::InArchive& ar, State& state, std::size_t section);
 
 /// The sizes of the dumped structs, as text: a dump written by a build whose structs differ
 /// (a member added or removed) is refused instead of being misread.

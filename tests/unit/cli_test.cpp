@@ -35,7 +35,36 @@ TEST_CASE("deck errors exit 1, usage errors exit 2") {
   CHECK(run_mcdyna("frobnicate x.k").exit_code == 2);
   CHECK(run_mcdyna("check " + kDataDir + "all_keywords.k --no-such-flag").exit_code == 2);
   CHECK(run_mcdyna("x=1").exit_code == 2);
-  CHECK(run_mcdyna("check /nonexistent/deck.k").exit_code == 1);
+  // A missing deck is a usage error (running.md's table), for check and run alike.
+  for (const char* command : {"check", "run"}) {
+    const Run missing = run_mcdyna(std::string(command) + " /nonexistent/deck.k");
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.output.find("deck /nonexistent/deck.k: no such file") != std::string::npos);
+  }
+  CHECK(run_mcdyna("run " + d.path().string()).output.find("is a directory") != std::string::npos);
+  // The usage line names the program (CLI11 sees no argv[0] here).
+  CHECK(run_mcdyna("--help").output.find("Usage: mcdyna [OPTIONS] SUBCOMMAND") !=
+        std::string::npos);
+  CHECK(run_mcdyna("run --help").output.find("Usage: mcdyna run [OPTIONS] deck") !=
+        std::string::npos);
+}
+
+TEST_CASE("nothing to run: an empty deck and nodes without elements are deck errors") {
+  mcdyna::test::TempDir d;
+  const auto empty = d.write("empty.k", "");
+  Run r = run_mcdyna("check " + empty.string());
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("the deck defines no nodes and no elements: nothing to run") !=
+        std::string::npos);
+  CHECK(r.output.find("ready to run") == std::string::npos);
+  CHECK(run_mcdyna("run " + empty.string() + " --out " + (d.path() / "o").string()).exit_code == 1);
+  const auto nodes = d.write(
+      "nodes.k", "*CONTROL_TERMINATION\n1.0\n*NODE\n       1             0.0\n       2      1.0\n");
+  r = run_mcdyna("run " + nodes.string() + " --out " + (d.path() / "o2").string());
+  CHECK(r.exit_code == 1);  // was a "time step collapse" (exit 4)
+  CHECK_MESSAGE(r.output.find("nodes.k:4: error: the deck defines 2 node(s) but no elements") !=
+                    std::string::npos,
+                r.output);
 }
 
 TEST_CASE("unsupported physics fails check unless --allow-unsupported, no-effect keywords pass") {

@@ -2,7 +2,15 @@
 // `--restart` and r=): a run continued from a dump writes the same bits as one that never
 // stopped, whatever the thread count, and a dump that does not belong to the deck is refused
 // with a message.
+#include <sys/stat.h>
+
+#include <cstring>
 #include <sstream>
+
+#include "cli/restart_dump.hpp"
+#include "cli/run_command.hpp"
+#include "core/binary_archive.hpp"
+#include "solver/restart.hpp"
 
 #include "solver_support.hpp"
 
@@ -51,6 +59,33 @@ fs::path fds_deck(const TempDir& dir, int cycles, const std::string& extra) {
   deck = with(deck, "*DATABASE_BINARY_D3PLOT\n1.2138E-05", "*DATABASE_BINARY_D3PLOT\n2.0E-06");
   deck = with(deck, "\n*PART\n", "\n" + extra + "*PART\n");
   return dir.write("fds.k", deck);
+}
+
+// Where each section of a dump lies (cli/restart_dump.cpp: after the 24-byte prologue, each
+// section is its name as length + text, its payload size, its checksum, then the payload).
+struct DumpSection {
+  std::string name;
+  std::size_t header = 0, payload = 0, size = 0;
+};
+std::vector<DumpSection> dump_sections(const std::string& bytes) {
+  std::vector<DumpSection> out;
+  std::size_t at = 24;
+  auto word = [&](std::size_t offset) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, bytes.data() + offset, 8);
+    return static_cast<std::size_t>(v);
+  };
+  while (at + 8 <= bytes.size()) {
+    DumpSection sec;
+    sec.header = at;
+    const std::size_t length = word(at);
+    sec.name = bytes.substr(at + 8, length);
+    sec.size = word(at + 8 + length);
+    sec.payload = at + 8 + length + 16;
+    at = sec.payload + sec.size;
+    out.push_back(sec);
+  }
+  return out;
 }
 
 std::string run_args(const fs::path& deck, const fs::path& out, const std::string& more = "") {
@@ -231,8 +266,9 @@ TEST_CASE(
   r = run_mcdyna(run_args(deck, dir.path() / "o3", "--restart " + (dir.path() / "half").string()));
   CHECK(r.exit_code == 1);
   CHECK_MESSAGE(r.output.find("ends early (truncated file?)") != std::string::npos, r.output);
-  // Another format version, and another build's solver state (the dump opens with 20 bytes of
-  // magic, the 4-byte version, then the length and text of the struct-size list).
+  // Another format version, and another build's solver state: the dump opens with 20 bytes of
+  // magic and the 4-byte version, then the header section (its name, size and checksum, then
+  // the length and text of the struct-size list). Another build writes a valid checksum.
   std::string other_version = bytes;
   other_version[20] = 99;
   dir.write("version", other_version);
@@ -240,10 +276,16 @@ TEST_CASE(
       run_args(deck, dir.path() / "o6", "--restart " + (dir.path() / "version").string()));
   CHECK(r.exit_code == 1);
   CHECK_MESSAGE(r.output.find("dump format 99") != std::string::npos, r.output);
+  const std::vector<DumpSection> sections = dump_sections(bytes);
+  REQUIRE(sections.front().name == "header");
   std::string other_build = bytes;
-  REQUIRE(other_build[32] >= '1');
-  REQUIRE(other_build[32] <= '9');
-  other_build[32] = other_build[32] == '9' ? '1' : '9';
+  const std::size_t layout_text = sections.front().payload + 8;
+  REQUIRE(other_build[layout_text] >= '1');
+  REQUIRE(other_build[layout_text] <= '9');
+  other_build[layout_text] = other_build[layout_text] == '9' ? '1' : '9';
+  const std::uint64_t sum = core::checksum(
+      std::string_view(other_build).substr(sections.front().payload, sections.front().size));
+  std::memcpy(other_build.data() + sections.front().payload - 8, &sum, 8);
   dir.write("build", other_build);
   r = run_mcdyna(run_args(deck, dir.path() / "o7", "--restart " + (dir.path() / "build").string()));
   CHECK(r.exit_code == 1);
@@ -261,6 +303,85 @@ TEST_CASE(
   r = run_mcdyna("r=" + (out / "d3dump01").string());
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("r=DUMP needs i=DECK too") != std::string::npos);
+}
+
+TEST_CASE("restart: a flipped bit in any section of a dump is refused, naming the section") {
+  TempDir dir;
+  const std::string text = eroding_bar_run("*DATABASE_BINARY_D3DUMP\n        40\n");
+  const fs::path deck = dir.write("bar.k", text);
+  const fs::path out = dir.path() / "out";
+  REQUIRE(run_mcdyna(run_args(deck, out)).exit_code == 0);
+  const std::string bytes = read_text(out / "d3dump01");
+  const std::vector<DumpSection> sections = dump_sections(bytes);
+  REQUIRE(sections.size() == 3 + solver::kStateSections.size() + 1);
+  CHECK(sections.back().name == "end of dump");
+  CHECK(sections.back().payload == bytes.size());
+
+  // Read in this process (as `run --restart` does) over the state compiled from the same deck.
+  Simulation sim = prepare(dir, read_text(deck));
+  const std::string print = cli::run_fingerprint(sim.loaded->deck.files, cli::RunOptions{});
+  const fs::path damaged = dir.path() / "damaged";
+  auto refusal = [&](std::size_t offset, int bit) -> std::string {
+    std::string b = bytes;
+    b[offset] = static_cast<char>(b[offset] ^ (1 << bit));
+    dir.write("damaged", b);
+    try {
+      cli::read_dump(damaged, print, *sim.state);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  REQUIRE(refusal(0, 0).find("not an mcdyna restart dump") != std::string::npos);
+  int refused = 0;
+  for (const DumpSection& sec : sections) {
+    CAPTURE(sec.name);
+    // The section's bytes: first, middle and last byte, low and high bits.
+    for (const std::size_t at :
+         {sec.payload, sec.payload + sec.size / 2, sec.payload + sec.size - 1}) {
+      if (sec.size == 0) break;
+      for (const int bit : {0, 7}) {
+        const std::string m = refusal(at, bit);
+        CHECK_MESSAGE(m.find("section '" + sec.name + "' is damaged") != std::string::npos, m);
+        ++refused;
+      }
+    }
+    // Its name, size and checksum: refused too (the message may name the next section).
+    for (const std::size_t at :
+         {sec.header + 8, sec.payload - 16, sec.payload - 9, sec.payload - 1}) {
+      const std::string m = refusal(at, 6);
+      CHECK_MESSAGE(m != "accepted", at);
+      CHECK(m.find("restart dump") != std::string::npos);
+      ++refused;
+    }
+  }
+  MESSAGE(refused, " damaged copies refused, in ", sections.size(), " sections");
+  // Bytes after the end, and the whole process on one damaged copy: exit 1 with the message.
+  dir.write("longer", bytes + "x");
+  CHECK_THROWS_WITH_AS(cli::read_dump(dir.path() / "longer", print, *sim.state),
+                       doctest::Contains("1 bytes after its end"), std::runtime_error);
+  std::string b = bytes;
+  b[sections[4].payload + sections[4].size / 2] ^= 0x10;
+  dir.write("damaged", b);
+  const Run r = run_mcdyna(run_args(deck, dir.path() / "o1", "--restart " + damaged.string()));
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(r.output.find("section '" + sections[4].name + "' is damaged") != std::string::npos,
+                r.output);
+}
+
+TEST_CASE("restart: --restart on a FIFO or a directory is refused at once, not read") {
+  TempDir dir;
+  const fs::path deck = dir.write("bar.k", eroding_bar_run(""));
+  const fs::path fifo = dir.path() / "fifo";
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  // A read of a FIFO blocks until a writer comes; the timeout turns a block into exit 124.
+  Run r = run_mcdyna(run_args(deck, dir.path() / "o1", "--restart " + fifo.string()), "timeout 20");
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(r.output.find("not a regular file") != std::string::npos, r.output);
+  r = run_mcdyna(run_args(deck, dir.path() / "o2", "--restart " + dir.path().string()),
+                 "timeout 20");
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("not a regular file") != std::string::npos);
 }
 
 TEST_CASE("restart: LS-DYNA's i= r= continues in the working directory") {

@@ -2,54 +2,17 @@
 // reader), the exit codes of an unstable and of an interrupted run.
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
 
 #include <sstream>
 
 #include "io/history_table.hpp"
+#include "output_support.hpp"
 #include "post/history_compare.hpp"
-#include "solver_support.hpp"
 
 namespace mcdyna::test {
 
 namespace {
-
-// The .vtu files listed in a .pvd collection, in order.
-std::vector<std::string> collection(const std::filesystem::path& pvd) {
-  const std::string text = read_text(pvd);
-  std::vector<std::string> files;
-  const std::string key = "file=\"";
-  for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at)) {
-    at += key.size();
-    files.push_back(text.substr(at, text.find('"', at) - at));
-  }
-  return files;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::filesystem::path& p) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(p.string().c_str());
-  reader->Update();
-  REQUIRE(reader->GetErrorCode() == 0);
-  return reader->GetOutput();
-}
-
-// Every CSV row has as many fields as the header.
-void check_csv_whole(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::string header, line;
-  REQUIRE(std::getline(in, header));
-  const auto fields = std::count(header.begin(), header.end(), ',');
-  int rows = 0;
-  while (std::getline(in, line)) {
-    CHECK(std::count(line.begin(), line.end(), ',') == fields);
-    ++rows;
-  }
-  CHECK(rows > 0);
-}
 
 // Our ASCII file and CSV of one kind, read back by `mcdyna compare`'s readers, give the same
 // columns and the same curves to the digits the ASCII layout prints: `tolerance` is max|A-B| /
