@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,21 @@
 namespace {
 
 constexpr int kExitUsage = 2;
+
+// A number option that must be finite: CLI11's number checks let "nan" through (every
+// comparison with NaN is false), and a NaN tolerance or window makes every answer meaningless.
+const CLI::Validator kFinite(
+    [](std::string& text) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
+        return "expected a finite number, got " + text;
+      return {};
+    },
+    "FINITE");
+
+// --points: at most ten million (a resampled column pair is then 160 MB; no history has that
+// many rows), so a mistyped count is a usage error, not a failed allocation of gigabytes.
+constexpr std::size_t kMostPoints = 10'000'000;
 
 // Rewrites LS-DYNA style "key=value" arguments (i=, r=, ncpu=, memory=) into subcommand form.
 // Returns false with a message for an unknown key.
@@ -142,13 +158,16 @@ int main(int argc, char** argv) {
   cmp_cmd->add_option("--x", cmp.compare.x_a, "column to align on (name or index)")
       ->capture_default_str();
   cmp_cmd->add_option("--x-b", cmp.compare.x_b, "alignment column in B when named differently");
-  cmp_cmd->add_option("--points", cmp.compare.points,
-                      "resampling points (default: the denser file's count in the common range)");
-  cmp_cmd->add_option("--from", cmp.compare.from, "start of the compared range of x");
-  cmp_cmd->add_option("--to", cmp.compare.to, "end of the compared range of x");
+  cmp_cmd
+      ->add_option("--points", cmp.compare.points,
+                   "resampling points (default: the denser file's count in the common range)")
+      ->check(CLI::Range(std::size_t{2}, kMostPoints));
+  cmp_cmd->add_option("--from", cmp.compare.from, "start of the compared range of x")
+      ->check(kFinite);
+  cmp_cmd->add_option("--to", cmp.compare.to, "end of the compared range of x")->check(kFinite);
   cmp_cmd
       ->add_option("--tol", cmp.tolerance, "exit 1 when a column's max|A-B| / peak|B| exceeds this")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kFinite & CLI::NonNegativeNumber);
   cmp_cmd->add_option("--plot", cmp.plot, "PNG with both curves and their difference");
   cmp_cmd->add_option("--csv", cmp.csv, "write the resampled curves as CSV");
 

@@ -48,6 +48,10 @@ class WideTableBuilder {
   /// Starts a new row unconditionally (plain CSV).
   void new_row();
   void set(const std::string& name, double value);
+  /// Registers a column (NaN-padded to the rows so far) and returns its index for set_at().
+  std::size_t add_column(const std::string& name);
+  /// Sets the current row's value of a column from add_column() (a row must be started).
+  void set_at(std::size_t column, double value);
   HistoryTable finish(const std::string& source, const std::string& format);
 
  private:

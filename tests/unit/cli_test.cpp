@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "cli/progress.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -130,3 +131,12 @@ TEST_CASE("the shipped flow-drill-screw decks read clean") {
 }
 
 }  // namespace mcdyna::test
+
+TEST_CASE("progress: a refreshed line covers all of a longer one before it") {
+  // "\r" returns to the start of the terminal line without clearing it: "ETA 16.2 ss" was the
+  // end of "ETA 116.2 s" left standing.
+  using mcdyna::cli::Progress;
+  CHECK(Progress::refreshed("ETA 16.2 s", 11) == "\rETA 16.2 s ");
+  CHECK(Progress::refreshed("ETA 116.2 s", 10) == "\rETA 116.2 s");
+  CHECK(Progress::refreshed("x", 0) == "\rx");
+}

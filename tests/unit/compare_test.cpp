@@ -308,3 +308,50 @@ TEST_CASE("mcdyna compare: the report, --tol as the exit code, --csv and --plot"
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("history reader: endless, binary and odd files are located errors, never memory") {
+  // /dev/zero has no line end: refused at its first line once it passes the line limit (it
+  // read until bad_alloc, 6-11 s and gigabytes). /dev/urandom holds a NUL within its first lines.
+  CHECK(error_of([] { io::read_history("/dev/zero"); }) ==
+        "/dev/zero:1:1: error: a line longer than 1048576 characters: not a history file");
+  CHECK(error_of([] { io::read_history("/dev/urandom"); }).find("error: a NUL byte") !=
+        std::string::npos);
+  // A NUL byte cut the messages that quoted the name it was in.
+  CHECK(error_of([] { io::read_history_text(std::string("time,fo\0rce\n0,1\n", 16), "n.csv"); }) ==
+        "n.csv:1:8: error: a NUL byte: not a text file");
+  // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+  const io::HistoryTable bom = io::read_history_text("\xEF\xBB\xBFtime,force\n0,0\n1,2\n", "b.csv");
+  CHECK(bom.names == std::vector<std::string>{"time", "force"});
+  // Two columns of one name were merged into one silently.
+  CHECK(error_of([] {
+          io::read_history_text("time,force,force\n0,1,2\n", "d.csv");
+        }).find("d.csv:1:12: error: column name 'force' appears twice") != std::string::npos);
+  TempDir dir;
+  CHECK(error_of([&] { io::read_history(dir.path()); }) ==
+        dir.path().string() + ": error: is a directory");
+  // The rows of a CSV are read one by one into the columns: the same table as before.
+  const io::HistoryTable t = io::read_history_text("time;a;b\r\n0;1;2\r\n\r\n1;3;4\r\n", "s.csv");
+  REQUIRE(t.rows() == 2);
+  CHECK(value(t, "b", 1) == 4.0);
+}
+
+TEST_CASE("mcdyna compare: NaN or absurd option values are usage errors") {
+  TempDir dir;
+  const std::string a = dir.write("a.csv", "time,force\n0,0\n1,1\n2,4\n").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"--tol nan", "--tol: expected a finite number, got nan"},
+      {"--from nan", "--from: expected a finite number, got nan"},
+      {"--to inf", "--to: expected a finite number, got inf"},
+      {"--points 4000000000", "--points: Value 4000000000 not in range 2 to 10000000"}};
+  for (const auto& [option, message] : cases) {
+    CAPTURE(option);
+    const Run r = run_mcdyna("compare " + a + " " + a + " " + option);
+    CHECK(r.exit_code == 2);
+    CHECK_MESSAGE(r.output.find(message) != std::string::npos, r.output);
+  }
+  CHECK(run_mcdyna("compare " + a + " " + a + " --tol 0.01").exit_code == 0);
+}
+
+}  // namespace mcdyna::test
