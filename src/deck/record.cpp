@@ -165,7 +165,9 @@ void KeywordRecord::fill_defaults(const CardSpec& spec, Row& row) const {
     FieldValue& v = row.values_[i];
     v = FieldValue{};
     v.real = f.default_number;
-    v.integer = static_cast<std::int64_t>(f.default_number);
+    // Real fields default to numbers such as 1e21 (MAT_024 FAIL) that no integer holds.
+    v.integer =
+        std::fabs(f.default_number) < 9.0e18 ? static_cast<std::int64_t>(f.default_number) : 0;
     v.text = f.default_text;
   }
 }
@@ -285,6 +287,12 @@ bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int co
     number = *r;
   }
   if (f.zero_means_default && number == 0.0) return true;  // "EQ.0: default" fields stay default
+  // A value outside the field's allowed set is reported and the field keeps its default: the
+  // builders index tables by such codes (KERNEL 5 read past kSmstepDefault[3]).
+  if (!f.constraint.allows(number)) {
+    return report(fmt::format("value {} is not allowed (must be {})", core::excerpt(s),
+                              f.constraint.describe()));
+  }
   if (f.type == FieldType::integer) {
     if (std::fabs(number) > 9.0e18) return report("integer out of range");
     v.integer = static_cast<std::int64_t>(number);
@@ -293,9 +301,6 @@ bool KeywordRecord::parse_field(const FieldSpec& f, std::string_view raw, int co
   } else {
     v.kind = FieldValue::Kind::real;
     v.real = number;
-  }
-  if (!f.constraint.allows(number)) {
-    return report(fmt::format("value {} is not allowed (must be {})", s, f.constraint.describe()));
   }
   return true;
 }

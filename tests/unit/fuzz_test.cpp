@@ -86,6 +86,10 @@ TEST_CASE("hostile inputs: empty, binary, NUL bytes, one huge line, keyword-only
   expect_clean_failure("*PARAMETER\nQ bad 1\n*PARAMETER_DUPLICATION\nxx\n", "bad parameter");
   expect_clean_failure("*SET_NODE_LIST_GENERATE\n1\n1,999999999999\n", "huge generate range");
   expect_clean_failure("*INCLUDE\n/dev/null\n/\n.\n\n +\n", "odd include names");
+  // Found by libFuzzer (tools/fuzz_reader.sh): a code outside its allowed set reached a builder
+  // that indexes a table by it (KERNEL 5: kSmstepDefault[5], an out-of-bounds read under ASan).
+  auto kernel = test::load_text("*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,5\n");
+  CHECK(kernel->has_message("field KERNEL: value 5 is not allowed (must be one of {0, 1, 2, 3})"));
 }
 
 TEST_CASE("include trouble: missing, cycles, self include, deep chains, directories") {

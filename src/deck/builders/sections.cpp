@@ -69,7 +69,7 @@ void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m) {
                           ? (spg.kernel_update == 2 ? 2 : 1)
                           : static_cast<int>(c3.integer("ITB"));
   spg.surface_quadrature_factor = c3.real("MSFAC");
-  spg.self_contact = static_cast<int>(c3.real("ISC"));
+  spg.self_contact = c3.real("ISC") != 0.0 ? 1 : 0;  // a flag written as a real (any 1e30 too)
   spg.box = c3.integer("BOXID");
   spg.particle_damping = c3.real("PDAMP");
   if (spg.failure_stretch < 1.0) {
