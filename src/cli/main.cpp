@@ -143,6 +143,22 @@ int main(int argc, char** argv) {
                    "SPG parts: coefficient of the low-energy-mode stiffness (default from the "
                    "deck: 0.5 with MSC = 1, else 0; 0 turns it off)")
       ->check(CLI::NonNegativeNumber);
+  run_cmd
+      ->add_option("--spg-step", run.spg_step,
+                   "SPG particle step estimate: nn (nearest-neighbour distance, default) or "
+                   "eigen (stiffness lengths scaled every cycle to the largest eigenvalue of the "
+                   "linearised equations, by power iteration)")
+      ->check(CLI::IsMember({"nn", "eigen"}));
+  run_cmd
+      ->add_option("--fixed-step", run.fixed_step,
+                   "probe: take this step every cycle whatever the stable-step estimate, add no "
+                   "mass, write no restart dump (to measure the true critical step from a dump)")
+      ->check(CLI::PositiveNumber & kFinite);
+  run_cmd->add_option("--cycles", run.cycles, "stop after this many cycles of this run")
+      ->check(CLI::Range(1L, 1000000000000L));
+  run_cmd->add_option("--step-log", run.step_log,
+                      "write one CSV row per cycle: the step, what sets it, and the particle "
+                      "with the smallest step at its physical mass");
 
   mcdyna::cli::CompareCommandOptions cmp;
   auto* cmp_cmd = app.add_subcommand(

@@ -20,6 +20,7 @@
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/restart_dump.hpp"
+#include "cli/step_log.hpp"
 #include "deck/deck.hpp"
 #include "io/checked_file.hpp"
 #include "io/outputs.hpp"
@@ -118,6 +119,23 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
 // After the run: what the particle kernels did (neighbours, renewals, bonds, degeneracy).
 void print_spg_summary(std::ostream& out, const solver::State& s) {
   for (const solver::spg::Domain& d : s.spg) {
+    if (d.initial_critical_step > 0.0 &&
+        d.settings.step_estimate != solver::spg::StepEstimate::eigenvalue)
+      fmt::print(out,
+                 "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
+                 "eigenvalue by power iteration)\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.initial_critical_step);
+    else if (d.initial_critical_step > 0.0)
+      fmt::print(out,
+                 "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
+                 "eigenvalue by power iteration), the smallest {:.4e} s at t = {:.6e} (mode "
+                 "largest at node {}); particle steps scaled to it every cycle\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.initial_critical_step,
+                 d.smallest_critical_step, d.smallest_critical_time,
+                 d.smallest_critical_particle >= 0
+                     ? s.nodes.ids[static_cast<std::size_t>(
+                           d.nodes[static_cast<std::size_t>(d.smallest_critical_particle)])]
+                     : 0);
     const double pairs = static_cast<double>(d.list.neighbours.size());
     fmt::print(out,
                "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals "
@@ -169,8 +187,8 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
 std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options) {
   // The options that change the physics go into the dump's fingerprint with the deck's text.
   return deck_fingerprint(
-      files, fmt::format("stabilization={};renewal={};msc={}", options.spg_stabilization,
-                         options.spg_renewal_strain, options.spg_mode_control));
+      files, fmt::format("stabilization={};renewal={};msc={};step={}", options.spg_stabilization,
+                         options.spg_renewal_strain, options.spg_mode_control, options.spg_step));
 }
 
 namespace {
@@ -231,6 +249,9 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.spg_mode_control >= 0.0)
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.mode_control = options.spg_mode_control;
+  if (options.spg_step == "eigen")
+    for (solver::spg::Domain& dom : state->spg)
+      dom.settings.step_estimate = solver::spg::StepEstimate::eigenvalue;
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
     fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,
@@ -247,6 +268,22 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     } catch (const std::exception& e) {
       fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
       return kRunDeckErrors;
+    }
+  }
+
+  if (options.fixed_step > 0.0) {
+    state->time_control.fixed_step = options.fixed_step;
+    state->mass_scaling_dt = 0.0;
+  }
+  if (options.cycles > 0) state->time_control.end_cycle = state->cycle + options.cycles;
+  std::optional<StepLog> step_log;
+  if (!options.step_log.empty()) {
+    try {
+      step_log.emplace(options.step_log);
+    } catch (const std::exception& e) {
+      fmt::print(err, "mcdyna: error: --step-log: {}\nmcdyna: {} not run\n", e.what(),
+                 options.deck.string());
+      return kRunUsage;
     }
   }
 
@@ -323,11 +360,19 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
   hooks.progress = [&](const solver::State& s) {
     progress.update(s);
+    if (step_log && output_failure.empty()) {
+      try {
+        step_log->add(s);
+      } catch (const io::WriteError& e) {
+        output_failure = e.what();
+      }
+    }
     if (!log && output_failure.empty())
       output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
   };
   hooks.dump_due = [&](const solver::State& s, bool interrupted) {
-    return output_failure.empty() && dumps.due(s.cycle, interrupted);
+    // A fixed-step probe leaves no dump: continuing it would not repeat the deck's run.
+    return output_failure.empty() && options.fixed_step <= 0.0 && dumps.due(s.cycle, interrupted);
   };
   std::filesystem::path last_dump;
   hooks.dump = [&](const solver::State& s, const solver::ResumePoint& point) {
@@ -349,6 +394,13 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   };
   const solver::RunResult result = solver::run(*state, hooks, dump ? &dump->point : nullptr);
   progress.finish();
+  if (step_log && output_failure.empty()) {
+    try {
+      step_log->flush();
+    } catch (const io::WriteError& e) {
+      output_failure = e.what();
+    }
+  }
   std::signal(SIGINT, old_int);
   std::signal(SIGTERM, old_term);
 

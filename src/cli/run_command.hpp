@@ -22,6 +22,14 @@ struct RunOptions {
   /// SMSTEP check); negative: the default of the solver
   double spg_renewal_strain = -1.0;
   double spg_mode_control = -1.0;  ///< < 0: from the deck (MSC)
+  /// --spg-step: "nn" (nearest-neighbour length, default) or "eigen" (stiffness length scaled to
+  /// the largest eigenvalue by power iteration every cycle)
+  std::string spg_step;
+  /// --fixed-step: every cycle takes this step, no mass scaling, no restart dumps (a probe for
+  /// the true critical step; not part of the dump fingerprint so it can start from any dump)
+  double fixed_step = 0.0;
+  long cycles = 0;                    ///< --cycles: stop after this many cycles of this run
+  std::filesystem::path step_log;     ///< --step-log: per-cycle CSV of what sets the step
   /// --restart / r=: continue the run from this dump (written by the same deck and options)
   std::filesystem::path restart;
 };

@@ -164,6 +164,7 @@ void advance_positions(State& s, double dt) {
 
 double choose_step(const State& s, const ForcePass& r, bool first) {
   const TimeControl& tc = s.time_control;
+  if (tc.fixed_step > 0.0) return tc.fixed_step;
   // Without deformable elements (rigid bodies only) DTINIT is the step.
   double dt = std::isfinite(r.critical_step) ? tc.scale_factor * r.critical_step
                                              : std::max(tc.initial_step, 0.0);
@@ -200,6 +201,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     pass = compute_forces(s);
     clock.charge(PhaseTimes::elements);
   }
+  s.critical_step = pass.critical_step;
   const double earlier_wall = resume ? resume->wall_seconds : 0.0;
   const double earlier_core = resume ? resume->core_seconds : 0.0;
   const int threads = omp_get_max_threads();
@@ -296,6 +298,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     s.controlling_element = pass.controlling_element;
     s.controlling_domain = pass.controlling_domain;
     s.controlling_particle = pass.controlling_particle;
+    s.critical_step = pass.critical_step;
     if (hooks.progress) hooks.progress(s);
   }
   // The SPG work ran inside the element phase; show it split (neighbour search, shape

@@ -30,7 +30,7 @@ constexpr std::array<std::size_t, 16> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 16>{248, 512, 64, 80, 528, 72, 112, 136, 240,
-                                                          1384, 1416, 88, 360, 328, 144, 160},
+                                                          1392, 1536, 96, 360, 328, 144, 160},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -116,7 +116,7 @@ template <class Ar>
 void fields(Ar& ar, SpgSettings& s) {
   ar(s.shape, s.kernel_update, s.renewal_interval, s.renewal_strain, s.stabilization,
      s.bond_failure, s.failure_strain, s.failure_stretch, s.damping, s.surface_factor,
-     s.mode_control, s.bulk_viscosity);
+     s.mode_control, s.bulk_viscosity, s.step_estimate);
 }
 
 template <class Ar>
@@ -156,13 +156,16 @@ void fields(Ar& ar, Domain& d) {
   ar(d.support, d.reference_deformation, d.list, d.shape, d.transpose, d.smoothed_mass,
      d.added_mass, d.mass_request, d.pinned, d.length, d.mobility, d.mobility_scale,
      d.largest_mobility, d.largest_mobility_particle, d.largest_mobility_time, d.step,
-     d.renewal_volume, d.gradient_length_scale, d.steps_since_renewal, d.renewals, d.renewed_rows,
+     d.renewal_volume, d.stiffness_length, d.stiffness_length_scale,
+     d.initial_critical_step, d.critical_step, d.smallest_critical_step,
+     d.smallest_critical_particle, d.smallest_critical_time, d.frequency_mode, d.pass_step, d.gradient_length_scale, d.steps_since_renewal, d.renewals, d.renewed_rows,
      d.isolated, d.degenerate_events, d.first_degenerate, d.first_degenerate_time);
   ar(d.unsmoothed, d.unsmoothed_previous, d.smoothed);
   ar(d.points, d.pressure, d.eos_energy, d.temperature, d.viscosity, d.internal_energy, d.failed,
      d.deformation, d.stress_gradient, d.damping_energy);
   ar(d.mode_stiffness, d.mode_residual, d.mode_force, d.mode_energy);
-  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times);
+  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times, d.physical_step,
+     d.physical_step_particle);
 }
 
 }  // namespace spg
@@ -197,7 +200,7 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
-// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC). Each section of
+// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by --fixed-step). Each section of
 // kStateSections is checksummed on its own in the dump, so a damaged one is named.
 template <class Ar>
 void state_section(Ar& ar, State& s, std::size_t section) {
@@ -217,7 +220,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 6:
       return ar(s.contacts);
     case 7:
-      return ar(s.time, s.cycle, s.step, s.next_step, s.controlling_element, s.controlling_domain,
+      return ar(s.time, s.cycle, s.step, s.critical_step, s.controlling_element, s.controlling_domain,
                 s.controlling_particle, s.external_work, s.eroded_kinetic, s.eroded_internal,
                 s.eroded_hourglass, s.initial_energy, s.initial_mass);
     default:

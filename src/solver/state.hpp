@@ -195,6 +195,9 @@ struct TimeControl {
   double min_step_factor = 0.0;
   double mass_scaling_step = 0.0;  ///< DT2MS (signed as in the deck)
   Index max_step_curve = -1;       ///< LCTM
+  /// `mcdyna run --fixed-step`: every cycle takes this step whatever the stable-step estimate
+  /// says, and no mass is added (a probe for the true critical step, tools/verify/critical_step.py).
+  double fixed_step = 0.0;
 };
 
 struct State {
@@ -217,7 +220,7 @@ struct State {
   double time = 0.0;
   long cycle = 0;
   double step = 0.0;                   ///< last step dt^{n-1/2}
-  double next_step = 0.0;              ///< step to take next
+  double critical_step = 0.0;          ///< stable-step estimate of the last force pass (no TSSFAC)
   Index controlling_element = -1;      ///< solid giving the step, or -1
   std::size_t controlling_domain = 0;  ///< SPG domain of controlling_particle
   Index controlling_particle = -1;     ///< particle giving the step, or -1

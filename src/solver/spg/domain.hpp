@@ -61,6 +61,12 @@ inline constexpr double kCompressionRenewalShare = 0.2;
 /// the neck spreads (gap at the notch 0.79 mm; FE 0.99, 0.5: 0.85).
 inline constexpr double kModeControl = 0.5;
 
+/// `--spg-step`: how a particle's stable step is estimated (particle_pass.cpp step_length).
+enum class StepEstimate {
+  nearest_neighbour,  ///< nearest-neighbour distance at the renewal x smallest stretch (default)
+  eigenvalue  ///< stiffness length scaled every cycle to the largest eigenvalue (power iteration)
+};
+
 struct SpgSettings {
   KernelShape shape = KernelShape::cubic_box;
   int kernel_update = 0;      ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
@@ -80,6 +86,7 @@ struct SpgSettings {
   /// paper's MC-SPG alone.
   double mode_control = 0.0;
   BulkViscosityParams bulk_viscosity;
+  StepEstimate step_estimate = StepEstimate::nearest_neighbour;
 };
 
 /// Wall-clock seconds of the SPG work, for the phase table.
@@ -130,6 +137,18 @@ struct Domain {
   /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
   std::vector<double> step;
   std::vector<double> renewal_volume;  ///< volume at the renewal
+  /// The length whose step bounds the particle's frequencies by the stiffness of its shape
+  /// functions (Gershgorin, stiffness_length.cpp), at the renewal; the step uses it times the
+  /// smallest stretch since. Scaled by stiffness_length_scale (from the first renewal).
+  std::vector<double> stiffness_length;
+  double stiffness_length_scale = 1.0;
+  double initial_critical_step = 0.0;  ///< 2 / omega_max of the initial arrangement (0: none)
+  double critical_step = 0.0;          ///< 2 / omega_max at the last pass (one iteration)
+  double smallest_critical_step = 0.0;  ///< the smallest of the run, where the mode was, when
+  Index smallest_critical_particle = -1;
+  double smallest_critical_time = 0.0;
+  Eigen::Matrix3Xd frequency_mode;     ///< the power iteration's last vector (warm start)
+  double pass_step = 0.0;              ///< shortest particle step of the last pass (no TSSFAC)
   /// Largest nearest-neighbour distance x gradient norm (sum_K |grad phi_K|^2)^(1/2) of the rows
   /// at the first renewal: a row whose gradients later grow past it (an ill-conditioned, torn
   /// neighbourhood) gets the shorter length kappa / |grad phi| (renewal.cpp).
@@ -169,6 +188,10 @@ struct Domain {
   /// renewed (particle_pass.cpp).
   std::vector<std::uint8_t> debris;
   SpgTimes times;
+  /// The smallest particle step of the last pass with the physical masses (before DT2MS mass
+  /// scaling, before TSSFAC) and its particle: what the step would be without mass scaling.
+  double physical_step = 0.0;
+  Index physical_step_particle = -1;
 
   [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
 };

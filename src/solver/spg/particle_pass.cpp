@@ -18,6 +18,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Outcome {
   double step = std::numeric_limits<double>::infinity();
+  double physical_step = std::numeric_limits<double>::infinity();  ///< before mass scaling
   bool inverted = false;
   bool released = false;
   bool mass_added = false;
@@ -82,18 +83,25 @@ Outcome release_or_invert(Domain& d, Index j) {
   return {std::numeric_limits<double>::infinity(), false, true};
 }
 
-// The length that bounds particle j's step: its nearest-neighbour distance at the renewal times
-// the smallest principal stretch of F-hat (relative to that reference), capped by the isotropic
-// length L (V / V_renewal)^(1/3) used for the viscosity and the mode stiffness. For an affine
-// motion of the support every neighbour distance |F-hat dX| is at least sigma_min |dX|, so this
-// follows the most compressed direction: under the flat screw tip at h 0.125 the rows are
-// squeezed axially (stretch ~0.6, volume ratio ~0.8) and the isotropic length overestimated the
-// stable step enough to blow the plate up at 7.4 us (TSSFAC 0.9; it ran at 0.6).
-double step_length(double renewal_length, const Mat3& f_hat, double isotropic_length) {
+// The length that bounds particle j's step, times the smallest principal stretch of F-hat
+// since the renewal: for an affine motion of the support every neighbour distance |F-hat dX| is
+// at least sigma_min |dX|, and the current gradients F-hat^-T grad phi at most
+// |grad phi| / sigma_min, so this follows the most compressed direction: under the flat screw
+// tip at h 0.125 the rows are squeezed axially (stretch ~0.6, volume ratio ~0.8) and the
+// isotropic length L (V / V_renewal)^(1/3) overestimated the stable step enough to blow the
+// plate up at 7.4 us (TSSFAC 0.9; it ran at 0.6).
+//   nearest_neighbour: the nearest-neighbour distance at the renewal, capped by the isotropic
+//     length (the verified default; far too strict for squeezed pairs, manual/verification.md)
+//   eigenvalue: the stiffness length (stiffness_length.cpp), scaled every cycle to the largest
+//     eigenvalue of the linearised equations
+double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic_length) {
   Eigen::SelfAdjointEigenSolver<Mat3> eig;
   eig.computeDirect(f_hat.transpose() * f_hat, Eigen::EigenvaluesOnly);
   const double smallest = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
-  return std::min(isotropic_length, renewal_length * smallest);
+  const auto jj = static_cast<std::size_t>(j);
+  if (d.settings.step_estimate == StepEstimate::eigenvalue)
+    return d.stiffness_length[jj] * smallest;
+  return std::min(isotropic_length, d.length[jj] * smallest);
 }
 
 // Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.stress_gradient.
@@ -154,10 +162,11 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
   d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
-  Outcome o{element_step(d.settings.bulk_viscosity, step_length(d.length[jj], f_hat, length),
+  Outcome o{element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length),
                          vol.sound, k.trace) /
                 std::sqrt(d.mobility[jj]),
             false, false};
+  o.physical_step = o.step;
   scale_particle_mass(s, d, j, o);
   return o;
 }
@@ -201,12 +210,15 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     else
       d.steps_since_renewal = 0;
   }
+  if (d.settings.step_estimate == StepEstimate::eigenvalue) recalibrate_stiffness_length(s, d);
   ++d.steps_since_renewal;
   auto start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   const Index n = d.count();
   double best = std::numeric_limits<double>::infinity();
   Index controlling = -1;
+  double best_physical = std::numeric_limits<double>::infinity();
+  Index controlling_physical = -1;
   Index inverted = std::numeric_limits<Index>::max();
   Index non_finite = std::numeric_limits<Index>::max();
   long released = 0;
@@ -216,6 +228,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   {
     double local_best = std::numeric_limits<double>::infinity();
     Index local_controlling = -1;
+    double local_physical = std::numeric_limits<double>::infinity();
+    Index local_controlling_physical = -1;
     Index local_inverted = std::numeric_limits<Index>::max();
     Index local_non_finite = std::numeric_limits<Index>::max();
 #pragma omp for schedule(static, 128) nowait
@@ -233,6 +247,10 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
         local_best = o.step;
         local_controlling = j;
       }
+      if (o.physical_step < local_physical) {
+        local_physical = o.physical_step;
+        local_controlling_physical = j;
+      }
     }
 #pragma omp critical
     {
@@ -240,6 +258,12 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
                                 (controlling < 0 || local_controlling < controlling))) {
         best = local_best;
         controlling = local_controlling;
+      }
+      if (local_physical < best_physical ||
+          (local_physical == best_physical && local_controlling_physical >= 0 &&
+           (controlling_physical < 0 || local_controlling_physical < controlling_physical))) {
+        best_physical = local_physical;
+        controlling_physical = local_controlling_physical;
       }
       inverted = std::min(inverted, local_inverted);
       non_finite = std::min(non_finite, local_non_finite);
@@ -275,6 +299,9 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   ParticlePassResult r;
   r.critical_step = best;
   r.controlling = controlling;
+  d.pass_step = best;
+  d.physical_step = best_physical;
+  d.physical_step_particle = controlling_physical;
   r.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
   r.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
   return r;

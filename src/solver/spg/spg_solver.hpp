@@ -58,6 +58,28 @@ void renew_kernel(State& s, Domain& d);
 /// Smoothed masses (Eq. 20), gather weights (Eq. 14), pinning and node masses from the particle
 /// masses and the current shape functions (at renewals, and after mass scaling).
 void smooth_masses(State& s, Domain& d);
+/// The largest eigenvalue omega^2 of the part's linearised MC-SPG equations of motion (power
+/// iteration, frequency.cpp): dt < 2 / omega is the critical step of the particles alone.
+struct FrequencyEstimate {
+  double omega_squared = 0.0;
+  int iterations = 0;
+  double change = 1.0;  ///< relative change of omega^2 in the last iteration
+  Index particle = -1;  ///< where the mode's amplitude is largest
+};
+/// `mode`: start vector (used when it has the right size) and the mode found.
+FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
+                                    Eigen::Matrix3Xd* mode = nullptr);
+
+/// Domain::stiffness_length from the current rows (stiffness_length.cpp); at the first renewal
+/// also its scale. Run at every renewal, after the transpose holds the new gradients.
+void update_stiffness_length(Domain& d);
+/// At the first renewal, after the smoothed masses: scales the stiffness lengths so that the
+/// shortest particle step equals the true critical step of the initial arrangement; returns it.
+double calibrate_stiffness_length(const State& s, Domain& d);
+/// At a kernel check: a few power iterations from the last mode give the current critical step
+/// of the particles; the stiffness lengths are scaled so that the shortest particle step (with
+/// the masses it has, Domain::pass_step) matches it.
+void recalibrate_stiffness_length(const State& s, Domain& d);
 
 /// The same for the rows flagged in `rows` only (size count()), right after rows_to_renew, whose
 /// current supports it uses: their neighbours and shape functions are rebuilt in the current

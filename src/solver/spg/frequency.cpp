@@ -1,0 +1,159 @@
+// The largest frequency of an SPG part, by power iteration on its linearised equations of
+// motion: x'' = -A x with A = W K, K the stiffness of direct nodal integration (Eq. 5) with the
+// elastic tangent at the current state, and W what MC-SPG does with a force: a_J = f_J / m_J
+// (Eq. 20 masses), u-hat_K = sum_J phi_J(X_K) a_J (Eq. 30), u_I = sum_K psi_I(X_K) u-hat_K
+// (Eq. 13); pinned particles (FE-coupled, constrained) move with their node mass and their
+// share of the neighbours' accelerations, as in smoothing.cpp. The central-difference update is
+// stable for dt < 2 / omega_max with omega_max^2 the largest eigenvalue of A.
+//
+// What it leaves out: the FE elements around pinned particles (their own step bounds them),
+// contact springs (bounded by SOFT 1, contact_forces.cpp), bulk viscosity (it damps), MSC
+// mode-control springs and PDAMP. The elastic tangent is used where the material yields: the
+// plastic tangent is softer, so the elastic frequency bounds it.
+#include <cmath>
+
+#include "solver/material/constitutive.hpp"
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+
+// A x for displacements x (3 x count).
+void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
+           Eigen::Matrix3Xd& force, Eigen::Matrix3Xd& out) {
+  const Index n = d.count();
+  const double shear = mat.shear_modulus;
+  Eigen::Matrix<double, 9, Eigen::Dynamic> p(9, n);
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    Eigen::Map<Mat3> pj(p.col(j).data());
+    if (d.isolated[jj] || d.debris[jj]) {
+      pj.setZero();
+      continue;
+    }
+    Mat3 df = Mat3::Zero();
+    for (Index q = d.list.offsets[jj]; q < d.list.offsets[jj + 1]; ++q) {
+      const Index k = d.list.neighbours[static_cast<std::size_t>(q)];
+      df.noalias() += (x.col(k) - x.col(j)) * d.shape.gradient.col(q).transpose();
+    }
+    const Eigen::Map<const Mat3> f_hat(d.deformation.col(j).data());
+    const Mat3 f_inv = f_hat.inverse();
+    const Mat3 l = df * f_inv;
+    const Mat3 e = 0.5 * (l + l.transpose());
+    const double physical = d.mass[jj] - d.added_mass[jj];
+    const double rc2 = physical / d.volume[jj] *
+                       wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
+    const double g = d.failed[jj] ? 0.0 : shear;
+    const Mat3 sigma = (rc2 - 2.0 * g) * e.trace() * Mat3::Identity() + 2.0 * g * e;
+    const double weight = d.volume[jj] * (d.surface[jj] ? d.settings.surface_factor : 1.0);
+    pj = weight * sigma * f_inv.transpose();
+  }
+  // Forces, gathered over the transpose; accelerations of the smoothed particles.
+  const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    Vec3 f = Vec3::Zero();
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const Eigen::Map<const Mat3> pj(p.col(d.transpose.rows[static_cast<std::size_t>(t)]).data());
+      f.noalias() -= pj * d.transpose.gradient.col(t);
+    }
+    force.col(i) = f;
+  }
+  Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n), hat(3, n);
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (!d.pinned[ii] && mc) acc.col(i) = force.col(i) / d.smoothed_mass[ii];
+  }
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index k = 0; k < n; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    Vec3 sum = Vec3::Zero();
+    if (mc)
+      for (Index q = d.list.offsets[kk]; q < d.list.offsets[kk + 1]; ++q)
+        sum += d.shape.value[static_cast<std::size_t>(q)] *
+               acc.col(d.list.neighbours[static_cast<std::size_t>(q)]);
+    if (d.pinned[kk] || !mc) {
+      const auto node = static_cast<std::size_t>(d.nodes[kk]);
+      const double m = s.nodes.mass[node] + s.nodes.added_mass[node];
+      hat.col(k) = (force.col(k) + d.mass[kk] * sum) / m;
+    } else {
+      hat.col(k) = sum;
+    }
+  }
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (d.pinned[ii] || !mc) {
+      out.col(i) = hat.col(i);
+      continue;
+    }
+    Vec3 u = Vec3::Zero();
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      u += d.transpose.gather[tt] * hat.col(d.transpose.rows[tt]);
+    }
+    out.col(i) = u;
+  }
+}
+
+// A fixed pseudo-random start (the same for any thread count).
+double start_value(Index i, int k) {
+  std::uint64_t z = (static_cast<std::uint64_t>(i) * 3 + static_cast<std::uint64_t>(k)) *
+                        0x9E3779B97F4A7C15ULL +
+                    0x632BE59BD9B4E019ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
+}
+
+double norm_in_order(const Eigen::Matrix3Xd& x) {
+  double sum = 0.0;  // serial: the same sum for any thread count
+  for (Eigen::Index i = 0; i < x.cols(); ++i)
+    sum += x.col(i).squaredNorm();
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
+                                    Eigen::Matrix3Xd* mode) {
+  const Index n = d.count();
+  FrequencyEstimate r;
+  if (n == 0) return r;
+  const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
+  Eigen::Matrix3Xd x(3, n), ax(3, n), force(3, n);
+  if (mode && mode->cols() == n && norm_in_order(*mode) > 0.0) {
+    x = *mode;
+  } else {
+    for (Index i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k)
+        x(k, i) = start_value(i, k);
+  }
+  x /= norm_in_order(x);
+  double previous = 0.0;
+  for (int it = 0; it < iterations; ++it) {
+    apply(s, d, mat, x, force, ax);
+    const double lambda = norm_in_order(ax);  // |A x| with |x| = 1
+    r.omega_squared = lambda;
+    r.iterations = it + 1;
+    r.change = previous > 0.0 ? std::abs(lambda - previous) / lambda : 1.0;
+    previous = lambda;
+    if (!(lambda > 0.0)) break;
+    x = ax / lambda;
+  }
+  // Where the mode lives: the particle with the largest share.
+  double largest = -1.0;
+  for (Index i = 0; i < n; ++i)
+    if (x.col(i).squaredNorm() > largest) {
+      largest = x.col(i).squaredNorm();
+      r.particle = i;
+    }
+  if (mode) *mode = x;
+  return r;
+}
+
+}  // namespace mcdyna::solver::spg

@@ -1,0 +1,123 @@
+// The length that bounds a particle's stable step from the stiffness its shape functions give
+// it, not from how close its nearest neighbour is.
+//
+// Direct nodal integration gives f_I = -sum_J V_J sigma_J grad phi_I(X_J) (Eq. 5), whose
+// stiffness is K_IK = sum_J V_J grad phi_I(X_J) . C_J . grad phi_K(X_J). With |C_J| <= rho c^2
+// and V_J rho_J = m_J, Gershgorin bounds the frequencies of particle I by
+//   omega_I^2 <= (1 / m_I) sum_K |K_IK| <= c^2 (1 / m_I) sum_J m_J |g_IJ| G_J,
+//   g_IJ = grad phi_I(X_J),  G_J = sum_K |g_KJ|  (the row J's gradients),
+// so l_I = (m_I / sum_J m_J |g_IJ| G_J)^(1/2) is a length with omega_I <= c / l_I. It follows
+// the kernel's support and the shape of the neighbourhood (a torn row with one-sided neighbours
+// has large gradients and a short l), but not the distance of two particles squeezed together:
+// two nearly coincident particles share the weight of the support and their relative motion
+// meets almost no stiffness. Measured on the FDS plate at h 0.15 (manual/verification.md):
+// particles pressed against the screw to 0.02 mm against 0.13 mm spacing held the step at
+// 2.9e-9 s by their nearest neighbour while the state's true critical step was 1.08e-8 s.
+//
+// Gershgorin is loose, and by how much changes with the state (about 3.3 on the initial FDS
+// plate, whose free surfaces have shape functions with negative lobes; much less under the
+// screw tip), so l only ranks the particles and follows their changes from cycle to cycle; its
+// scale comes from the true critical step of the particles: the largest eigenvalue of the
+// linearised MC-SPG equations (frequency.cpp), by power iteration to convergence at the first
+// renewal and then one iteration per cycle from the last mode, which tracks the dominant mode as
+// the state evolves. The scale is set so that the shortest particle step, with the masses it has
+// and without the bulk viscosity's shortening, is 2 / omega_max; it may grow by 0.5 % per cycle
+// (a mode growing elsewhere takes the iteration a few cycles to find) and falls at once.
+// Measured on the FDS plate at h 0.15 (manual/verification.md): nearest-neighbour lengths held
+// the step at 2.6e-9 s at 24 us where bisection found the state's critical step at 1.08e-8 s,
+// and Gershgorin lengths scaled once at the start blew the plate up at 9.5 us, when the critical
+// step under the tip fell from 3.1e-8 to 1.9e-8 s within 30 cycles.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solver/material/constitutive.hpp"
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver::spg {
+
+namespace {
+// Power iterations for the calibration: the largest eigenvalue of the initial arrangement to
+// well under 1 % (measured: FDS h 0.15 plate ...).
+constexpr int kCalibrationIterations = 60;
+// At every kernel check: power iterations from the last mode, and the largest growth of the
+// step lengths per check.
+constexpr int kRecalibrationIterations = 1;
+constexpr double kLargestRecalibrationGrowth = 1.005;
+}  // namespace
+
+void update_stiffness_length(Domain& d) {
+  const Index n = d.count();
+  std::vector<double> row_gradient(static_cast<std::size_t>(n), 0.0);  // G_J
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index j = 0; j < n; ++j) {
+    double sum = 0.0;
+    for (Index p = d.list.offsets[static_cast<std::size_t>(j)];
+         p < d.list.offsets[static_cast<std::size_t>(j) + 1]; ++p)
+      sum += d.shape.gradient.col(p).norm();
+    row_gradient[static_cast<std::size_t>(j)] = sum;
+  }
+  d.stiffness_length.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    double stiffness = 0.0;  // sum_J m_J |g_IJ| G_J, physical masses
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const auto j = static_cast<std::size_t>(d.transpose.rows[static_cast<std::size_t>(t)]);
+      stiffness += (d.mass[j] - d.added_mass[j]) * d.transpose.gradient.col(t).norm() *
+                   row_gradient[j];
+    }
+    const double own = d.mass[ii] - d.added_mass[ii];
+    d.stiffness_length[ii] = stiffness > 0.0 ? std::sqrt(own / stiffness)
+                                             : std::numeric_limits<double>::infinity();
+  }
+  for (Index i = 0; i < n; ++i)
+    d.stiffness_length[static_cast<std::size_t>(i)] *= d.stiffness_length_scale;
+}
+
+void recalibrate_stiffness_length(const State& s, Domain& d) {
+  if (!(d.pass_step > 0.0) || !std::isfinite(d.pass_step)) return;
+  const FrequencyEstimate f = largest_frequency(s, d, kRecalibrationIterations, &d.frequency_mode);
+  if (!(f.omega_squared > 0.0)) return;
+  const double critical = 2.0 / std::sqrt(f.omega_squared);
+  // Longer steps only a little at a time (the warm-started iteration may lag a mode that is
+  // growing elsewhere); shorter at once.
+  // pass_step carries the bulk viscosity's shortening (element_step), at least its linear term's:
+  // matched to 2 / omega without it, so the step keeps that margin.
+  const double damped = element_step(d.settings.bulk_viscosity, 1.0, 1.0, 0.0);
+  const double ratio = std::min(critical * damped / d.pass_step, kLargestRecalibrationGrowth);
+  d.critical_step = critical;
+  if (d.smallest_critical_step == 0.0 || critical < d.smallest_critical_step) {
+    d.smallest_critical_step = critical;
+    d.smallest_critical_time = s.time;
+    d.smallest_critical_particle = f.particle;
+  }
+  d.stiffness_length_scale *= ratio;
+  for (double& l : d.stiffness_length)
+    l *= ratio;
+}
+
+double calibrate_stiffness_length(const State& s, Domain& d) {
+  d.frequency_mode.resize(3, 0);
+  const FrequencyEstimate f = largest_frequency(s, d, kCalibrationIterations, &d.frequency_mode);
+  if (!(f.omega_squared > 0.0)) return 0.0;
+  const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
+  double shortest = std::numeric_limits<double>::infinity();  // min l / (c sqrt(mobility))
+  for (Index i = 0; i < d.count(); ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    if (d.isolated[ii] || !std::isfinite(d.stiffness_length[ii])) continue;
+    const double c = std::sqrt(wave_speed_squared(mat, d.volume[ii] / d.initial_volume[ii]));
+    shortest = std::min(shortest, d.stiffness_length[ii] / (c * std::sqrt(d.mobility[ii])));
+  }
+  if (!std::isfinite(shortest)) return 0.0;
+  const double critical = 2.0 / std::sqrt(f.omega_squared);
+  if (d.settings.step_estimate != StepEstimate::eigenvalue) return critical;  // reported only
+  const double scale = critical / shortest;
+  d.stiffness_length_scale *= scale;
+  for (double& l : d.stiffness_length)
+    l *= scale;
+  return critical;
+}
+
+}  // namespace mcdyna::solver::spg
