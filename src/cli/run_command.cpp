@@ -119,23 +119,22 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
 // After the run: what the particle kernels did (neighbours, renewals, bonds, degeneracy).
 void print_spg_summary(std::ostream& out, const solver::State& s) {
   for (const solver::spg::Domain& d : s.spg) {
-    if (d.initial_critical_step > 0.0 &&
-        d.settings.step_estimate != solver::spg::StepEstimate::eigenvalue)
+    if (d.step_bound.initial_critical > 0.0) {
       fmt::print(out,
                  "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
-                 "eigenvalue by power iteration)\n",
-                 s.parts[static_cast<std::size_t>(d.part)].id, d.initial_critical_step);
-    else if (d.initial_critical_step > 0.0)
-      fmt::print(out,
-                 "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
-                 "eigenvalue by power iteration), the smallest {:.4e} s at t = {:.6e} (mode "
-                 "largest at node {}); particle steps scaled to it every cycle\n",
-                 s.parts[static_cast<std::size_t>(d.part)].id, d.initial_critical_step,
-                 d.smallest_critical_step, d.smallest_critical_time,
-                 d.smallest_critical_particle >= 0
-                     ? s.nodes.ids[static_cast<std::size_t>(
-                           d.nodes[static_cast<std::size_t>(d.smallest_critical_particle)])]
-                     : 0);
+                 "eigenvalue by power iteration)",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.step_bound.initial_critical);
+      const solver::Index at = d.step_bound.smallest_critical_particle;
+      if (d.settings.step_estimate == solver::spg::StepEstimate::eigenvalue)
+        fmt::print(
+            out,
+            ", the smallest {:.4e} s at t = {:.6e} (mode largest at node {}); particle "
+            "steps scaled to it every cycle",
+            d.step_bound.smallest_critical, d.step_bound.smallest_critical_time,
+            at >= 0 ? s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(at)])]
+                    : 0);
+      fmt::print(out, "\n");
+    }
     const double pairs = static_cast<double>(d.list.neighbours.size());
     fmt::print(out,
                "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals "
@@ -344,29 +343,28 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // nothing more (no restart dump either: its history sizes would include the failed block) and
   // exits with kRunOutputFailed; every file on disk stays whole.
   std::string output_failure;
-  solver::RunHooks hooks;
-  hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
-  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
+  auto checked = [&output_failure](auto&& write) {
     if (!output_failure.empty()) return;
-    zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
-      outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+      write();
     } catch (const io::WriteError& e) {
       output_failure = e.what();
     }
   };
+  solver::RunHooks hooks;
+  hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
+  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
+    checked([&] {
+      zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+    });
+  };
   hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
   hooks.progress = [&](const solver::State& s) {
     progress.update(s);
-    if (step_log && output_failure.empty()) {
-      try {
-        step_log->add(s);
-      } catch (const io::WriteError& e) {
-        output_failure = e.what();
-      }
-    }
+    if (step_log) checked([&] { step_log->add(s); });
     if (!log && output_failure.empty())
       output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
   };
@@ -394,13 +392,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   };
   const solver::RunResult result = solver::run(*state, hooks, dump ? &dump->point : nullptr);
   progress.finish();
-  if (step_log && output_failure.empty()) {
-    try {
-      step_log->flush();
-    } catch (const io::WriteError& e) {
-      output_failure = e.what();
-    }
-  }
+  if (step_log) checked([&] { step_log->flush(); });
   std::signal(SIGINT, old_int);
   std::signal(SIGTERM, old_term);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
 
 namespace mcdyna::cli {
@@ -67,33 +68,31 @@ void StepLog::add(const solver::State& s) {
   // The particle with the smallest step at its physical mass, over all SPG parts.
   const solver::spg::Domain* worst = nullptr;
   for (const auto& d : s.spg)
-    if (d.physical_step_particle >= 0 && (!worst || d.physical_step < worst->physical_step))
+    if (d.step_bound.physical_particle >= 0 &&
+        (!worst || d.step_bound.physical < worst->step_bound.physical))
       worst = &d;
-  double added = 0.0;
-  for (const auto& d : s.spg)
-    for (const double m : d.added_mass)
-      added += m;
-  for (const double m : s.nodes.added_mass)
-    added += m;
+  const double added = solver::total_added_mass(s);
   std::string& out = file_.pending();
-  fmt::format_to(std::back_inserter(out), "{},{:.9e},{:.6e},{:.6e},{},{},", s.cycle, s.time,
-                 s.step, s.critical_step, kind, id);
+  fmt::format_to(std::back_inserter(out), "{},{:.9e},{:.6e},{:.6e},{},{},", s.cycle, s.time, s.step,
+                 s.critical_step, kind, id);
   if (worst) {
-    const solver::Index j = worst->physical_step_particle;
+    const solver::Index j = worst->step_bound.physical_particle;
     const ParticleFacts f = facts(s, *worst, j);
     fmt::format_to(std::back_inserter(out), "{:.6e},{},{:.6e},{:.6e},{:.4f},{:.4f},{},{:.6e}\n",
-                   worst->physical_step,
+                   worst->step_bound.physical,
                    s.nodes.ids[static_cast<std::size_t>(worst->nodes[static_cast<std::size_t>(j)])],
                    f.nearest_now, f.nearest_initial, f.row_mass_factor,
                    worst->mobility[static_cast<std::size_t>(j)], f.in_contact ? 1 : 0, added);
     out.pop_back();  // the newline: the power iteration's critical step follows
-    fmt::format_to(std::back_inserter(out), ",{:.6e}\n", worst->critical_step);
+    fmt::format_to(std::back_inserter(out), ",{:.6e}\n", worst->step_bound.critical);
   } else {
     fmt::format_to(std::back_inserter(out), "0,0,0,0,1,1,0,{:.6e},0\n", added);
   }
   if (++rows_ % kRowsPerWrite == 0) flush();
 }
 
-void StepLog::flush() { file_.commit(); }
+void StepLog::flush() {
+  file_.commit();
+}
 
 }  // namespace mcdyna::cli

@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 16> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -23,14 +23,15 @@ constexpr std::array<std::size_t, 16> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(State),
                                                       sizeof(spg::Domain),
                                                       sizeof(spg::SpgSettings),
+                                                      sizeof(spg::StepBound),
                                                       sizeof(contact::Interface),
                                                       sizeof(contact::Pass),
                                                       sizeof(contact::Surface),
                                                       sizeof(ResumePoint)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 16>{248, 512, 64, 80, 528, 72, 112, 136, 240,
-                                                          1392, 1536, 96, 360, 328, 144, 160},
+static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 64, 80, 528, 72, 112, 136, 240,
+                                                          1392, 1536, 96, 112, 360, 328, 144, 160},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -150,22 +151,26 @@ void fields(Ar& ar, SpgTimes& t) {
 }
 
 template <class Ar>
+void fields(Ar& ar, StepBound& b) {
+  ar(b.lengths, b.scale, b.initial_critical, b.critical, b.smallest_critical,
+     b.smallest_critical_particle, b.smallest_critical_time, b.mode, b.pass_step, b.physical,
+     b.physical_particle);
+}
+
+template <class Ar>
 void fields(Ar& ar, Domain& d) {
   ar(d.part, d.material, d.settings, d.nodes, d.mass, d.base_mass, d.shared, d.surface,
      d.initial_volume, d.volume, d.initial_position, d.initial_support);
   ar(d.support, d.reference_deformation, d.list, d.shape, d.transpose, d.smoothed_mass,
      d.added_mass, d.mass_request, d.pinned, d.length, d.mobility, d.mobility_scale,
      d.largest_mobility, d.largest_mobility_particle, d.largest_mobility_time, d.step,
-     d.renewal_volume, d.stiffness_length, d.stiffness_length_scale,
-     d.initial_critical_step, d.critical_step, d.smallest_critical_step,
-     d.smallest_critical_particle, d.smallest_critical_time, d.frequency_mode, d.pass_step, d.gradient_length_scale, d.steps_since_renewal, d.renewals, d.renewed_rows,
-     d.isolated, d.degenerate_events, d.first_degenerate, d.first_degenerate_time);
+     d.renewal_volume, d.step_bound, d.gradient_length_scale, d.steps_since_renewal, d.renewals,
+     d.renewed_rows, d.isolated, d.degenerate_events, d.first_degenerate, d.first_degenerate_time);
   ar(d.unsmoothed, d.unsmoothed_previous, d.smoothed);
   ar(d.points, d.pressure, d.eos_energy, d.temperature, d.viscosity, d.internal_energy, d.failed,
      d.deformation, d.stress_gradient, d.damping_energy);
   ar(d.mode_stiffness, d.mode_residual, d.mode_force, d.mode_energy);
-  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times, d.physical_step,
-     d.physical_step_particle);
+  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times);
 }
 
 }  // namespace spg
@@ -200,8 +205,9 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
-// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by --fixed-step). Each section of
-// kStateSections is checksummed on its own in the dump, so a damaged one is named.
+// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by
+// --fixed-step). Each section of kStateSections is checksummed on its own in the dump, so a damaged
+// one is named.
 template <class Ar>
 void state_section(Ar& ar, State& s, std::size_t section) {
   switch (section) {
@@ -220,9 +226,9 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 6:
       return ar(s.contacts);
     case 7:
-      return ar(s.time, s.cycle, s.step, s.critical_step, s.controlling_element, s.controlling_domain,
-                s.controlling_particle, s.external_work, s.eroded_kinetic, s.eroded_internal,
-                s.eroded_hourglass, s.initial_energy, s.initial_mass);
+      return ar(s.time, s.cycle, s.step, s.critical_step, s.controlling_element,
+                s.controlling_domain, s.controlling_particle, s.external_work, s.eroded_kinetic,
+                s.eroded_internal, s.eroded_hourglass, s.initial_energy, s.initial_mass);
     default:
       throw std::logic_error("no such dump section");
   }

@@ -196,7 +196,8 @@ struct TimeControl {
   double mass_scaling_step = 0.0;  ///< DT2MS (signed as in the deck)
   Index max_step_curve = -1;       ///< LCTM
   /// `mcdyna run --fixed-step`: every cycle takes this step whatever the stable-step estimate
-  /// says, and no mass is added (a probe for the true critical step, tools/verify/critical_step.py).
+  /// says (a probe for the true critical step, tools/verify/critical_step.py; run_command also
+  /// sets mass_scaling_dt to 0 so that no mass is added).
   double fixed_step = 0.0;
 };
 

@@ -562,7 +562,7 @@ TEST_CASE("MC-SPG critical step: 2 / omega from power iteration is where a free 
     set_velocity_field(*sim.state);
     spg::Domain& d = sim.state->spg.front();
     spg::initialise(*sim.state, d);
-    critical = d.initial_critical_step;
+    critical = d.step_bound.initial_critical;
     sim.state->time_control.fixed_step = factor * critical;
     const double v0 = largest_speed(*sim.state);
     run(sim);
@@ -583,8 +583,8 @@ TEST_CASE("MC-SPG critical step: 2 / omega from power iteration is where a free 
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1));
   sim.state->spg.front().settings.step_estimate = spg::StepEstimate::eigenvalue;
   run(sim);
-  const double damped = solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0,
-                                             1.0, 0.0);
+  const double damped =
+      solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0, 1.0, 0.0);
   CHECK(sim.state->step == doctest::Approx(0.9 * damped * critical).epsilon(1e-6));
 }
 

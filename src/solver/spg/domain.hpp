@@ -67,6 +67,28 @@ enum class StepEstimate {
   eigenvalue  ///< stiffness length scaled every cycle to the largest eigenvalue (power iteration)
 };
 
+/// The stable step of an SPG part: the stiffness lengths of `--spg-step eigen`, the largest
+/// eigenvalue tracked by power iteration (stiffness_length.cpp, frequency.cpp), and what the last
+/// particle pass found (for the step log and the run summary).
+struct StepBound {
+  /// Per particle, the length whose step bounds its frequencies by the stiffness of its shape
+  /// functions (Gershgorin), at the renewal; the step uses it times the smallest stretch since.
+  /// Includes `scale`.
+  std::vector<double> lengths;
+  double scale = 1.0;              ///< factor of `lengths` from the eigenvalue
+  double initial_critical = 0.0;   ///< 2 / omega_max of the initial arrangement (0: none)
+  double critical = 0.0;           ///< 2 / omega_max at the last pass (one iteration)
+  double smallest_critical = 0.0;  ///< the smallest of the run, where the mode was, when
+  Index smallest_critical_particle = -1;
+  double smallest_critical_time = 0.0;
+  Eigen::Matrix3Xd mode;   ///< the power iteration's last vector (warm start)
+  double pass_step = 0.0;  ///< shortest particle step of the last pass, with masses, no TSSFAC
+  /// The smallest particle step of the last pass at the physical masses (before DT2MS mass
+  /// scaling, before TSSFAC) and its particle: what the step would be without mass scaling.
+  double physical = 0.0;
+  Index physical_particle = -1;
+};
+
 struct SpgSettings {
   KernelShape shape = KernelShape::cubic_box;
   int kernel_update = 0;      ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
@@ -137,18 +159,7 @@ struct Domain {
   /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
   std::vector<double> step;
   std::vector<double> renewal_volume;  ///< volume at the renewal
-  /// The length whose step bounds the particle's frequencies by the stiffness of its shape
-  /// functions (Gershgorin, stiffness_length.cpp), at the renewal; the step uses it times the
-  /// smallest stretch since. Scaled by stiffness_length_scale (from the first renewal).
-  std::vector<double> stiffness_length;
-  double stiffness_length_scale = 1.0;
-  double initial_critical_step = 0.0;  ///< 2 / omega_max of the initial arrangement (0: none)
-  double critical_step = 0.0;          ///< 2 / omega_max at the last pass (one iteration)
-  double smallest_critical_step = 0.0;  ///< the smallest of the run, where the mode was, when
-  Index smallest_critical_particle = -1;
-  double smallest_critical_time = 0.0;
-  Eigen::Matrix3Xd frequency_mode;     ///< the power iteration's last vector (warm start)
-  double pass_step = 0.0;              ///< shortest particle step of the last pass (no TSSFAC)
+  StepBound step_bound;  ///< what the particles' stable step is estimated from and found
   /// Largest nearest-neighbour distance x gradient norm (sum_K |grad phi_K|^2)^(1/2) of the rows
   /// at the first renewal: a row whose gradients later grow past it (an ill-conditioned, torn
   /// neighbourhood) gets the shorter length kappa / |grad phi| (renewal.cpp).
@@ -188,10 +199,6 @@ struct Domain {
   /// renewed (particle_pass.cpp).
   std::vector<std::uint8_t> debris;
   SpgTimes times;
-  /// The smallest particle step of the last pass with the physical masses (before DT2MS mass
-  /// scaling, before TSSFAC) and its particle: what the step would be without mass scaling.
-  double physical_step = 0.0;
-  Index physical_step_particle = -1;
 
   [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
 };

@@ -43,8 +43,8 @@ void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Ma
     const Mat3 l = df * f_inv;
     const Mat3 e = 0.5 * (l + l.transpose());
     const double physical = d.mass[jj] - d.added_mass[jj];
-    const double rc2 = physical / d.volume[jj] *
-                       wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
+    const double rc2 =
+        physical / d.volume[jj] * wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
     const double g = d.failed[jj] ? 0.0 : shear;
     const Mat3 sigma = (rc2 - 2.0 * g) * e.trace() * Mat3::Identity() + 2.0 * g * e;
     const double weight = d.volume[jj] * (d.surface[jj] ? d.settings.surface_factor : 1.0);
@@ -101,9 +101,9 @@ void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Ma
 
 // A fixed pseudo-random start (the same for any thread count).
 double start_value(Index i, int k) {
-  std::uint64_t z = (static_cast<std::uint64_t>(i) * 3 + static_cast<std::uint64_t>(k)) *
-                        0x9E3779B97F4A7C15ULL +
-                    0x632BE59BD9B4E019ULL;
+  std::uint64_t z =
+      (static_cast<std::uint64_t>(i) * 3 + static_cast<std::uint64_t>(k)) * 0x9E3779B97F4A7C15ULL +
+      0x632BE59BD9B4E019ULL;
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   z ^= z >> 31;

@@ -100,7 +100,7 @@ double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic
   const double smallest = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
   const auto jj = static_cast<std::size_t>(j);
   if (d.settings.step_estimate == StepEstimate::eigenvalue)
-    return d.stiffness_length[jj] * smallest;
+    return d.step_bound.lengths[jj] * smallest;
   return std::min(isotropic_length, d.length[jj] * smallest);
 }
 
@@ -162,8 +162,8 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
   d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
-  Outcome o{element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length),
-                         vol.sound, k.trace) /
+  Outcome o{element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length), vol.sound,
+                         k.trace) /
                 std::sqrt(d.mobility[jj]),
             false, false};
   o.physical_step = o.step;
@@ -299,9 +299,9 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   ParticlePassResult r;
   r.critical_step = best;
   r.controlling = controlling;
-  d.pass_step = best;
-  d.physical_step = best_physical;
-  d.physical_step_particle = controlling_physical;
+  d.step_bound.pass_step = best;
+  d.step_bound.physical = best_physical;
+  d.step_bound.physical_particle = controlling_physical;
   r.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
   r.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
   return r;

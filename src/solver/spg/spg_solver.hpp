@@ -58,6 +58,15 @@ void renew_kernel(State& s, Domain& d);
 /// Smoothed masses (Eq. 20), gather weights (Eq. 14), pinning and node masses from the particle
 /// masses and the current shape functions (at renewals, and after mass scaling).
 void smooth_masses(State& s, Domain& d);
+
+/// The same for the rows flagged in `rows` only (size count()), right after rows_to_renew, whose
+/// current supports it uses: their neighbours and shape functions are rebuilt in the current
+/// configuration and their F^n takes up F-hat; the other
+/// rows keep their own reference. The transpose, smoothed masses and gather weights, which mix
+/// rows, are rebuilt for all. Each row is consistent in its own reference (sum_J phi_J(X_I) = 1
+/// per row), which is all Eqs. 21-23 need.
+void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
+
 /// The largest eigenvalue omega^2 of the part's linearised MC-SPG equations of motion (power
 /// iteration, frequency.cpp): dt < 2 / omega is the critical step of the particles alone.
 struct FrequencyEstimate {
@@ -70,24 +79,17 @@ struct FrequencyEstimate {
 FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode = nullptr);
 
-/// Domain::stiffness_length from the current rows (stiffness_length.cpp); at the first renewal
-/// also its scale. Run at every renewal, after the transpose holds the new gradients.
+/// `--spg-step eigen` (stiffness_length.cpp): StepBound::lengths from the current rows, times
+/// StepBound::scale. Run at every renewal, after the transpose holds the new gradients.
 void update_stiffness_length(Domain& d);
-/// At the first renewal, after the smoothed masses: scales the stiffness lengths so that the
-/// shortest particle step equals the true critical step of the initial arrangement; returns it.
+/// At the first renewal, after the smoothed masses: the critical step of the initial arrangement
+/// (converged power iteration), returned; with `--spg-step eigen` the lengths are scaled so that
+/// the shortest particle step equals it.
 double calibrate_stiffness_length(const State& s, Domain& d);
-/// At a kernel check: a few power iterations from the last mode give the current critical step
-/// of the particles; the stiffness lengths are scaled so that the shortest particle step (with
-/// the masses it has, Domain::pass_step) matches it.
+/// Every cycle with `--spg-step eigen`: one power iteration from the last mode gives the current
+/// critical step of the particles; the lengths are scaled so that the shortest particle step
+/// (with the masses it has, StepBound::pass_step) matches it.
 void recalibrate_stiffness_length(const State& s, Domain& d);
-
-/// The same for the rows flagged in `rows` only (size count()), right after rows_to_renew, whose
-/// current supports it uses: their neighbours and shape functions are rebuilt in the current
-/// configuration and their F^n takes up F-hat; the other
-/// rows keep their own reference. The transpose, smoothed masses and gather weights, which mix
-/// rows, are rebuilt for all. Each row is consistent in its own reference (sum_J phi_J(X_I) = 1
-/// per row), which is all Eqs. 21-23 need.
-void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
 
 /// The rows due for renewal at a check (every SMSTEP steps), flagged in `rows`; returns how
 /// many. All of them for the Eulerian kernel and for renewal_strain 0; else the particles whose
