@@ -28,8 +28,8 @@ struct RunOptions {
   /// --fixed-step: every cycle takes this step, no mass scaling, no restart dumps (a probe for
   /// the true critical step; not part of the dump fingerprint so it can start from any dump)
   double fixed_step = 0.0;
-  long cycles = 0;                    ///< --cycles: stop after this many cycles of this run
-  std::filesystem::path step_log;     ///< --step-log: per-cycle CSV of what sets the step
+  long cycles = 0;                 ///< --cycles: stop after this many cycles of this run
+  std::filesystem::path step_log;  ///< --step-log: per-cycle CSV of what sets the step
   /// --restart / r=: continue the run from this dump (written by the same deck and options)
   std::filesystem::path restart;
 };
