@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 #include <vector>
 
@@ -586,6 +587,59 @@ TEST_CASE("MC-SPG critical step: 2 / omega from power iteration is where a free 
   const double damped =
       solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0, 1.0, 0.0);
   CHECK(sim.state->step == doctest::Approx(0.9 * damped * critical).epsilon(1e-6));
+}
+
+}  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+namespace {
+// Mirrors the neighbours of particle `centre` through it, so its F-hat (and some of theirs)
+// has a negative determinant.
+void invert_neighbourhood(solver::State& s, const spg::Domain& d, Index centre) {
+  const auto cc = static_cast<std::size_t>(centre);
+  const Vec3 x = s.nodes.position.col(d.nodes[cc]);
+  for (Index p = d.list.offsets[cc]; p < d.list.offsets[cc + 1]; ++p) {
+    const Index node =
+        d.nodes[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])];
+    s.nodes.position.col(node) = 2.0 * x - s.nodes.position.col(node);
+  }
+}
+}  // namespace
+
+TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases damaged debris") {
+  TempDir dir;
+  const Index centre = 4 + 8 * (3 + 7 * 3);
+  SUBCASE("an intact particle whose neighbourhood inverts is an instability") {
+    Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1));
+    spg::Domain& d = sim.state->spg.front();
+    spg::initialise(*sim.state, d);
+    invert_neighbourhood(*sim.state, d, centre);
+    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
+    CHECK(r.inverted >= 0);
+    CHECK(r.critical_step > 0.0);  // the particles that did not invert still give a step
+    CHECK(d.released == 0);
+    run(sim);
+    CHECK(sim.result.reason == solver::StopReason::inverted_element);
+    MESSAGE(sim.result.message);
+    CHECK(sim.result.message.find("non-positive Jacobian or volume at") != std::string::npos);
+  }
+  SUBCASE("a particle that has lost bonds is released as debris instead") {
+    std::string deck = spg_deck(7, 6, 5, 1);
+    Simulation sim = prepare(dir, deck);
+    spg::Domain& d = sim.state->spg.front();
+    d.settings.bond_failure = true;
+    spg::initialise(*sim.state, d);
+    for (Index i = 0; i < d.count(); ++i)  // one broken bond each: damage > 0 everywhere
+      d.bonds.broken[static_cast<std::size_t>(d.bonds.offsets[static_cast<std::size_t>(i)])] = 1;
+    invert_neighbourhood(*sim.state, d, centre);
+    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
+    CHECK(r.inverted == -1);
+    CHECK(d.debris[static_cast<std::size_t>(centre)] == 1);
+    CHECK(d.released > 0);
+    CHECK(std::isfinite(r.critical_step));
+    CHECK(r.critical_step > 0.0);
+  }
 }
 
 }  // namespace mcdyna::test

@@ -77,10 +77,13 @@ void grow_row_masses(Domain& d) {
 // It carries no stress from then on, like an eroded element, until its row is renewed at the
 // next check (rows_to_renew); every other inversion is an instability and stops the run.
 Outcome release_or_invert(Domain& d, Index j) {
-  if (!d.settings.bond_failure || !(d.bonds.damage(j) > 0.0)) return {0.0, true, false};
+  // Designated fields: a positional {0.0, true, false} silently shifted when physical_step was
+  // added (an inversion then read as a zero step, a release as an inversion).
+  if (!d.settings.bond_failure || !(d.bonds.damage(j) > 0.0))
+    return {.step = 0.0, .inverted = true};
   d.debris[static_cast<std::size_t>(j)] = 1;
   d.stress_gradient.col(j).setZero();
-  return {std::numeric_limits<double>::infinity(), false, true};
+  return {.released = true};
 }
 
 // The length that bounds particle j's step, times the smallest principal stretch of F-hat
@@ -162,11 +165,10 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
   d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
-  Outcome o{element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length), vol.sound,
-                         k.trace) /
-                std::sqrt(d.mobility[jj]),
-            false, false};
-  o.physical_step = o.step;
+  const double step = element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length),
+                                   vol.sound, k.trace) /
+                      std::sqrt(d.mobility[jj]);
+  Outcome o{.step = step, .physical_step = step};
   scale_particle_mass(s, d, j, o);
   return o;
 }
