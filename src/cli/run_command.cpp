@@ -57,6 +57,12 @@ const char* reason_text(solver::StopReason r) {
   return "";
 }
 
+// *CONTROL_ACCURACY OSU of a block or SPG part.
+const char* stress_update_name(bool objective) {
+  return objective ? "second-order objective stress update (OSU 1)"
+                   : "first-order stress update (OSU 0)";
+}
+
 void print_state_summary(std::ostream& log, const solver::State& s) {
   double mass = 0.0;
   for (const double m : s.nodes.mass)
@@ -69,9 +75,10 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
              s.nodes.count(), s.solids.count(), s.solids.blocks.size(), s.rigid_bodies.size());
   for (const auto& b : s.solids.blocks) {
     const auto& part = s.parts[static_cast<std::size_t>(b.part)];
-    fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, IHQ {} QM {}, Q1 {} Q2 {}\n", part.id,
-               b.end - b.begin, b.points_per_element == 1 ? 1 : 2, b.hourglass.type,
-               b.hourglass.coefficient, b.bulk_viscosity.quadratic, b.bulk_viscosity.linear);
+    fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, IHQ {} QM {}, Q1 {} Q2 {}, {}\n",
+               part.id, b.end - b.begin, b.points_per_element == 1 ? 1 : 2, b.hourglass.type,
+               b.hourglass.coefficient, b.bulk_viscosity.quadratic, b.bulk_viscosity.linear,
+               stress_update_name(b.objective));
   }
   for (const auto& b : s.rigid_bodies) {
     fmt::print(log, "  rigid part {:>8}: mass {:.6e}, centre ({:.6g}, {:.6g}, {:.6g}), {} nodes\n",
@@ -96,7 +103,7 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
     }
     fmt::print(log,
                "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
-               "{}{}; kernel {}, {}, checked every {} steps{}; bond failure {}\n",
+               "{}{}; kernel {}, {}, checked every {} steps{}; bond failure {}; {}\n",
                s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
                kModes[static_cast<int>(st.stabilization)],
                st.mode_control > 0.0
@@ -112,7 +119,8 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                                  solver::spg::kCompressionRenewalShare * st.renewal_strain),
                st.bond_failure
                    ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
-                   : std::string("off"));
+                   : std::string("off"),
+               stress_update_name(st.objective));
   }
 }
 

@@ -78,6 +78,16 @@ struct BulkViscosityControl {
   core::SourceLoc loc;
 };
 
+/// *CONTROL_ACCURACY.
+struct AccuracyControl {
+  int objective = 0;               ///< OSU: 1 second-order objective stress update
+  int invariant = 1;               ///< INN: invariant node numbering (1 off)
+  Id objective_parts = 0;          ///< PIDOSU: part set taking the objective update (OSU ignored)
+  int implicit = 0;                ///< IACC
+  double explicit_accuracy = 0.0;  ///< EXACC
+  core::SourceLoc loc;
+};
+
 struct Controls {
   std::optional<Termination> termination;
   std::optional<TimeStepControl> time_step;
@@ -86,6 +96,7 @@ struct Controls {
   std::optional<SolidControl> solid;
   std::optional<EnergyControl> energy;
   std::optional<BulkViscosityControl> bulk_viscosity;
+  std::optional<AccuracyControl> accuracy;
 };
 
 /// ASCII history databases mcdyna writes.

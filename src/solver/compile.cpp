@@ -33,6 +33,39 @@ BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m) {
   return q;
 }
 
+bool objective_update(const model::ModelDatabase& m, const model::Part& part) {
+  if (!m.controls.accuracy) return false;
+  const model::AccuracyControl& a = *m.controls.accuracy;
+  if (a.objective_parts == 0) return a.objective == 1;
+  const model::PartSet* ps = m.part_set(a.objective_parts);
+  return ps != nullptr && std::find(ps->parts.begin(), ps->parts.end(), part.id) != ps->parts.end();
+}
+
+void check_accuracy_control(const model::ModelDatabase& m, core::Diagnostics& d) {
+  if (!m.controls.accuracy) return;
+  const model::AccuracyControl& a = *m.controls.accuracy;
+  if (a.objective_parts != 0 && m.part_set(a.objective_parts) == nullptr)
+    d.error(a.loc, "*CONTROL_ACCURACY: PIDOSU part set {} is not defined", a.objective_parts);
+  if (a.objective_parts != 0 && a.objective != 0)
+    d.note(a.loc,
+           "*CONTROL_ACCURACY: OSU {} is ignored, PIDOSU {} names the parts that take the "
+           "objective stress update",
+           a.objective, a.objective_parts);
+  if (a.invariant != 1 && a.invariant != 0)
+    d.note(a.loc,
+           "*CONTROL_ACCURACY: INN {} (invariant node numbering) has no effect: mcdyna's "
+           "solids and particles are isotropic and do not depend on the node order",
+           a.invariant);
+  if (a.implicit != 0)
+    d.note(a.loc, "*CONTROL_ACCURACY: IACC {} (implicit accuracy) has no effect: explicit solver",
+           a.implicit);
+  if (a.explicit_accuracy != 0.0)
+    d.note(a.loc,
+           "*CONTROL_ACCURACY: EXACC {:g} (shell accuracy) has no effect: no deformable "
+           "shells",
+           a.explicit_accuracy);
+}
+
 Index curve_index(const model::ModelDatabase& m, model::Id id) {
   const auto i = m.index.curves.find(id);
   return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
@@ -148,6 +181,7 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
                                                     : SolidFormulation::one_point;
       b.points_per_element = b.formulation == SolidFormulation::one_point ? 1 : 8;
       b.hourglass = hourglass_of(m, part, b.bulk_viscosity);
+      b.objective = objective_update(m, part);
       b.material = static_cast<Index>(s.materials.size());
       s.materials.push_back(compile_material(m, part, d));
       info.material = b.material;
@@ -219,6 +253,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   s->title = m.title;
   for (const model::Curve& c : m.curves)
     s->curves.emplace_back(c);
+  detail::check_accuracy_control(m, diags);
   detail::compile_nodes_and_solids(m, *s, diags);
   detail::compile_rigid_bodies(m, *s, diags);
   detail::compile_constraints(m, *s, diags);

@@ -31,6 +31,12 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
 Index curve_index(const model::ModelDatabase& m, model::Id id);
 /// Q1, Q2 of *CONTROL_BULK_VISCOSITY (defaults without it).
 BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m);
+/// Whether the part takes the second-order objective stress update of *CONTROL_ACCURACY:
+/// OSU 1, or membership of the PIDOSU part set when one is given (OSU then ignored).
+bool objective_update(const model::ModelDatabase& m, const model::Part& part);
+/// *CONTROL_ACCURACY's fields that do nothing here, as notes; a PIDOSU set that is not defined
+/// is an error.
+void check_accuracy_control(const model::ModelDatabase& m, core::Diagnostics& d);
 }  // namespace detail
 
 }  // namespace mcdyna::solver

@@ -111,6 +111,7 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
     s.parts[p].material = dom.material;
     const Material& mat = s.materials.back();
     dom.settings = settings_of(*sec, mat, q);
+    dom.settings.objective = objective_update(m, part);
     if (dom.settings.bond_failure && dom.settings.failure_stretch >= 1.0e10) {
       d.warning(sec->loc,
                 "section {}: bond failure at FS = {:g} also needs the bond stretch to exceed "

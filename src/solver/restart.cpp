@@ -30,7 +30,7 @@ constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(ResumePoint)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 64, 80, 528, 72, 112, 136, 240,
+static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 136, 240,
                                                           1392, 1536, 96, 112, 360, 328, 144, 160},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
@@ -55,7 +55,7 @@ void fields(Ar& ar, BulkViscosityParams& b) {
 template <class Ar>
 void fields(Ar& ar, SolidBlock& b) {
   ar(b.part, b.begin, b.end, b.point_begin, b.points_per_element, b.formulation, b.material,
-     b.hourglass, b.bulk_viscosity);
+     b.hourglass, b.bulk_viscosity, b.objective);
 }
 
 template <class Ar>
@@ -117,7 +117,7 @@ template <class Ar>
 void fields(Ar& ar, SpgSettings& s) {
   ar(s.shape, s.kernel_update, s.renewal_interval, s.renewal_strain, s.stabilization,
      s.bond_failure, s.failure_strain, s.failure_stretch, s.damping, s.surface_factor,
-     s.mode_control, s.bulk_viscosity, s.step_estimate);
+     s.mode_control, s.bulk_viscosity, s.step_estimate, s.objective);
 }
 
 template <class Ar>

@@ -60,6 +60,9 @@ struct SolidBlock {
   Index material = 0;
   HourglassParams hourglass;
   BulkViscosityParams bulk_viscosity;
+  /// *CONTROL_ACCURACY OSU 1 (or the part in PIDOSU): mid-step strain rates and Hughes-Winget
+  /// stress rotation (solid_elements.cpp, point_kinematics.hpp).
+  bool objective = false;
 };
 
 /// Deformable 8-node solids (rigid-part elements only contribute mass properties).

@@ -58,6 +58,7 @@ TEST_CASE("the keyword list of issue 2 is supported, with aliases and options") 
                         "CONTROL_SOLID",
                         "CONTROL_ENERGY",
                         "CONTROL_BULK_VISCOSITY",
+                        "CONTROL_ACCURACY",
                         "CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID",
                         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TITLE",
                         "CONTACT_AUTOMATIC_SINGLE_SURFACE_ID_MPP",

@@ -5,7 +5,6 @@
 #include <omp.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <numeric>
 #include <vector>
 
@@ -191,10 +190,18 @@ TEST_CASE("MC-SPG partial kernel renewal: only strained rows renewed, momentum a
         doctest::Approx(mass).epsilon(1e-12).scale(0.0));
 }
 
-TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the target, stably") {
+namespace {
+// The mass-scaling check below, with the step estimate and stress update given.
+void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   TempDir dir;
+  auto configure = [&](Simulation& sim) {
+    spg::Domain& d = sim.state->spg.front();
+    d.settings.step_estimate = estimate;
+    d.settings.objective = objective;
+  };
   // The natural step of the body, from one cycle of the same deck, and each particle's own step.
   Simulation probe = prepare(dir, spg_deck(7, 6, 5, 1));
+  configure(probe);
   run(probe);
   const double natural = probe.state->step;
   const spg::Domain& pd = probe.state->spg.front();
@@ -214,6 +221,7 @@ TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the targ
     expected += (factor - 1.0) * pd.mass[static_cast<std::size_t>(k)];
   }
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 2));
+  configure(sim);
   set_velocity_field(*sim.state);
   sim.state->mass_scaling_dt = 3.0 * natural;
   spg::Domain& d = sim.state->spg.front();
@@ -240,7 +248,12 @@ TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the targ
   sim.state->time_control.end_cycle = 1000;
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
-  CHECK(sim.state->step == doctest::Approx(3.0 * natural).epsilon(1e-9).scale(0.0));
+  // Held at the target; with the eigenvalue step a little above it (measured 1.023 x): the
+  // first pass gave some rows more mass than the recalibrated lengths need.
+  if (estimate == spg::StepEstimate::nearest_neighbour)
+    CHECK(sim.state->step == doctest::Approx(3.0 * natural).epsilon(1e-9).scale(0.0));
+  CHECK(sim.state->step >= 3.0 * natural * (1.0 - 1e-9));
+  CHECK(sim.state->step < 1.05 * 3.0 * natural);
   const double vmax = largest_speed(*sim.state);
   MESSAGE("largest speed before / after 1000 steps ", vmax0, " / ", vmax,
           ", added mass / physical ", solver::total_added_mass(*sim.state) / physical);
@@ -266,6 +279,20 @@ TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the targ
   MESSAGE("largest momentum change per cycle without additions ", worst / scale);
   CHECK(worst <= 1e-12 * scale);
   CHECK(largest_speed(*sim.state) < 1.5 * vmax0);
+}
+}  // namespace
+
+TEST_CASE("MC-SPG mass scaling (DT2MS): rows take the mass that reaches the target, stably") {
+  check_mass_scaling(spg::StepEstimate::nearest_neighbour, false);
+}
+
+// The eigenvalue step runs the particles at 0.85 of the linear critical step. With OSU 0 this
+// spinning block (0.017 rad per step) then loses its stable step: the first-order rotation error
+// strains it, and once no mass is added its critical step fell from 3.5 to 1.7 x the initial one
+// within 650 cycles and a particle inverted at cycle 1782 (1649 with renewals); without the spin
+// it held 3.61 for 2000 cycles, and with OSU 1 it holds 3.62-3.67 (measured in a probe).
+TEST_CASE("MC-SPG mass scaling with --spg-step eigen and OSU 1: stable through all phases") {
+  check_mass_scaling(spg::StepEstimate::eigenvalue, true);
 }
 
 // An interior particle I whose shape-function values at its neighbours nearly cancel, as in a

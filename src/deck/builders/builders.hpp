@@ -51,6 +51,7 @@ void control_contact(KeywordRecord& r, model::ModelDatabase& m);
 void control_solid(KeywordRecord& r, model::ModelDatabase& m);
 void control_energy(KeywordRecord& r, model::ModelDatabase& m);
 void control_bulk_viscosity(KeywordRecord& r, model::ModelDatabase& m);
+void control_accuracy(KeywordRecord& r, model::ModelDatabase& m);
 // contact.cpp
 void contact(KeywordRecord& r, model::ModelDatabase& m);
 // boundary.cpp

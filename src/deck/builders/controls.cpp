@@ -105,4 +105,16 @@ void control_bulk_viscosity(KeywordRecord& r, model::ModelDatabase& m) {
   set_once(m.controls.bulk_viscosity, b, r);
 }
 
+void control_accuracy(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::AccuracyControl a;
+  a.objective = static_cast<int>(c.integer("OSU"));
+  a.invariant = static_cast<int>(c.integer("INN"));
+  a.objective_parts = c.integer("PIDOSU");
+  a.implicit = static_cast<int>(c.integer("IACC"));
+  a.explicit_accuracy = c.real("EXACC");
+  a.loc = c.loc();
+  set_once(m.controls.accuracy, a, r);
+}
+
 }  // namespace mcdyna::deck::builders

@@ -140,6 +140,24 @@ CentrePoint centre_point(const Corners& x, const Corners& v) {
   return p;
 }
 
+// *CONTROL_ACCURACY OSU 1: the velocity gradient at the mid-step configuration x - dt/2 v (the
+// pattern sums are linear in x, so Hx - dt/2 Hv), which makes a rigid rotation strain-free to
+// round-off; the forces and the hourglass rates stay at the end-of-step geometry. False when
+// the mid-step element is inverted.
+bool mid_step_gradient(const CentrePoint& p, double half_step, double l[3][3]) {
+  double hx[8][3];
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i)
+      hx[a][i] = p.hx[a][i] - half_step * p.hv[a][i];
+  double jac[3][3], ji[3][3];
+  hex::centre_jacobian(hx, jac);
+  if (!(hex::invert(jac, ji) > 0.0)) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      l[i][j] = 0.125 * (p.hv[1][i] * ji[0][j] + p.hv[2][i] * ji[1][j] + p.hv[4][i] * ji[2][j]);
+  return true;
+}
+
 // Flanagan-Belytschko hourglass forces. gamma_a = (h_a - (h_a . x_n) b_n) / 8 is orthogonal
 // to every linear velocity field, so rigid motion and uniform strain see no hourglass force;
 // the hourglass rate is q_a = gamma_a . v = (Hv_a - l Hx_a) / 8 and the force -sum_a Q_a gamma_a
@@ -212,7 +230,13 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const CentrePoint cp = centre_point(x, v);
   if (!(cp.volume > 0.0)) return {0.0, true, false};
   const double volume = cp.volume;
-  const Kinematics k = kinematics_from_gradient(cp.l);
+  Kinematics k = kinematics_from_gradient(cp.l);
+  if (c.block.objective) {
+    double mid[3][3];
+    if (!mid_step_gradient(cp, 0.5 * c.in.step, mid)) return {0.0, true, false};
+    k = kinematics_from_gradient(mid);
+    k.objective = true;
+  }
   const Index point = c.block.point_begin + (e - c.block.begin);
   bool failed = false;
   const double dev_work =
@@ -245,10 +269,22 @@ ElementOutcome selective_reduced_element(ElementContext& c, Index e) {
   hex::Gradients g[8];
   Kinematics k[8];
   double volume = 0.0, trace = 0.0;
+  Corners mid;  // OSU 1: strain rates at the mid-step configuration, forces at the end
+  if (c.block.objective)
+    for (int n = 0; n < 8; ++n)
+      for (int i = 0; i < 3; ++i)
+        mid[n][i] = x[n][i] - 0.5 * c.in.step * v[n][i];
   for (int p = 0; p < 8; ++p) {
     g[p] = hex::gradients(x, gauss.gradients[p]);
     if (!(g[p].det > 0.0)) return {0.0, true, false};
-    k[p] = kinematics(v, g[p].b);
+    if (c.block.objective) {
+      const hex::Gradients gm = hex::gradients(mid, gauss.gradients[p]);
+      if (!(gm.det > 0.0)) return {0.0, true, false};
+      k[p] = kinematics(v, gm.b);
+      k[p].objective = true;
+    } else {
+      k[p] = kinematics(v, g[p].b);
+    }
     volume += g[p].det;
     trace += g[p].det * k[p].trace;
   }

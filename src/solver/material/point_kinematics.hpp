@@ -21,6 +21,10 @@ struct Kinematics {
   double d[6];  // rate of deformation D, xx yy zz xy yz zx
   double w[3];  // spin W: w[0] = W_xy, w[1] = W_yz, w[2] = W_zx
   double trace;
+  /// *CONTROL_ACCURACY OSU 1: the gradient was taken at the mid-step configuration and the
+  /// stress turns by the Hughes-Winget rotation (objective to second order) instead of the
+  /// Jaumann increment.
+  bool objective = false;
 };
 
 // D, W and tr D from the velocity gradient l[i][j] = dv_i/dx_j.
@@ -50,6 +54,52 @@ inline void jaumann_rotate(double* s, const double w[3], double dt) {
   s[3] += wxy * (syy - sxx) + wyz * szx - wzx * syz;
   s[4] += wyz * (szz - syy) - wxy * szx + wzx * sxy;
   s[5] += wzx * (sxx - szz) + wxy * syz - wyz * sxy;
+}
+
+// Hughes-Winget rotation of a symmetric tensor over dt: s = Q s Q^T with
+// Q = (I - dt/2 W)^-1 (I + dt/2 W), exactly orthogonal for any spin, so the invariants of s are
+// kept; to first order it is the Jaumann increment s += dt (W s - s W). With the velocity
+// gradient of the mid-step configuration it is the second-order objective update (Hughes and
+// Winget 1980) that LS-DYNA's *CONTROL_ACCURACY OSU 1 selects.
+inline void hughes_winget_rotate(double* s, const double w[3], double dt) {
+  const double h = 0.5 * dt;
+  const double a = w[0] * h, b = w[1] * h, c = w[2] * h;  // (dt/2) W_xy, W_yz, W_zx
+  // A = (dt/2) W = [[0, a, -c], [-a, 0, b], [c, -b, 0]] is skew, so A^3 = -n2 A with
+  // n2 = a^2 + b^2 + c^2, and (I - A) (I + k (A + A^2)) = I + A for k = 2 / (1 + n2): the
+  // Cayley transform Q = (I - A)^-1 (I + A) = I + k (A + A^2), no inverse needed.
+  const double n2 = a * a + b * b + c * c;
+  const double k = 2.0 / (1.0 + n2);
+  const double A[3][3] = {{0.0, a, -c}, {-a, 0.0, b}, {c, -b, 0.0}};
+  double q[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double a2 = 0.0;
+      for (int m = 0; m < 3; ++m)
+        a2 += A[i][m] * A[m][j];
+      q[i][j] = (i == j ? 1.0 : 0.0) + k * (A[i][j] + a2);
+    }
+  const double t[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
+  double qt[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      qt[i][j] = q[i][0] * t[0][j] + q[i][1] * t[1][j] + q[i][2] * t[2][j];
+  auto r = [&](int i, int j) {
+    return qt[i][0] * q[j][0] + qt[i][1] * q[j][1] + qt[i][2] * q[j][2];
+  };
+  s[0] = r(0, 0);
+  s[1] = r(1, 1);
+  s[2] = r(2, 2);
+  s[3] = r(0, 1);
+  s[4] = r(1, 2);
+  s[5] = r(2, 0);
+}
+
+// The stress rotation of the point's kinematics (Jaumann, or Hughes-Winget under OSU 1).
+inline void rotate_stress(double* s, const Kinematics& k, double dt) {
+  if (k.objective)
+    hughes_winget_rotate(s, k.w, dt);
+  else
+    jaumann_rotate(s, k.w, dt);
 }
 
 // Effective strain rate sqrt(2/3 D':D') and the deviatoric strain increment dev(D) dt.
@@ -85,8 +135,8 @@ inline double deviatoric_point_update(const Material& m, const Kinematics& k, do
                                       double temperature, double pressure, PointState st,
                                       bool& failed) {
   double* s = st.deviator;
-  jaumann_rotate(s, k.w, dt);
-  if (st.back_stress) jaumann_rotate(st.back_stress, k.w, dt);
+  rotate_stress(s, k, dt);
+  if (st.back_stress) rotate_stress(st.back_stress, k, dt);
   double s_old[6];
   std::copy(s, s + 6, s_old);
   double de[6];

@@ -99,6 +99,9 @@ struct SpgSettings {
   /// check (see renewal.cpp for why not by default). KERNEL 1 renews every row at every check.
   double renewal_strain = 0.1;
   Stabilization stabilization = Stabilization::momentum_consistent;
+  /// *CONTROL_ACCURACY OSU 1 (or the part in PIDOSU): mid-step velocity gradient and
+  /// Hughes-Winget stress rotation (particle_kinematics, point_kinematics.hpp).
+  bool objective = false;
   bool bond_failure = false;
   double failure_strain = 1.0e11;   ///< bond: mean effective plastic strain (FS)
   double failure_stretch = 1.0e10;  ///< bond: stretch ratio (STRETCH)

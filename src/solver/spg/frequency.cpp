@@ -99,7 +99,6 @@ void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Ma
   }
 }
 
-// A fixed pseudo-random start (the same for any thread count).
 double start_value(Index i, int k) {
   std::uint64_t z =
       (static_cast<std::uint64_t>(i) * 3 + static_cast<std::uint64_t>(k)) * 0x9E3779B97F4A7C15ULL +
@@ -119,6 +118,15 @@ double norm_in_order(const Eigen::Matrix3Xd& x) {
 
 }  // namespace
 
+Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& rows) {
+  Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, count);
+  for (Index i = 0; i < count; ++i)
+    if (rows.empty() || rows[static_cast<std::size_t>(i)])
+      for (int k = 0; k < 3; ++k)
+        x(k, i) = start_value(i, k);
+  return x;
+}
+
 FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode) {
   const Index n = d.count();
@@ -126,13 +134,10 @@ FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterati
   if (n == 0) return r;
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   Eigen::Matrix3Xd x(3, n), ax(3, n), force(3, n);
-  if (mode && mode->cols() == n && norm_in_order(*mode) > 0.0) {
+  if (mode && mode->cols() == n && norm_in_order(*mode) > 0.0)
     x = *mode;
-  } else {
-    for (Index i = 0; i < n; ++i)
-      for (int k = 0; k < 3; ++k)
-        x(k, i) = start_value(i, k);
-  }
+  else
+    x = frequency_start(n);
   x /= norm_in_order(x);
   double previous = 0.0;
   for (int it = 0; it < iterations; ++it) {

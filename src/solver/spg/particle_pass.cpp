@@ -116,7 +116,7 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
     p_j.setZero();
     return {};
   }
-  const ParticleKinematics pk = particle_kinematics(s, d, j);
+  const ParticleKinematics pk = particle_kinematics(s, d, j, d.settings.objective ? 0.5 * dt : 0.0);
   if (!pk.invertible) return release_or_invert(d, j);
   f_hat = pk.deformation;
   const Mat3& f_inv = pk.inverse;
@@ -125,7 +125,8 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
       la[a][b] = l(a, b);
-  const Kinematics k = kinematics_from_gradient(la);
+  Kinematics k = kinematics_from_gradient(la);
+  k.objective = d.settings.objective;
 
   // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho.
   const double shrink = 1.0 - dt * k.trace;
@@ -175,7 +176,7 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
 
 }  // namespace
 
-ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j) {
+ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j, double half_step) {
   const auto jj = static_cast<std::size_t>(j);
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const Eigen::Matrix3Xd& v = s.nodes.velocity;
@@ -195,24 +196,32 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j)
   k.invertible = f.determinant() > 0.0;
   if (k.invertible) {
     k.inverse = f.inverse();
-    k.velocity_gradient = lr * k.inverse;
+    if (half_step > 0.0) {
+      const Mat3 mid = f - half_step * lr;
+      k.invertible = mid.determinant() > 0.0;
+      if (k.invertible) k.velocity_gradient = lr * mid.inverse();
+    } else {
+      k.velocity_gradient = lr * k.inverse;
+    }
   }
   return k;
 }
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
+  std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
   if (d.steps_since_renewal >= d.settings.renewal_interval) {
     const long broke = break_bonds(s, d);
-    std::vector<std::uint8_t> rows;
-    const Index due = rows_to_renew(s, d, broke > 0, rows);
+    const Index due = rows_to_renew(s, d, broke > 0, renewed);
     if (due == d.count())
       renew_kernel(s, d);
     else if (due > 0)
-      renew_kernel(s, d, rows);
+      renew_kernel(s, d, renewed);
     else
       d.steps_since_renewal = 0;
+    if (due == 0) renewed.clear();
   }
-  if (d.settings.step_estimate == StepEstimate::eigenvalue) recalibrate_stiffness_length(s, d);
+  if (d.settings.step_estimate == StepEstimate::eigenvalue)
+    recalibrate_stiffness_length(s, d, renewed);
   ++d.steps_since_renewal;
   auto start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];

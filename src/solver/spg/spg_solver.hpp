@@ -32,14 +32,19 @@ struct ParticlePassResult {
 ParticlePassResult particle_pass(State& s, Domain& d, double step);
 
 /// F-hat (Eq. 33) and the velocity gradient of the node velocities (the smoothed velocity) at
-/// particle j, over its current row of the neighbour list.
+/// particle j, over its current row of the neighbour list. With `half_step` = dt / 2 > 0
+/// (*CONTROL_ACCURACY OSU 1) the gradient is that of the mid-step configuration,
+/// L = F-hat-dot (F-hat - dt/2 F-hat-dot)^-1: a rigid rotation then gives a skew L exactly (the
+/// Cayley form of the step's rotation), where L = F-hat-dot F-hat^-1 of the end of the step has
+/// a symmetric part of order omega^2 dt that strains a spinning body.
 struct ParticleKinematics {
   Mat3 deformation = Mat3::Identity();
   Mat3 inverse = Mat3::Identity();
   Mat3 velocity_gradient = Mat3::Zero();
   bool invertible = true;  ///< det F-hat > 0
 };
-ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j);
+ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
+                                       double half_step = 0.0);
 
 /// Velocity update of the domain's particles over `dt` from the nodal forces, after the FE
 /// velocity update (which integrated the pinned particles' own force). Returns the lowest node
@@ -78,6 +83,9 @@ struct FrequencyEstimate {
 /// `mode`: start vector (used when it has the right size) and the mode found.
 FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode = nullptr);
+/// The fixed pseudo-random start of the power iteration (the same for any thread count), on the
+/// particles flagged in `rows` only (all of them when `rows` is empty).
+Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& rows = {});
 
 /// `--spg-step eigen` (stiffness_length.cpp): StepBound::lengths from the current rows, times
 /// StepBound::scale. Run at every renewal, after the transpose holds the new gradients.
@@ -88,8 +96,11 @@ void update_stiffness_length(Domain& d);
 double calibrate_stiffness_length(const State& s, Domain& d);
 /// Every cycle with `--spg-step eigen`: one power iteration from the last mode gives the current
 /// critical step of the particles; the lengths are scaled so that the shortest particle step
-/// (with the masses it has, StepBound::pass_step) matches it.
-void recalibrate_stiffness_length(const State& s, Domain& d);
+/// (with the masses it has, StepBound::pass_step) matches it. `renewed` flags the rows renewed
+/// at this cycle's check (empty: none): a few iterations started on them find a mode the
+/// renewal made there before the step is taken.
+void recalibrate_stiffness_length(const State& s, Domain& d,
+                                  const std::vector<std::uint8_t>& renewed = {});
 
 /// The rows due for renewal at a check (every SMSTEP steps), flagged in `rows`; returns how
 /// many. All of them for the Eulerian kernel and for renewal_strain 0; else the particles whose
