@@ -168,6 +168,8 @@ def main():
     ap.add_argument("--cycles", type=int, default=0, help="ENDCYC: stop after N cycles (benchmarks)")
     ap.add_argument("--restart-cycles", type=int, default=20000,
                     help="*DATABASE_BINARY_RUNRSF: running restart file every N cycles (0: none)")
+    ap.add_argument("--osu", type=int, default=0, choices=(0, 1),
+                    help="*CONTROL_ACCURACY OSU: 1 second-order objective stress update")
     a = ap.parse_args()
     h, scale = a.h, a.time_scale
     layers = max(2, round(THICKNESS / h))
@@ -202,6 +204,9 @@ def main():
       f"(stage 1 ends at {t1:.4e} s, end {t_end:.4e} s).")
     w(f"$ MASS SCALING: {'DT2MS = %g s' % a.mass_scaling if a.mass_scaling > 0 else 'none'}.")
     w(f"$ CONTACT: penalty x {a.penalty_scale:g} (SFSA = SFSB), SOFT 1, friction 0.3.")
+    if a.osu:
+        w("$ ACCURACY: OSU 1, the second-order objective stress update (mid-step strain rates,")
+        w("$   Hughes-Winget rotation) in the plate's particles and elements.")
     w(f"$ Plate: {layers} layers through 1.5 mm; Ø7 mm centre "
       f"{'FE' if a.fe_erosion else 'MC-SPG'}, FE ring to Ø20 mm, perimeter clamped.")
     w(f"$ How to run: mcdyna run {a.out} --out results/fds; tools/verify/fds_force.py results/fds")
@@ -215,6 +220,9 @@ def main():
     w(f"       0.0       0.9         0       0.0{field(-a.mass_scaling) if a.mass_scaling else '       0.0'}")
     w("*CONTROL_CONTACT")
     w("       0.1")
+    if a.osu:
+        w("*CONTROL_ACCURACY")
+        w("         1         1")
     if a.restart_cycles > 0:
         # A running restart file, so a long run that is stopped (or killed) can be continued
         # with `mcdyna run DECK --restart runrsf`.
