@@ -119,6 +119,16 @@ struct SpgTimes {
   double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0, force = 0.0;
 };
 
+/// Buffers the per-cycle passes reuse instead of allocating them at every call (11 MB of PDAMP
+/// impulses per cycle at h 0.15). Not dumped: every call fills what it reads.
+struct Workspace {
+  Eigen::Matrix3Xd acceleration;  ///< advance_velocities: a_J of the smoothed particles
+  Eigen::Matrix3Xd impulse;       ///< PDAMP impulse of each pair of the row lists
+  Eigen::Matrix3Xd row_impulse;   ///< PDAMP: the sum over row I's own pairs
+  Eigen::Matrix<double, 9, Eigen::Dynamic> stress;  ///< frequency.cpp: linearised w sigma F^-T
+  Eigen::Matrix3Xd force, hat, vector, product;     ///< frequency.cpp: f, u-hat, x and A x
+};
+
 struct Domain {
   Index part = 0;      ///< solver part index
   Index material = 0;  ///< compiled material index
@@ -202,6 +212,7 @@ struct Domain {
   /// renewed (particle_pass.cpp).
   std::vector<std::uint8_t> debris;
   SpgTimes times;
+  Workspace scratch;
 
   [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
 };

@@ -19,12 +19,18 @@ namespace mcdyna::solver::spg {
 
 namespace {
 
-// A x for displacements x (3 x count).
-void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-           Eigen::Matrix3Xd& force, Eigen::Matrix3Xd& out) {
+// A x for displacements x (3 x count) into `out`, with the domain's workspace for the stress,
+// the forces (turned into the smoothed particles' accelerations in place) and u-hat.
+void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
+           Eigen::Matrix3Xd& out) {
   const Index n = d.count();
   const double shear = mat.shear_modulus;
-  Eigen::Matrix<double, 9, Eigen::Dynamic> p(9, n);
+  Eigen::Matrix<double, 9, Eigen::Dynamic>& p = d.scratch.stress;
+  Eigen::Matrix3Xd& acc = d.scratch.force;
+  Eigen::Matrix3Xd& hat = d.scratch.hat;
+  p.resize(9, n);
+  acc.resize(3, n);
+  hat.resize(3, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
@@ -50,7 +56,8 @@ void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Ma
     const double weight = d.volume[jj] * (d.surface[jj] ? d.settings.surface_factor : 1.0);
     pj = weight * sigma * f_inv.transpose();
   }
-  // Forces, gathered over the transpose; accelerations of the smoothed particles.
+  // Forces, gathered over the transpose; for the smoothed particles the accelerations f / m
+  // (Eq. 20 masses), for the pinned ones the force itself (their node mass takes it below).
   const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i) {
@@ -60,25 +67,22 @@ void apply(const State& s, const Domain& d, const Material& mat, const Eigen::Ma
       const Eigen::Map<const Mat3> pj(p.col(d.transpose.rows[static_cast<std::size_t>(t)]).data());
       f.noalias() -= pj * d.transpose.gradient.col(t);
     }
-    force.col(i) = f;
-  }
-  Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n), hat(3, n);
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
-    if (!d.pinned[ii] && mc) acc.col(i) = force.col(i) / d.smoothed_mass[ii];
+    acc.col(i) = !d.pinned[ii] && mc ? Vec3(f / d.smoothed_mass[ii]) : f;
   }
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index k = 0; k < n; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     Vec3 sum = Vec3::Zero();
     if (mc)
-      for (Index q = d.list.offsets[kk]; q < d.list.offsets[kk + 1]; ++q)
-        sum += d.shape.value[static_cast<std::size_t>(q)] *
-               acc.col(d.list.neighbours[static_cast<std::size_t>(q)]);
+      for (Index q = d.list.offsets[kk]; q < d.list.offsets[kk + 1]; ++q) {
+        const Index j = d.list.neighbours[static_cast<std::size_t>(q)];
+        if (!d.pinned[static_cast<std::size_t>(j)])
+          sum += d.shape.value[static_cast<std::size_t>(q)] * acc.col(j);
+      }
     if (d.pinned[kk] || !mc) {
       const auto node = static_cast<std::size_t>(d.nodes[kk]);
       const double m = s.nodes.mass[node] + s.nodes.added_mass[node];
-      hat.col(k) = (force.col(k) + d.mass[kk] * sum) / m;
+      hat.col(k) = (acc.col(k) + d.mass[kk] * sum) / m;  // acc holds the pinned one's force
     } else {
       hat.col(k) = sum;
     }
@@ -127,13 +131,15 @@ Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& r
   return x;
 }
 
-FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
+FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode) {
   const Index n = d.count();
   FrequencyEstimate r;
   if (n == 0) return r;
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
-  Eigen::Matrix3Xd x(3, n), ax(3, n), force(3, n);
+  Eigen::Matrix3Xd& x = d.scratch.vector;
+  Eigen::Matrix3Xd& ax = d.scratch.product;
+  ax.resize(3, n);
   if (mode && mode->cols() == n && norm_in_order(*mode) > 0.0)
     x = *mode;
   else
@@ -141,7 +147,7 @@ FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterati
   x /= norm_in_order(x);
   double previous = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply(s, d, mat, x, force, ax);
+    apply(s, d, mat, x, ax);
     const double lambda = norm_in_order(ax);  // |A x| with |x| = 1
     r.omega_squared = lambda;
     r.iterations = it + 1;

@@ -27,12 +27,15 @@ namespace {
 // of I's normal velocity difference to its neighbours per step. The impulses are taken from
 // the velocities of the previous half step, so they are computed in the same pass over the
 // rows as the velocity update (the whole update reads only old velocities).
+// ((u_J - u_I) . e) e = ((u_J - u_I) . r) r / |r|^2 for r = x_J - x_I: one division, no root.
 Vec3 pair_impulse(const State& s, const Domain& d, double share, Index i, Index j) {
   const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
-  const Vec3 e =
-      (s.nodes.position.col(d.nodes[jj]) - s.nodes.position.col(d.nodes[ii])).normalized();
-  const double mu = d.mass[ii] * d.mass[jj] / (d.mass[ii] + d.mass[jj]);
-  return share * mu * (d.unsmoothed_previous.col(j) - d.unsmoothed_previous.col(i)).dot(e) * e;
+  const Vec3 r = s.nodes.position.col(d.nodes[jj]) - s.nodes.position.col(d.nodes[ii]);
+  const double mi = d.mass[ii], mj = d.mass[jj];
+  const double r2 = r.squaredNorm();
+  if (!(r2 > 0.0)) return Vec3::Zero();  // coincident: no direction to damp along
+  const double along = (d.unsmoothed_previous.col(j) - d.unsmoothed_previous.col(i)).dot(r);
+  return (share * mi * mj * along / ((mi + mj) * r2)) * r;
 }
 
 }  // namespace
@@ -46,12 +49,16 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   const bool damping = d.settings.damping > 0.0 && mode != Stabilization::none;
   d.unsmoothed_previous = d.unsmoothed;
   // Accelerations of the smoothed particles (zero for pinned ones).
-  Eigen::Matrix3Xd acc = Eigen::Matrix3Xd::Zero(3, n);
+  Eigen::Matrix3Xd& acc = d.scratch.acceleration;
+  acc.resize(3, n);
   if (mode != Stabilization::none) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      if (d.pinned[ii]) continue;
+      if (d.pinned[ii]) {
+        acc.col(i).setZero();
+        continue;
+      }
       acc.col(i) = nd.force.col(d.nodes[ii]) / (mc ? d.smoothed_mass[ii] : d.mass[ii]);
       nd.acceleration.col(d.nodes[ii]) = acc.col(i);
     }
@@ -61,9 +68,10 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // its share of the smoothed accelerations into its one (node) velocity, which is also its u-hat
   // in the smoothing.
   const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
-  Eigen::Matrix3Xd impulse, row_impulse;
+  Eigen::Matrix3Xd& impulse = d.scratch.impulse;
+  Eigen::Matrix3Xd& row_impulse = d.scratch.row_impulse;
   if (damping) {
-    impulse.resize(3, pairs);
+    impulse.resize(3, pairs);  // every pair is written below
     row_impulse.setZero(3, n);
   }
   if (mode != Stabilization::none) {

@@ -81,7 +81,8 @@ struct FrequencyEstimate {
   Index particle = -1;  ///< where the mode's amplitude is largest
 };
 /// `mode`: start vector (used when it has the right size) and the mode found.
-FrequencyEstimate largest_frequency(const State& s, const Domain& d, int iterations,
+/// Uses the domain's workspace (Domain::scratch).
+FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode = nullptr);
 /// The fixed pseudo-random start of the power iteration (the same for any thread count), on the
 /// particles flagged in `rows` only (all of them when `rows` is empty).
