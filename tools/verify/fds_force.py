@@ -7,7 +7,7 @@ z displacement in nodout.csv. Writes force_vs_plunge.csv (one header row) and, w
 plot; prints the peak thrust and where it occurs, the break-through (the thrust falling below
 half its peak after it) and the first sign reversal (tension) after the peak.
 
-usage: fds_force.py RUN_DIR [--png out.png] [--label TEXT] [RUN_DIR2 ...]
+usage: fds_force.py RUN_DIR [--png out.png] [--label TEXT] [RUN_DIR2 | force_vs_plunge.csv ...]
 """
 import argparse
 import csv
@@ -89,7 +89,10 @@ def main():
     a = ap.parse_args()
     curves = []
     for i, run in enumerate(a.runs):
-        t, plunge, fz, mz = write_force_csv(run)
+        if run.endswith(".csv"):  # a force_vs_plunge.csv already written (decks/fds/reference_*)
+            plunge, fz, mz = read_force_csv(run)
+        else:
+            t, plunge, fz, mz = write_force_csv(run)
         s = summary(plunge, fz)
         label = a.label[i] if a.label and i < len(a.label) else run
         def at(x):
