@@ -77,18 +77,11 @@ TEST_CASE("undamped elastic vibration keeps the total energy within 0.5 %") {
         deck += fmt::format("{:8d}{:16.8f}\n", 1 + i + 9 * (j + 3 * k), 0.01 * (i - 4) / 4.0);
   deck += "*END\n";
   Simulation sim = prepare(dir, deck);
-  double initial = -1.0, worst = 0.0;
-  solver::RunHooks hooks;
-  hooks.output_due = [](const solver::State&) { return true; };
-  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool) {
-    const solver::EnergySummary e = solver::energy_summary(s, previous);
-    if (initial < 0.0) initial = e.total;
-    worst = std::max(worst, std::abs(e.total / initial - 1.0));
-  };
-  run(sim, hooks);
-  MESSAGE("largest |E_total / E_0 - 1| over ", sim.state->cycle, " cycles: ", worst);
-  CHECK(initial > 0.0);
-  CHECK(worst < 0.005);
+  EnergyDrift drift;
+  run(sim, drift.hooks());
+  MESSAGE("largest |E_total / E_0 - 1| over ", sim.state->cycle, " cycles: ", drift.worst);
+  CHECK(drift.initial > 0.0);
+  CHECK(drift.worst < 0.005);
 }
 
 TEST_CASE("free rigid body spinning about a non-principal axis keeps its angular momentum") {

@@ -11,6 +11,7 @@
 
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
+#include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
 #include "test_support.hpp"
 
@@ -69,6 +70,29 @@ inline Simulation prepare(const TempDir& dir, const std::string& text) {
 
 inline void run(Simulation& sim, const solver::RunHooks& hooks = {}) {
   sim.result = solver::run(*sim.state, hooks);
+}
+
+/// The largest |E_total / E_0 - 1| of a run, sampled every cycle: pass hooks() to run() (the
+/// tracker must outlive the run).
+struct EnergyDrift {
+  double initial = -1.0, worst = 0.0;
+  [[nodiscard]] solver::RunHooks hooks() {
+    solver::RunHooks h;
+    h.output_due = [](const solver::State&) { return true; };
+    h.write = [this](const solver::State& s, const Eigen::Matrix3Xd& previous, bool) {
+      const solver::EnergySummary e = solver::energy_summary(s, previous);
+      if (initial < 0.0) initial = e.total;
+      worst = std::max(worst, std::abs(e.total / initial - 1.0));
+    };
+    return h;
+  }
+};
+
+/// Whether any diagnostic's message contains `text`.
+inline bool mentions(const core::Diagnostics& d, const std::string& text) {
+  for (const auto& m : d.all())
+    if (m.message.find(text) != std::string::npos) return true;
+  return false;
 }
 
 /// Replaces the first occurrence of `from` in `text` (which must hold it).
