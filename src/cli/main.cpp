@@ -12,6 +12,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/keyword_docs.hpp"
 #include "cli/run_command.hpp"
+#include "cli/wait_policy.hpp"
 #include "deck/registry.hpp"
 #include "deck/text_util.hpp"
 
@@ -88,6 +89,7 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
 }  // namespace
 
 int main(int argc, char** argv) {
+  mcdyna::cli::adopt_passive_wait(argv);  // first: it may start the program again
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string error;
   if (!translate_lsdyna_arguments(args, error)) {

@@ -21,6 +21,7 @@
 #include "cli/report.hpp"
 #include "cli/restart_dump.hpp"
 #include "cli/step_log.hpp"
+#include "cli/wait_policy.hpp"
 #include "deck/deck.hpp"
 #include "io/checked_file.hpp"
 #include "io/outputs.hpp"
@@ -307,8 +308,9 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                options.restart.string(), state->time, state->cycle, omp_get_max_threads());
   } else {
     fmt::print(log,
-               "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}\n\n",
-               options.deck.string(), omp_get_max_threads());
+               "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}, "
+               "OpenMP wait policy {}\n\n",
+               options.deck.string(), omp_get_max_threads(), wait_policy_description());
     print_summary(log, d.deck, d.built.model, count_model(d.built.model));
     log << report.str();
     for (const auto& diag : compile_diags.all())

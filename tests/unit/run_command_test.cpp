@@ -73,6 +73,27 @@ CsvTable read_csv(const std::filesystem::path& p) {
 
 }  // namespace
 
+TEST_CASE("threads wait passively unless the user chose a policy, and d3hsp says which") {
+  // Spinning waits made 2 threads slower than 1 on a busy machine (cli/wait_policy.hpp).
+  TempDir dir;
+  const std::string deck = std::string(MCDYNA_SOURCE_DIR) + "/decks/cube/cube_drop.k";
+  auto policy_line = [&](const std::string& env, const std::string& out) {
+    const Run r =
+        run_mcdyna("run " + deck + " --threads 2 -q --out " + (dir.path() / out).string(), env);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string log = read_text(dir.path() / out / "d3hsp");
+    const std::size_t at = log.find("threads: ");
+    REQUIRE(at != std::string::npos);
+    return log.substr(at, log.find('\n', at) - at);
+  };
+  CHECK(policy_line("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT", "default") ==
+        "threads: 2, OpenMP wait policy PASSIVE (OMP_WAIT_POLICY)");
+  CHECK(policy_line("env -u GOMP_SPINCOUNT OMP_WAIT_POLICY=ACTIVE", "active") ==
+        "threads: 2, OpenMP wait policy ACTIVE (OMP_WAIT_POLICY)");
+  CHECK(policy_line("env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=1000", "spin") ==
+        "threads: 2, OpenMP wait policy libgomp's default (spin, then sleep), GOMP_SPINCOUNT=1000");
+}
+
 TEST_CASE("LS-DYNA habit: mcdyna i=deck.k ncpu=2 runs the deck in the working directory") {
   TempDir dir;
   std::filesystem::copy_file(std::string(MCDYNA_SOURCE_DIR) + "/decks/cube/cube_drop.k",
