@@ -14,7 +14,8 @@ namespace mcdyna::cli {
 /// run goes on with the default policy) only if that fails. A policy the user set is kept.
 void adopt_passive_wait(char** argv);
 
-/// "passive (OMP_WAIT_POLICY=PASSIVE)" and the like, for d3hsp.
+/// "PASSIVE (OMP_WAIT_POLICY)", "libgomp's default (spin, then sleep), GOMP_SPINCOUNT=1000" and
+/// the like, for d3hsp.
 std::string wait_policy_description();
 
 }  // namespace mcdyna::cli

@@ -125,6 +125,13 @@ struct CentrePoint {
   double volume;              // 8 det J (<= 0: inverted)
 };
 
+// l[i][j] = dv_i / dx_j at the centre from the velocity pattern sums and J^-1.
+void centre_velocity_gradient(const double hv[8][3], const double ji[3][3], double l[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      l[i][j] = 0.125 * (hv[1][i] * ji[0][j] + hv[2][i] * ji[1][j] + hv[4][i] * ji[2][j]);
+}
+
 CentrePoint centre_point(const Corners& x, const Corners& v) {
   CentrePoint p;
   hex::pattern_sums(x, p.hx);
@@ -133,10 +140,7 @@ CentrePoint centre_point(const Corners& x, const Corners& v) {
   hex::centre_jacobian(p.hx, jac);
   p.volume = 8.0 * hex::invert(jac, p.ji);
   if (!(p.volume > 0.0)) return p;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      p.l[i][j] =
-          0.125 * (p.hv[1][i] * p.ji[0][j] + p.hv[2][i] * p.ji[1][j] + p.hv[4][i] * p.ji[2][j]);
+  centre_velocity_gradient(p.hv, p.ji, p.l);
   return p;
 }
 
@@ -152,9 +156,7 @@ bool mid_step_gradient(const CentrePoint& p, double half_step, double l[3][3]) {
   double jac[3][3], ji[3][3];
   hex::centre_jacobian(hx, jac);
   if (!(hex::invert(jac, ji) > 0.0)) return false;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      l[i][j] = 0.125 * (p.hv[1][i] * ji[0][j] + p.hv[2][i] * ji[1][j] + p.hv[4][i] * ji[2][j]);
+  centre_velocity_gradient(p.hv, ji, l);
   return true;
 }
 
@@ -230,13 +232,10 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const CentrePoint cp = centre_point(x, v);
   if (!(cp.volume > 0.0)) return {0.0, true, false};
   const double volume = cp.volume;
-  Kinematics k = kinematics_from_gradient(cp.l);
-  if (c.block.objective) {
-    double mid[3][3];
-    if (!mid_step_gradient(cp, 0.5 * c.in.step, mid)) return {0.0, true, false};
-    k = kinematics_from_gradient(mid);
-    k.objective = true;
-  }
+  double mid[3][3];
+  if (c.block.objective && !mid_step_gradient(cp, 0.5 * c.in.step, mid)) return {0.0, true, false};
+  Kinematics k = kinematics_from_gradient(c.block.objective ? mid : cp.l);
+  k.objective = c.block.objective;
   const Index point = c.block.point_begin + (e - c.block.begin);
   bool failed = false;
   const double dev_work =
