@@ -119,12 +119,11 @@ struct SpgTimes {
   double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0, force = 0.0;
 };
 
-/// Buffers the per-cycle passes reuse instead of allocating them at every call (11 MB of PDAMP
-/// impulses per cycle at h 0.15). Not dumped: every call fills what it reads.
+/// Buffers the per-cycle passes reuse instead of allocating them at every call. Not dumped:
+/// every call fills what it reads.
 struct Workspace {
-  Eigen::Matrix3Xd acceleration;  ///< advance_velocities: a_J of the smoothed particles
-  Eigen::Matrix3Xd impulse;       ///< PDAMP impulse of each pair of the row lists
-  Eigen::Matrix3Xd row_impulse;   ///< PDAMP: the sum over row I's own pairs
+  Eigen::Matrix3Xd acceleration;    ///< advance_velocities: a_J of the smoothed particles
+  std::vector<double> mass_factor;  ///< particle_pass with DT2MS: m / (m - added) per particle
   Eigen::Matrix<double, 9, Eigen::Dynamic> stress;  ///< frequency.cpp: linearised w sigma F^-T
   Eigen::Matrix3Xd force, hat, vector, product;     ///< frequency.cpp: f, u-hat, x and A x
 };

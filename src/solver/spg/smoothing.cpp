@@ -25,17 +25,31 @@ namespace {
 // rigid rotation are not damped (their relative velocity is normal to e), and
 // k = |PDAMP| mu_IJ / n_I (mu the reduced mass, n_I the neighbours of I) removes about |PDAMP|
 // of I's normal velocity difference to its neighbours per step. The impulses are taken from
-// the velocities of the previous half step, so they are computed in the same pass over the
-// rows as the velocity update (the whole update reads only old velocities).
+// the velocities of the previous half step, so particle I sums, in its own pass of the velocity
+// update, the impulses of its row's pairs (I, J) and, over its transpose, minus those of the
+// pairs (J, I): each pair is computed twice with the same arithmetic (the same bits at both
+// ends), which costs less than storing 24 bytes per pair and reading them back in transpose
+// order (the SPG passes are memory-bound).
 // ((u_J - u_I) . e) e = ((u_J - u_I) . r) r / |r|^2 for r = x_J - x_I: one division, no root.
-Vec3 pair_impulse(const State& s, const Domain& d, double share, Index i, Index j) {
-  const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
-  const Vec3 r = s.nodes.position.col(d.nodes[jj]) - s.nodes.position.col(d.nodes[ii]);
-  const double mi = d.mass[ii], mj = d.mass[jj];
+struct PairEnd {
+  Vec3 position, velocity;  ///< x and the previous u-hat
+  double mass = 0.0;        ///< m-hat
+  double share = 0.0;       ///< |PDAMP| / n of the row the pair belongs to (used for I)
+};
+
+PairEnd pair_end(const State& s, const Domain& d, Index i) {
+  const auto ii = static_cast<std::size_t>(i);
+  return {s.nodes.position.col(d.nodes[ii]), d.unsmoothed_previous.col(i), d.mass[ii],
+          d.settings.damping / static_cast<double>(std::max<Index>(d.list.count(i) - 1, 1))};
+}
+
+// The impulse of the pair (I, J) of row I on I.
+inline Vec3 pair_impulse(const PairEnd& i, const PairEnd& j) {
+  const Vec3 r = j.position - i.position;
   const double r2 = r.squaredNorm();
   if (!(r2 > 0.0)) return Vec3::Zero();  // coincident: no direction to damp along
-  const double along = (d.unsmoothed_previous.col(j) - d.unsmoothed_previous.col(i)).dot(r);
-  return (share * mi * mj * along / ((mi + mj) * r2)) * r;
+  const double along = (j.velocity - i.velocity).dot(r);
+  return (i.share * i.mass * j.mass * along / ((i.mass + j.mass) * r2)) * r;
 }
 
 }  // namespace
@@ -64,40 +78,27 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     }
   }
   // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
-  // PDAMP impulses of row I's pairs (applied with the other ends below); a pinned particle takes
-  // its share of the smoothed accelerations into its one (node) velocity, which is also its u-hat
-  // in the smoothing.
-  const auto pairs = static_cast<Eigen::Index>(d.list.neighbours.size());
-  Eigen::Matrix3Xd& impulse = d.scratch.impulse;
-  Eigen::Matrix3Xd& row_impulse = d.scratch.row_impulse;
-  if (damping) {
-    impulse.resize(3, pairs);  // every pair is written below
-    row_impulse.setZero(3, n);
-  }
+  // PDAMP impulses of I's pairs at both ends; a pinned particle takes its share of the smoothed
+  // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
+  double removed = 0.0;  // PDAMP: kinetic energy of the unsmoothed velocities taken out
   if (mode != Stabilization::none) {
-#pragma omp parallel for schedule(static, 256) if (n > 512)
+#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
       const bool free_i = d.pinned[ii] == 0;
-      const double share =
-          damping ? d.settings.damping / std::max<Index>(d.list.count(i) - 1, 1) : 0.0;
+      const bool damp_i = damping && free_i;
+      const PairEnd end_i = damp_i ? pair_end(s, d, i) : PairEnd{};
       Vec3 sum = Vec3::Zero(), own = Vec3::Zero();
       for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
         const Index j = d.list.neighbours[pp];
         if (mc) sum += d.shape.value[pp] * acc.col(j);
-        if (!damping) continue;
-        if (j == i || !free_i || d.pinned[static_cast<std::size_t>(j)]) {
-          impulse.col(p).setZero();
-          continue;
-        }
-        impulse.col(p) = pair_impulse(s, d, share, i, j);
-        own += impulse.col(p);
+        if (damp_i && j != i && !d.pinned[static_cast<std::size_t>(j)])
+          own += pair_impulse(end_i, pair_end(s, d, j));
       }
       if (!mc) sum = acc.col(i);
       if (free_i) {
         d.unsmoothed.col(i) += dt * sum;
-        if (damping) row_impulse.col(i) = own;
       } else {
         const auto node = static_cast<std::size_t>(d.nodes[ii]);
         if (mc)
@@ -105,27 +106,23 @@ Index advance_velocities(State& s, Domain& d, double dt) {
               dt * d.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
         d.unsmoothed.col(i) = nd.velocity.col(d.nodes[ii]);
       }
+      if (!damp_i) continue;
+      // The other end: I receives minus the impulses of the pairs (J, I) of the rows it is in.
+      Vec3 total = own;
+      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+        const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+        if (j != i && !d.pinned[static_cast<std::size_t>(j)])
+          total -= pair_impulse(pair_end(s, d, j), end_i);
+      }
+      const Vec3 undamped = d.unsmoothed.col(i);
+      d.unsmoothed.col(i) += total / d.mass[ii];
+      removed += 0.5 * d.mass[ii] * (undamped.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
     }
   } else {
     for (Index i = 0; i < n; ++i)  // plain nodal integration: every particle is pinned
       d.unsmoothed.col(i) = nd.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
   }
-  // PDAMP, the other end of each pair: I receives minus the impulses of the pairs (J, I).
-  if (damping) {
-    double removed = 0.0;
-#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
-    for (Index i = 0; i < n; ++i) {
-      const auto ii = static_cast<std::size_t>(i);
-      if (d.pinned[ii]) continue;
-      Vec3 total = row_impulse.col(i);
-      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
-        total -= impulse.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
-      const Vec3 undamped = d.unsmoothed.col(i);
-      d.unsmoothed.col(i) += total / d.mass[ii];
-      removed += 0.5 * d.mass[ii] * (undamped.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
-    }
-    d.damping_energy += removed;
-  }
+  d.damping_energy += removed;
 
   // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7),
   // from u-hat only (which holds the pinned particles' node velocities).
