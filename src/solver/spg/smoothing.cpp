@@ -40,7 +40,17 @@ struct PairEnd {
 PairEnd pair_end(const State& s, const Domain& d, Index i) {
   const auto ii = static_cast<std::size_t>(i);
   return {s.nodes.position.col(d.nodes[ii]), d.unsmoothed_previous.col(i), d.mass[ii],
-          d.settings.damping / static_cast<double>(std::max<Index>(d.list.count(i) - 1, 1))};
+          d.scratch.damping_share[ii]};
+}
+
+// |PDAMP| / n of every row, once per cycle rather than at every pair that needs it.
+void damping_shares(Domain& d) {
+  const Index n = d.count();
+  d.scratch.damping_share.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index i = 0; i < n; ++i)
+    d.scratch.damping_share[static_cast<std::size_t>(i)] =
+        d.settings.damping / static_cast<double>(std::max<Index>(d.list.count(i) - 1, 1));
 }
 
 // The impulse of the pair (I, J) of row I on I.
@@ -81,6 +91,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // PDAMP impulses of I's pairs at both ends; a pinned particle takes its share of the smoothed
   // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
   double removed = 0.0;  // PDAMP: kinetic energy of the unsmoothed velocities taken out
+  if (damping) damping_shares(d);
   if (mode != Stabilization::none) {
 #pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
     for (Index i = 0; i < n; ++i) {
