@@ -148,8 +148,8 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--spg-step", run.spg_step,
                    "SPG particle step estimate: nn (nearest-neighbour distance, default) or "
-                   "eigen (stiffness lengths scaled every cycle to the largest eigenvalue of the "
-                   "linearised equations, by power iteration)")
+                   "eigen (stiffness lengths scaled every second cycle to the largest "
+                   "eigenvalue of the linearised equations, by power iteration)")
       ->check(CLI::IsMember({"nn", "eigen"}));
   run_cmd
       ->add_option("--fixed-step", run.fixed_step,

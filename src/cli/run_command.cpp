@@ -138,7 +138,7 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
         fmt::print(
             out,
             ", the smallest {:.4e} s at t = {:.6e} (mode largest at node {}); particle "
-            "steps scaled to it every cycle",
+            "steps scaled to it every second cycle",
             d.step_bound.smallest_critical, d.step_bound.smallest_critical_time,
             at >= 0 ? s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(at)])]
                     : 0);

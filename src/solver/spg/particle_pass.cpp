@@ -106,8 +106,8 @@ Outcome release_or_invert(Domain& d, Index j) {
 // plate up at 7.4 us (TSSFAC 0.9; it ran at 0.6).
 //   nearest_neighbour: the nearest-neighbour distance at the renewal, capped by the isotropic
 //     length (the verified default; far too strict for squeezed pairs, manual/verification.md)
-//   eigenvalue: the stiffness length (stiffness_length.cpp), scaled every cycle to the largest
-//     eigenvalue of the linearised equations
+//   eigenvalue: the stiffness length (stiffness_length.cpp), scaled every second cycle to the
+//     largest eigenvalue of the linearised equations
 double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic_length) {
   Eigen::SelfAdjointEigenSolver<Mat3> eig;
   eig.computeDirect(f_hat.transpose() * f_hat, Eigen::EigenvaluesOnly);

@@ -19,10 +19,11 @@
 // screw tip), so l only ranks the particles and follows their changes from cycle to cycle; its
 // scale comes from the true critical step of the particles: the largest eigenvalue of the
 // linearised MC-SPG equations (frequency.cpp), by power iteration to convergence at the first
-// renewal and then one iteration per cycle from the last mode, which tracks the dominant mode as
-// the state evolves. The scale is set so that the shortest particle step, with the masses it has
-// and without the bulk viscosity's shortening, is 2 / omega_max; it may grow by 0.5 % per cycle
-// (a mode growing elsewhere takes the iteration a few cycles to find) and falls at once.
+// renewal and then one iteration every second cycle from the last mode, which tracks the dominant
+// mode as the state evolves. The scale is set so that the shortest particle step, with the masses
+// it has and without the bulk viscosity's shortening, is 2 / omega_max; it may grow by 0.5 % per
+// recalibration (a mode growing elsewhere takes the iteration a few cycles to find) and falls at
+// once.
 // Measured on the FDS plate at h 0.15 (manual/verification.md): nearest-neighbour lengths held
 // the step at 2.6e-9 s at 24 us where bisection found the state's critical step at 1.08e-8 s,
 // and Gershgorin lengths scaled once at the start blew the plate up at 9.5 us, when the critical
