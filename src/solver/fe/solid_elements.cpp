@@ -74,14 +74,15 @@ struct VolumetricResult {
 };
 
 VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, double trace,
-                                   double dev_work, double length) {
+                                   double dev_work, double length, bool mid_step) {
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
   const PointVolumetrics v =
       volumetric_point_update(c.mat, c.block.bulk_viscosity, s.initial_volume[i], s.volume[i],
                               volume, trace, c.in.step, dev_work, length,
                               VolumetricState{s.pressure[i], s.eos_energy[i], s.temperature[i],
-                                              s.viscosity[i], s.internal_energy[i]});
+                                              s.viscosity[i], s.internal_energy[i]},
+                              mid_step);
   s.volume[i] = volume;
   return {s.pressure[i] + v.viscosity, element_step(c.block.bulk_viscosity, length, v.sound, trace),
           v.zero_deviator, v.density, v.wave_speed_squared};
@@ -238,10 +239,11 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   k.objective = c.block.objective;
   const Index point = c.block.point_begin + (e - c.block.begin);
   bool failed = false;
-  const double dev_work =
-      volume * point_update(c, point, k, s.temperature[i], s.pressure[i], failed);
+  const double dev_work = work_volume(k.objective, s.volume[i], volume) *
+                          point_update(c, point, k, s.temperature[i], s.pressure[i], failed);
   const double length = volume / hex::max_face_area(x);
-  const VolumetricResult vr = volumetric_update(c, e, volume, k.trace, dev_work, length);
+  const VolumetricResult vr =
+      volumetric_update(c, e, volume, k.trace, dev_work, length, k.objective);
   if (vr.zero_deviator) zero_point_deviators(c.st, point, 1);
   // Corner forces f_n = -m b_n + hourglass, with m = V sigma (less the hourglass b-term).
   const double* dev = s.points.deviator.col(point).data();
@@ -296,8 +298,11 @@ ElementOutcome selective_reduced_element(ElementContext& c, Index e) {
     dev_work +=
         g[p].det * point_update(c, first + p, k[p], s.temperature[i], s.pressure[i], failed);
   }
+  // OSU 1: the work on the mid-step volume (the points' weights scale with the element's).
+  if (c.block.objective) dev_work *= work_volume(true, s.volume[i], volume) / volume;
   const double length = volume / hex::max_face_area(x);
-  const VolumetricResult vr = volumetric_update(c, e, volume, trace, dev_work, length);
+  const VolumetricResult vr =
+      volumetric_update(c, e, volume, trace, dev_work, length, c.block.objective);
   if (vr.zero_deviator) zero_point_deviators(c.st, first, 8);
   for (int p = 0; p < 8; ++p)
     add_stress_forces(s.points.deviator.col(first + p).data(), vr.pressure_total, g[p].det, g[p].b,

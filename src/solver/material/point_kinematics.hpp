@@ -129,14 +129,22 @@ inline double element_step(const BulkViscosityParams& q, double length, double s
   return length / (qv + std::sqrt(qv * qv + sound * sound));
 }
 
-/// Deviatoric update of one point over dt: Jaumann rotation of its stress (and back stress),
-/// the material update, and the deviatoric work per unit volume at the mid-step stress.
+/// Deviatoric update of one point over dt: rotation of its stress (and back stress), the
+/// material update, and the deviatoric work per unit volume at the mid-step stress.
+/// OSU 0: the Jaumann increment over the whole step, then the material update (LS-DYNA's
+/// default, first order in the rotation). OSU 1: the strain increment D dt belongs to the
+/// mid-step configuration, so the stress turns by half a step (Hughes-Winget over dt/2), takes
+/// the increment and the return there, and turns by the other half; the work is the mid-step
+/// stress in that same frame. Rotating by the whole step first and adding an increment of the
+/// mid-step frame leaves an error of order omega dt |C D dt| per step: first order over a
+/// spinning run (manual/verification.md, issue 24), where the split is second order.
 inline double deviatoric_point_update(const Material& m, const Kinematics& k, double dt,
                                       double temperature, double pressure, PointState st,
                                       bool& failed) {
   double* s = st.deviator;
-  rotate_stress(s, k, dt);
-  if (st.back_stress) rotate_stress(st.back_stress, k, dt);
+  const double turn = k.objective ? 0.5 * dt : dt;
+  rotate_stress(s, k, turn);
+  if (st.back_stress) rotate_stress(st.back_stress, k, turn);
   double s_old[6];
   std::copy(s, s + 6, s_old);
   double de[6];
@@ -146,7 +154,18 @@ inline double deviatoric_point_update(const Material& m, const Kinematics& k, do
   double mid[6];
   for (int j = 0; j < 6; ++j)
     mid[j] = 0.5 * (s_old[j] + s[j]);
+  if (k.objective) {
+    rotate_stress(s, k, turn);
+    if (st.back_stress) rotate_stress(st.back_stress, k, turn);
+  }
   return contract(mid, de);
+}
+
+/// The volume a step's work is taken on: with the rates of the mid-step configuration (OSU 1)
+/// the mid-step volume, as the trapezoidal rule of the central-difference energy balance asks;
+/// otherwise the end-of-step volume the rates were taken at (LS-DYNA's default).
+inline double work_volume(bool mid_step, double old_volume, double volume) {
+  return mid_step ? 0.5 * (old_volume + volume) : volume;
 }
 
 /// The per-point values a volumetric update changes (element or particle arrays).
@@ -167,14 +186,15 @@ struct PointVolumetrics {
 };
 
 /// Pressure (EOS or hypoelastic), bulk viscosity, internal energy and temperature of one point
-/// whose volume went from `old_volume` to `volume` over dt with rate tr D = `trace`.
+/// whose volume went from `old_volume` to `volume` over dt with rate tr D = `trace` (of the
+/// mid-step configuration when `mid_step`, OSU 1).
 /// The viscosity acting over the step is the mean of the last update's and this one's, as for
 /// the pressure: the trapezoidal rule that matches the central-difference kinetic energy.
 inline PointVolumetrics volumetric_point_update(const Material& m, const BulkViscosityParams& bv,
                                                 double initial_volume, double old_volume,
                                                 double volume, double trace, double dt,
-                                                double dev_work, double length,
-                                                VolumetricState st) {
+                                                double dev_work, double length, VolumetricState st,
+                                                bool mid_step) {
   const double rel = volume / initial_volume;
   PointVolumetrics r;
   r.density = m.density / rel;
@@ -188,7 +208,8 @@ inline PointVolumetrics volumetric_point_update(const Material& m, const BulkVis
   const double p_old = st.pressure;
   update_pressure(m, vc, st.pressure, st.eos_energy);
   r.zero_deviator = apply_pressure_cutoff(m, st.pressure);
-  st.internal_energy += dev_work - (0.5 * (p_old + st.pressure) + q_mean) * trace * dt * volume;
+  st.internal_energy += dev_work - (0.5 * (p_old + st.pressure) + q_mean) * trace * dt *
+                                       work_volume(mid_step, old_volume, volume);
   if (m.specific_heat > 0.0) {
     st.temperature =
         m.room_temperature + (st.eos_energy - m.eos.initial_energy) / (m.density * m.specific_heat);

@@ -139,9 +139,14 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   Kinematics k = kinematics_from_gradient(la);
   k.objective = d.settings.objective;
 
-  // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho.
-  const double shrink = 1.0 - dt * k.trace;
-  if (!(shrink > 0.0)) return release_or_invert(d, j);
+  // Eq. 26-27: rho^{n+1} = rho^n (1 - dt div v), V = m / rho. OSU 1, whose div v is that of
+  // the mid-step configuration: the trapezoidal form rho^{n+1} (1 + dt/2 div v) =
+  // rho^n (1 - dt/2 div v), second order where Eq. 26 is first (a spinning, ringing block
+  // otherwise keeps a first-order energy error, objective_update_test.cpp).
+  const double half = k.objective ? 0.5 * dt : 0.0;
+  const double grow = 1.0 + half * k.trace;
+  const double shrink = (1.0 - (dt - half) * k.trace) / grow;
+  if (!(shrink > 0.0) || !(grow > 0.0)) return release_or_invert(d, j);
   const double volume = d.volume[jj] / shrink;
 
   // Deviator and volumetric state, as at an FE integration point (point_kinematics.hpp).
@@ -149,17 +154,18 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   double* alpha = d.points.back_stress.size() > 0 ? d.points.back_stress.col(j).data() : nullptr;
   bool failed = false;
   const double dev_work =
-      volume * deviatoric_point_update(
-                   mat, k, dt, d.temperature[jj], d.pressure[jj],
-                   PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]},
-                   failed);
+      work_volume(k.objective, d.volume[jj], volume) *
+      deviatoric_point_update(
+          mat, k, dt, d.temperature[jj], d.pressure[jj],
+          PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]}, failed);
   if (failed) d.failed[jj] = 1;
   const double length = d.length[jj] * std::cbrt(volume / d.renewal_volume[jj]);
   const PointVolumetrics vol =
       volumetric_point_update(mat, d.settings.bulk_viscosity, d.initial_volume[jj], d.volume[jj],
                               volume, k.trace, dt, dev_work, length,
                               VolumetricState{d.pressure[jj], d.eos_energy[jj], d.temperature[jj],
-                                              d.viscosity[jj], d.internal_energy[jj]});
+                                              d.viscosity[jj], d.internal_energy[jj]},
+                              k.objective);
   d.volume[jj] = volume;
   bool zero_dev = vol.zero_deviator;
   if (d.failed[jj]) {  // material failure (FS on MAT_003/024, JC damage): no shear, no tension
