@@ -130,9 +130,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run_cmd
       ->add_option("--spg-stabilization", run.spg_stabilization,
-                   "SPG velocity stabilisation for studies: none (plain nodal integration), "
-                   "direct (Eq. 7 smoothing), mc (MC-SPG, default)")
-      ->check(CLI::IsMember({"none", "direct", "mc"}));
+                   "SPG stabilisation, overriding the sections' ITB: none (plain nodal "
+                   "integration), direct (Eq. 7 smoothing, for studies), mc (MC-SPG, ITB 3), spg "
+                   "(original SPG strain-gradient stabilisation, ITB 1)")
+      ->check(CLI::IsMember({"none", "direct", "mc", "spg"}));
   run_cmd
       ->add_option("--spg-renewal-strain", run.spg_renewal_strain,
                    "KERNEL 0 SPG parts: at an SMSTEP check, renew the kernel of the particles "

@@ -92,7 +92,8 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                s.mass_scaling_dt, added, mass > 0.0 ? 100.0 * added / mass : 0.0);
   }
   static const char* kModes[] = {"none (plain nodal integration)", "direct smoothing (Eq. 7)",
-                                 "MC-SPG (Eqs. 13-31)"};
+                                 "MC-SPG (Eqs. 13-31)",
+                                 "original SPG, strain-gradient stabilisation (ITB 1, Eqs. 8-12)"};
   static const char* kShapes[] = {"cubic spline, box", "quadratic spline, box",
                                   "cubic spline, sphere"};
   for (const solver::spg::Domain& d : s.spg) {
@@ -247,6 +248,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     const solver::spg::Stabilization mode =
         options.spg_stabilization == "none"     ? solver::spg::Stabilization::none
         : options.spg_stabilization == "direct" ? solver::spg::Stabilization::direct
+        : options.spg_stabilization == "spg"    ? solver::spg::Stabilization::strain_gradient
                                                 : solver::spg::Stabilization::momentum_consistent;
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.stabilization = mode;
@@ -258,8 +260,17 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.mode_control = options.spg_mode_control;
   if (options.spg_step == "eigen")
-    for (solver::spg::Domain& dom : state->spg)
+    for (solver::spg::Domain& dom : state->spg) {
+      if (dom.settings.stabilization == solver::spg::Stabilization::strain_gradient) {
+        fmt::print(err,
+                   "mcdyna: error: --spg-step eigen: SPG part {} runs the original SPG (ITB 1), "
+                   "whose stabilisation the eigenvalue estimate does not linearise; use the "
+                   "default step or ITB 3\nmcdyna: {} not run\n",
+                   state->parts[static_cast<std::size_t>(dom.part)].id, options.deck.string());
+        return kRunUsage;
+      }
       dom.settings.step_estimate = solver::spg::StepEstimate::eigenvalue;
+    }
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
     fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,

@@ -134,11 +134,12 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
 
 void check_spg_section(const Section& s, core::Diagnostics& diags) {
   const SpgSettings& spg = s.spg;
-  if (spg.stabilization != 3) {
+  if (spg.stabilization == 2) {
     diags.note(s.loc,
-               "section {}: ITB = {} runs with the momentum-consistent smoothing of MC-SPG "
-               "(ITB = 3)",
-               s.id, spg.stabilization);
+               "section {}: ITB = 2 (simplified fluid-particle approximation) runs as ITB = 1, the "
+               "original SPG stabilisation: the public SPG references define no simplified "
+               "variant (manual/migration.md)",
+               s.id);
   }
   if (spg.kernel_update == 2) {
     diags.note(s.loc,

@@ -53,6 +53,9 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
   st.damping = std::abs(in.particle_damping);
   st.surface_factor = in.surface_quadrature_factor > 0.0 ? in.surface_quadrature_factor : 1.0;
   st.mode_control = in.smoothing_scheme == 1.0 ? spg::kModeControl : 0.0;
+  // ITB 1 (and 2, which the model check notes) is the original SPG; 3 is MC-SPG.
+  st.stabilization = in.stabilization == 3 ? spg::Stabilization::momentum_consistent
+                                           : spg::Stabilization::strain_gradient;
   st.bulk_viscosity = q;
   return st;
 }

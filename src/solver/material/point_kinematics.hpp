@@ -138,9 +138,12 @@ inline double element_step(const BulkViscosityParams& q, double length, double s
 /// stress in that same frame. Rotating by the whole step first and adding an increment of the
 /// mid-step frame leaves an error of order omega dt |C D dt| per step: first order over a
 /// spinning run (manual/verification.md, issue 24), where the split is second order.
+/// `modified_shear`, when given, receives G-tilde of the paper's Eqs. 11-12,
+/// 2 G-tilde = (H_dtau / H_de)^(1/2), the ratio of this update's deviatoric stress and strain
+/// increments (G itself while elastic, less while plastic), for ITB 1's stabilisation stress.
 inline double deviatoric_point_update(const Material& m, const Kinematics& k, double dt,
                                       double temperature, double pressure, PointState st,
-                                      bool& failed) {
+                                      bool& failed, double* modified_shear = nullptr) {
   double* s = st.deviator;
   const double turn = k.objective ? 0.5 * dt : dt;
   rotate_stress(s, k, turn);
@@ -154,6 +157,15 @@ inline double deviatoric_point_update(const Material& m, const Kinematics& k, do
   double mid[6];
   for (int j = 0; j < 6; ++j)
     mid[j] = 0.5 * (s_old[j] + s[j]);
+  if (modified_shear) {
+    double ds[6];
+    for (int j = 0; j < 6; ++j)
+      ds[j] = s[j] - s_old[j];
+    const double h_de = contract(de, de);
+    *modified_shear = h_de > 0.0
+                          ? std::min(0.5 * std::sqrt(contract(ds, ds) / h_de), m.shear_modulus)
+                          : m.shear_modulus;
+  }
   if (k.objective) {
     rotate_stress(s, k, turn);
     if (st.back_stress) rotate_stress(st.back_stress, k, turn);

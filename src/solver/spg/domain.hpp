@@ -19,9 +19,43 @@ namespace mcdyna::solver::spg {
 
 /// `--spg-stabilization`: how particle velocities are stabilised.
 enum class Stabilization {
-  none,                ///< plain direct nodal integration (Eq. 5), no smoothing
-  direct,              ///< the original SPG direct smoothing of Eq. 7 (not momentum-consistent)
-  momentum_consistent  ///< MC-SPG, Eqs. 13-31 (ITB = 3, the default)
+  none,                 ///< plain direct nodal integration (Eq. 5), no smoothing
+  direct,               ///< a direct smoothing of Eq. 7 (not momentum-consistent), for studies
+  momentum_consistent,  ///< MC-SPG, Eqs. 13-31 (ITB = 3, the default)
+  /// The original SPG (ITB = 1, Eqs. 8-12): nodal integration of the unsmoothed field plus the
+  /// non-residual strain-gradient stabilisation at a second point per particle
+  /// (gradient_stabilization.cpp)
+  strain_gradient
+};
+
+/// Whether the particles move with a smoothed velocity (Eq. 7 or Eq. 13); otherwise each
+/// particle's node velocity is integrated plainly, as for nodal integration.
+inline bool smooths_velocity(Stabilization s) {
+  return s == Stabilization::direct || s == Stabilization::momentum_consistent;
+}
+
+/// ITB 1's strain-gradient stabilisation (Eqs. 9-12, gradient_stabilization.cpp), per
+/// particle. Tensors are 6-vectors xx yy zz xy yz zx (tensor shear components).
+struct GradientStabilization {
+  /// lambda^b of Eq. 10: the second moment of the smoothing function (Eq. 7) about the
+  /// particle, M_J = sum_K phi_K(X_J) (X_K - X_J) (X_K - X_J)^T in the row's reference,
+  /// xx yy zz xy yz zx, taken at the row's renewal (negative eigenvalues cut to zero).
+  Eigen::Matrix<double, 6, Eigen::Dynamic> moment;
+  /// The stabilisation stresses sigma-tilde_a (Eq. 10) along the reference directions
+  /// a = X, Y, Z, 6 components each (stress x length): the work rate is
+  /// V sum_a sigma-tilde_a : e_a, e_a = d(D)/dX_a from the second-derivative functions.
+  Eigen::Matrix<double, 18, Eigen::Dynamic> stress;
+  /// The row's stable-step factor (1 + tr(M) (sum_K |psi_K|)^2 / (sum_K |grad phi_K|)^2)^-1/2,
+  /// at the renewal (psi: ShapeFunctions::hessian).
+  std::vector<double> step_factor;
+  // Of the last stress pass (rebuilt every cycle):
+  Eigen::Matrix3Xd spin;      ///< W (Kinematics::w)
+  std::vector<double> bulk;   ///< K = rho c^2 - 4/3 G
+  std::vector<double> shear;  ///< G-tilde of Eqs. 11-12
+  // Workspace of the force pass (not dumped): V sigma-tilde_a F-hat^-T, and per row the sum of
+  // its second-derivative functions over the active neighbours.
+  Eigen::Matrix<double, 27, Eigen::Dynamic> work_stress;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> own_hessian;
 };
 
 /// Bonds: neighbour pairs of the initial configuration (either particle's support containing
@@ -203,7 +237,9 @@ struct Domain {
   // the last stress update, the residual r_J = x_J - sum_K phi_K(X_J) x_K and g_J = c k_J r_J.
   std::vector<double> mode_stiffness;
   Eigen::Matrix3Xd mode_residual, mode_force;
-  std::vector<double> mode_energy;  ///< work of the mode-control forces (hourglass energy)
+  std::vector<double> mode_energy;  ///< work of the mode-control or ITB 1 stabilisation forces
+                                    ///< (hourglass energy)
+  GradientStabilization gradient;   ///< ITB 1 only (empty otherwise)
 
   Bonds bonds;
   long broken_bonds = 0;

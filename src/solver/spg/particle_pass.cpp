@@ -153,11 +153,14 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   double* dev = d.points.deviator.col(j).data();
   double* alpha = d.points.back_stress.size() > 0 ? d.points.back_stress.col(j).data() : nullptr;
   bool failed = false;
+  const bool gradient = d.settings.stabilization == Stabilization::strain_gradient;
+  double modified_shear = 0.0;
   const double dev_work =
       work_volume(k.objective, d.volume[jj], volume) *
       deviatoric_point_update(
           mat, k, dt, d.temperature[jj], d.pressure[jj],
-          PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]}, failed);
+          PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]}, failed,
+          gradient ? &modified_shear : nullptr);
   if (failed) d.failed[jj] = 1;
   const double length = d.length[jj] * std::cbrt(volume / d.renewal_volume[jj]);
   const PointVolumetrics vol =
@@ -183,9 +186,18 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
   d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
-  const double step = element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length),
-                                   vol.sound, k.trace) /
-                      std::sqrt(d.mobility[jj]);
+  double step = element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length), vol.sound,
+                             k.trace) /
+                std::sqrt(d.mobility[jj]);
+  if (gradient) {  // ITB 1: what the stabilisation pass needs, and its stiffer step
+    GradientStabilization& g = d.gradient;
+    for (int c = 0; c < 3; ++c)
+      g.spin(c, j) = k.w[c];
+    g.shear[jj] = modified_shear;
+    g.bulk[jj] =
+        std::max(vol.density * vol.wave_speed_squared - 4.0 / 3.0 * mat.shear_modulus, 0.0);
+    step *= g.step_factor[jj];
+  }
   Outcome o{.step = step, .physical_step = step};
   scale_particle_mass(s, d, j, o);
   return o;
@@ -303,6 +315,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     grow_row_masses(d);
     smooth_masses(s, d);
   }
+  if (d.settings.stabilization == Stabilization::strain_gradient)
+    strain_gradient_stabilization(s, d, step);
   d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
   start = Clock::now();
 

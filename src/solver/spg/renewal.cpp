@@ -102,6 +102,11 @@ Transpose transpose_of(const NeighbourList& l, Index n) {
 
 // The renewed rows of `fresh` (lists and shape functions computed for them alone) replace
 // those of the current lists; the other rows are kept as they are, in their own reference.
+// ITB 1 integrates the strain gradient with the second-derivative functions.
+bool second_derivatives(const Domain& d) {
+  return d.settings.stabilization == Stabilization::strain_gradient;
+}
+
 void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fresh_shape,
                 const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
@@ -116,6 +121,8 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
   ShapeFunctions shape;
   shape.value.resize(pairs);
   shape.gradient.resize(3, static_cast<Eigen::Index>(pairs));
+  const bool second = d.shape.hessian.cols() > 0;
+  if (second) shape.hessian.resize(6, static_cast<Eigen::Index>(pairs));
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const bool renewed = rows[static_cast<std::size_t>(i)] != 0;
@@ -127,6 +134,7 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
       list.neighbours[static_cast<std::size_t>(q)] = from.neighbours[static_cast<std::size_t>(p)];
       shape.value[static_cast<std::size_t>(q)] = from_shape.value[static_cast<std::size_t>(p)];
       shape.gradient.col(q) = from_shape.gradient.col(p);
+      if (second) shape.hessian.col(q) = from_shape.hessian.col(p);
     }
   }
   d.list = std::move(list);
@@ -214,7 +222,7 @@ void smooth_masses(State& s, Domain& d) {
       d.transpose.gather[tt] = d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
                                d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] / m;
     }
-    const bool pin = mode == Stabilization::none || d.shared[ii] || d.isolated[ii] ||
+    const bool pin = !smooths_velocity(mode) || d.shared[ii] || d.isolated[ii] ||
                      (mode == Stabilization::momentum_consistent &&
                       !(m > kMinimumSmoothedMassShare * d.mass[ii]));
     d.pinned[ii] = pin ? 1 : 0;
@@ -260,15 +268,16 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     remove_broken_pairs(d, d.list);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate, damaged);
+    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate, damaged,
+                              second_derivatives(d));
     d.isolated.assign(static_cast<std::size_t>(n), 0);
   } else {
     NeighbourList fresh = find_neighbours(x, d.support, d.settings.shape, {}, rows);
     remove_broken_pairs(d, fresh);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    const ShapeFunctions fresh_shape =
-        shape_functions(x, d.support, d.settings.shape, fresh, degenerate, damaged);
+    const ShapeFunctions fresh_shape = shape_functions(x, d.support, d.settings.shape, fresh,
+                                                       degenerate, damaged, second_derivatives(d));
     merge_rows(d, fresh, fresh_shape, rows);
     for (Index i = 0; i < n; ++i)
       if (renewed(i)) d.isolated[static_cast<std::size_t>(i)] = 0;
@@ -327,6 +336,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
       d.length[ii] = std::min(d.length[ii], d.gradient_length_scale / gradient_norm[ii]);
   }
   if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(d);
+  if (d.settings.stabilization == Stabilization::strain_gradient)
+    stabilization_moments(s, d, all ? std::vector<std::uint8_t>{} : rows);
   smooth_masses(s, d);
   if (d.renewals == 0) d.step_bound.initial_critical = calibrate_stiffness_length(s, d);
   d.steps_since_renewal = 0;

@@ -10,10 +10,80 @@ namespace {
 
 using Vec4 = Eigen::Vector4d;
 using Mat4 = Eigen::Matrix4d;
+using Vec10 = Eigen::Matrix<double, 10, 1>;
+using Mat10 = Eigen::Matrix<double, 10, 10>;
+
+// The quadratic basis [1, z, z1^2, z2^2, z3^2, z1 z2, z2 z3, z3 z1].
+Vec10 quadratic_basis(const Eigen::Vector3d& z) {
+  Vec10 h;
+  h << 1.0, z.x(), z.y(), z.z(), z.x() * z.x(), z.y() * z.y(), z.z() * z.z(), z.x() * z.y(),
+      z.y() * z.z(), z.z() * z.x();
+  return h;
+}
+
+// Second-derivative functions of particle I's row (ShapeFunctions::hessian), from the window
+// values w_J (`windows`, in row order). With r = X_I - X_J and z = B r (B = I's support
+// matrix), a quadratic g has g(X_J) = H(z)^T a, a = [g, -B^-T grad g, the z-Hessian Hz as
+// Hz11/2, Hz22/2, Hz33/2, Hz12, Hz23, Hz31]; psi = w H^T M^-1 e picks a's entry e out of
+// sum_J psi g(X_J) = e^T M^-1 (sum w H H^T) a. The x-Hessian is B^T Hz B. A z-Hessian entry the
+// row cannot resolve is zero; with a general B that can spread into other x entries, which is
+// still zero for every linear field (the stabilisation then weighs less there, nothing more).
+void row_hessian(const Eigen::Matrix3Xd& x, const Eigen::Matrix3d& to_unit,
+                 const NeighbourList& list, Index i, const std::vector<double>& windows,
+                 std::size_t first, std::size_t last, ShapeFunctions& out) {
+  const Eigen::Vector3d xi = x.col(i);
+  Mat10 m = Mat10::Zero();
+  for (std::size_t p = first; p < last; ++p) {
+    const Vec10 h = quadratic_basis(to_unit * (xi - x.col(list.neighbours[p])));
+    m.noalias() += windows[p - first] * h * h.transpose();
+  }
+  for (std::size_t p = first; p < last; ++p)
+    out.hessian.col(static_cast<Eigen::Index>(p)).setZero();
+  // A row on a surface has two layers of neighbours across it (support 1.5 spacings), where
+  // z_n^2 and z_n take the same values up to a factor: M is singular along that combination.
+  // The pseudo-inverse on the rest leaves every other Hessian entry exact for quadratics and
+  // zero for linear fields; the entries the null space touches (d2/dn2) are left out (zero).
+  const Eigen::SelfAdjointEigenSolver<Mat10> eig(m);
+  const double hi = eig.eigenvalues()[9];
+  if (!(hi > 0.0)) return;
+  Mat10 inverse = Mat10::Zero();
+  Mat10 null = Mat10::Zero();  // projector onto the (near) null space
+  for (int k = 0; k < 10; ++k) {
+    const Vec10 u = eig.eigenvectors().col(k);
+    if (eig.eigenvalues()[k] > kMinimumHessianRatio * hi)
+      inverse.noalias() += u * u.transpose() / eig.eigenvalues()[k];
+    else
+      null.noalias() += u * u.transpose();
+  }
+  // c_q = M^+ e_q for the z-Hessian entries (index, factor 2 for the squares).
+  Eigen::Matrix<double, 10, 6> c = Eigen::Matrix<double, 10, 6>::Zero();
+  const int entry[6] = {4, 5, 6, 7, 8, 9};
+  bool any = false;
+  for (int q = 0; q < 6; ++q) {
+    if (null(entry[q], entry[q]) > kMinimumHessianRatio) continue;  // not resolved by the row
+    c.col(q) = (q < 3 ? 2.0 : 1.0) * inverse.col(entry[q]);
+    any = true;
+  }
+  if (!any) return;
+  const int pa[6] = {0, 1, 2, 0, 1, 2}, pb[6] = {0, 1, 2, 1, 2, 0};
+  for (std::size_t p = first; p < last; ++p) {
+    const Vec10 h = quadratic_basis(to_unit * (xi - x.col(list.neighbours[p])));
+    const Eigen::Matrix<double, 6, 1> hz = windows[p - first] * (c.transpose() * h);
+    Eigen::Matrix3d z;  // the z-Hessian function of this pair, symmetric
+    for (int q = 0; q < 6; ++q) {
+      z(pa[q], pb[q]) = hz[q];
+      z(pb[q], pa[q]) = hz[q];
+    }
+    const Eigen::Matrix3d hx = to_unit.transpose() * z * to_unit;
+    for (int q = 0; q < 6; ++q)
+      out.hessian(q, static_cast<Eigen::Index>(p)) = hx(pa[q], pb[q]);
+  }
+}
 
 // Shape functions of one particle; false when its moment matrix is degenerate.
 bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelShape shape,
-                    const NeighbourList& list, Index i, double minimum_ratio, ShapeFunctions& out) {
+                    const NeighbourList& list, Index i, double minimum_ratio, bool second,
+                    ShapeFunctions& out) {
   const auto first = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i)]);
   const auto last = static_cast<std::size_t>(list.offsets[static_cast<std::size_t>(i) + 1]);
   // The linear basis in particle I's own support coordinates B_I r: the span, and so phi, is
@@ -50,6 +120,11 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
     }
     return false;
   }
+  if (second) {
+    const std::vector<double> windows(out.value.begin() + static_cast<std::ptrdiff_t>(first),
+                                      out.value.begin() + static_cast<std::ptrdiff_t>(last));
+    row_hessian(x, to_unit, list, i, windows, first, last, out);
+  }
   const Eigen::LDLT<Mat4> solve(m);
   const Vec4 b = solve.solve(Vec4::UnitX());
   Vec4 db[3];
@@ -76,11 +151,12 @@ bool particle_shape(const Eigen::Matrix3Xd& x, const Supports& support, KernelSh
 ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
                                std::vector<Index>& degenerate,
-                               const std::vector<std::uint8_t>& damaged) {
+                               const std::vector<std::uint8_t>& damaged, bool second_derivatives) {
   ShapeFunctions out;
   const std::size_t pairs = list.neighbours.size();
   out.value.assign(pairs, 0.0);
   out.gradient.setZero(3, static_cast<Eigen::Index>(pairs));
+  if (second_derivatives) out.hessian.setZero(6, static_cast<Eigen::Index>(pairs));
   const auto n = static_cast<Index>(list.offsets.size()) - 1;
   std::vector<std::uint8_t> bad(static_cast<std::size_t>(std::max<Index>(n, 0)), 0);
 #pragma omp parallel for schedule(dynamic, 256) if (n > 2048)
@@ -90,7 +166,7 @@ ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& suppor
                         !damaged.empty() && damaged[static_cast<std::size_t>(i)]
                             ? kMinimumDamagedMomentRatio
                             : kMinimumMomentRatio,
-                        out))
+                        second_derivatives, out))
       bad[static_cast<std::size_t>(i)] = 1;
   degenerate.clear();
   for (Index i = 0; i < n; ++i)

@@ -19,6 +19,13 @@ namespace mcdyna::solver::spg {
 struct ShapeFunctions {
   std::vector<double> value;  ///< phi_J(X_I) per neighbour pair
   Eigen::Matrix3Xd gradient;  ///< d phi_J / dx at X_I per neighbour pair
+  /// Only when asked for (ITB 1's strain gradient): per pair the second-derivative functions
+  /// psi^ab_J(X_I), xx yy zz xy yz zx, of the quadratic reproducing kernel: with the same window
+  /// w_J and the basis [1, z, z (x) z] (z in particle I's support coordinates),
+  /// sum_J psi^ab_J(X_I) g(X_J) = d2 g / dx_a dx_b (X_I) for every quadratic g. They see the
+  /// particle-to-particle modes whose first derivatives vanish at every particle. Entries a row
+  /// cannot resolve (d2/dn2 across a surface) are zero.
+  Eigen::Matrix<double, 6, Eigen::Dynamic> hessian;
 };
 
 /// Smallest eigenvalue / largest of the moment matrix (basis in support coordinates) below
@@ -36,12 +43,20 @@ inline constexpr double kMinimumMomentRatio = 1.0e-8;
 /// 1e-3 (50.5 us); at 1e-2 the run passes 100 us.
 inline constexpr double kMinimumDamagedMomentRatio = 1.0e-2;
 
+/// Eigenvalue of the quadratic moment matrix (relative to its largest) below which its direction
+/// counts as unresolved by the row (second-derivative functions, ShapeFunctions::hessian): a
+/// surface row's two layers across the surface make z_n^2 a multiple of z_n (eigenvalue ~1e-17);
+/// interior lattice rows sit near 1e-3.
+inline constexpr double kMinimumHessianRatio = 1.0e-7;
+
 /// Computes the shape functions of every particle. Particles whose moment matrix is degenerate
 /// get zero values and are listed in `degenerate` (ascending), for a diagnostic that names them.
 /// `damaged` (size N or empty) flags the particles held to kMinimumDamagedMomentRatio.
+/// `second_derivatives`: also ShapeFunctions::hessian.
 ShapeFunctions shape_functions(const Eigen::Matrix3Xd& x, const Supports& support,
                                KernelShape shape, const NeighbourList& list,
                                std::vector<Index>& degenerate,
-                               const std::vector<std::uint8_t>& damaged = {});
+                               const std::vector<std::uint8_t>& damaged = {},
+                               bool second_derivatives = false);
 
 }  // namespace mcdyna::solver::spg

@@ -70,12 +70,12 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   const Index n = d.count();
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
-  const bool damping = d.settings.damping > 0.0 && mode != Stabilization::none;
+  const bool damping = d.settings.damping > 0.0 && smooths_velocity(mode);
   d.unsmoothed_previous = d.unsmoothed;
   // Accelerations of the smoothed particles (zero for pinned ones).
   Eigen::Matrix3Xd& acc = d.scratch.acceleration;
   acc.resize(3, n);
-  if (mode != Stabilization::none) {
+  if (smooths_velocity(mode)) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
@@ -92,7 +92,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
   double removed = 0.0;  // PDAMP: kinetic energy of the unsmoothed velocities taken out
   if (damping) damping_shares(d);
-  if (mode != Stabilization::none) {
+  if (smooths_velocity(mode)) {
 #pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);

@@ -1,0 +1,190 @@
+// ITB 1, the original SPG stabilisation (paper Eqs. 8-12, gradient_stabilization.cpp): what
+// decks select it, that it leaves affine motion alone, keeps momentum and energy, removes the
+// zero-energy modes of plain nodal integration and gives the same bits on any thread count.
+#include <doctest/doctest.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "solver/energy.hpp"
+#include "solver/spg/spg_solver.hpp"
+#include "solver_support.hpp"
+#include "test_support.hpp"
+
+namespace mcdyna::test {
+
+namespace {
+
+using solver::Index;
+using solver::Vec3;
+namespace spg = solver::spg;
+
+// An elastic SPG block (rho 1, E 100, nu 0.3, edge 1) with the given ITB, ENDCYC cycles.
+std::string itb_deck(int nx, int ny, int nz, int end_cycle, int itb) {
+  return fmt::format(
+             "*KEYWORD\n*CONTROL_TERMINATION\n1.0e9,{}\n*CONTROL_BULK_VISCOSITY\n0.0,0.0\n"
+             "*PART\nspg\n1,1,1\n*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,0,,15,0.0\n"
+             "1,1.0E+11,1.0E+10,{},1.0,0,0,0\n*MAT_ELASTIC\n1,1.0,100.0,0.3\n",
+             end_cycle, itb) +
+         box_mesh(nx, ny, nz, 1.0) + "*END\n";
+}
+
+// Translation, a slow spin and deterministic noise, as node velocities.
+void set_noisy_velocity(solver::State& s, double noise_amplitude) {
+  const Vec3 v0(0.3, -0.2, 0.1), omega(0.05, -0.02, 0.04);
+  std::uint64_t seed = 2024;
+  auto noise = [&seed] {
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+  };
+  for (Index n = 0; n < s.nodes.count(); ++n) {
+    const Vec3 x = s.nodes.initial.col(n);
+    s.nodes.velocity.col(n) =
+        v0 + omega.cross(x) + noise_amplitude * Vec3(noise(), noise(), noise());
+  }
+}
+
+double largest_stabilisation_stress(const spg::Domain& d) {
+  return d.gradient.stress.cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+TEST_CASE("ITB 1 and 2 decks run the original SPG stabilisation, ITB 3 MC-SPG") {
+  for (const int itb : {1, 2, 3}) {
+    CAPTURE(itb);
+    TempDir dir;
+    auto loaded = load_file(dir.write("deck.k", itb_deck(2, 2, 2, 1, itb)), true);
+    REQUIRE_MESSAGE(!loaded->diags.has_errors(), loaded->messages());
+    core::Diagnostics d;
+    const auto s = solver::compile(loaded->model(), d);
+    REQUIRE(s);
+    CHECK(
+        s->spg.front().settings.stabilization ==
+        (itb == 3 ? spg::Stabilization::momentum_consistent : spg::Stabilization::strain_gradient));
+    CHECK(loaded->has_message(
+              "ITB = 2 (simplified fluid-particle approximation) runs as ITB = 1") == (itb == 2));
+  }
+}
+
+TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic fields") {
+  TempDir dir;
+  Simulation sim = prepare(dir, itb_deck(6, 5, 4, 1, 1));
+  solver::State& s = *sim.state;
+  spg::Domain& d = s.spg.front();
+  spg::initialise(s, d);
+  REQUIRE(d.shape.hessian.cols() == static_cast<Eigen::Index>(d.list.neighbours.size()));
+  // g(X) = 1/2 X^T A X + b . X + c: Hessian A everywhere, on every row with a full basis.
+  Eigen::Matrix3d a;
+  a << 2.0, 0.5, -0.3, 0.5, -1.0, 0.7, -0.3, 0.7, 1.5;
+  const Vec3 b(0.3, -0.2, 0.4);
+  auto g = [&](const Vec3& x) { return 0.5 * x.dot(a * x) + b.dot(x) + 1.0; };
+  const int pa[6] = {0, 1, 2, 0, 1, 2}, pb[6] = {0, 1, 2, 1, 2, 0};
+  double worst = 0.0;
+  int full = 0, interior = 0, partial = 0;
+  for (Index j = 0; j < d.count(); ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const Vec3 xj = d.initial_position.col(j);
+    const bool inside =
+        (xj.array() > 0.5).all() && (xj.array() < Eigen::Array3d(5.5, 4.5, 3.5)).all();
+    interior += inside ? 1 : 0;
+    int resolved = 0;
+    for (int q = 0; q < 6; ++q) {
+      double h = 0.0, weight = 0.0;
+      for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+        const Vec3 x = d.initial_position.col(d.list.neighbours[static_cast<std::size_t>(p)]);
+        h += d.shape.hessian(q, p) * g(x);
+        weight += std::abs(d.shape.hessian(q, p));
+      }
+      if (!(weight > 0.0)) continue;  // an entry the row cannot resolve (d2/dn2 at a surface)
+      ++resolved;
+      worst = std::max(worst, std::abs(h - a(pa[q], pb[q])));
+    }
+    if (resolved == 6) ++full;
+    if (inside) CHECK(resolved == 6);
+    if (resolved < 3) ++partial;
+  }
+  MESSAGE("rows with all six second derivatives ", full, " of ", d.count(), " (interior ", interior,
+          "), worst error ", worst);
+  CHECK(full == interior);  // two layers across a surface cannot resolve d2/dn2 ...
+  CHECK(partial == 0);      // ... but every row resolves the cross terms at least
+  CHECK(worst <= 1e-9 * a.norm());
+}
+
+TEST_CASE("ITB 1: a uniform strain rate gives no stabilisation stress") {
+  TempDir dir;
+  Simulation sim = prepare(dir, itb_deck(6, 5, 4, 1, 1));
+  solver::State& s = *sim.state;
+  Eigen::Matrix3d a;
+  a << 0.01, -0.03, 0.02, 0.005, -0.02, 0.015, -0.01, 0.025, 0.03;
+  for (Index n = 0; n < s.nodes.count(); ++n)
+    s.nodes.velocity.col(n) = Vec3(1.0, 2.0, -0.5) + a * s.nodes.initial.col(n);
+  s.time_control.fixed_step = 0.01;
+  run(sim);  // one cycle: the forces at t = 0 are zero, so x^1 is an affine image of x^0
+  REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
+  const spg::Domain& d = s.spg.front();
+  // A stabilisation stress of a spurious gradient would be C M dD/dX dt ~ 100 x 0.2 x 0.03 x
+  // 0.01 = 6e-3 per unit of relative error in D; round-off leaves ~1e-16 of D.
+  const double largest = largest_stabilisation_stress(d);
+  MESSAGE("largest |sigma-tilde| ", largest, "; largest |sigma| ",
+          d.points.deviator.cwiseAbs().maxCoeff());
+  CHECK(d.points.deviator.cwiseAbs().maxCoeff() > 1e-3);  // the block does strain
+  CHECK(largest <= 1e-12);
+}
+
+TEST_CASE("ITB 1: linear momentum to round-off and the energy of a ringing free block") {
+  TempDir dir;
+  Simulation sim = prepare(dir, itb_deck(7, 6, 5, 600, 1));
+  set_noisy_velocity(*sim.state, 0.02);
+  double scale = 0.0;
+  Vec3 p0 = Vec3::Zero();
+  for (Index n = 0; n < sim.state->nodes.count(); ++n) {
+    const double m = sim.state->nodes.mass[static_cast<std::size_t>(n)];
+    p0 += m * sim.state->nodes.velocity.col(n);
+    scale += m * sim.state->nodes.velocity.col(n).norm();
+  }
+  EnergyDrift drift;
+  run(sim, drift.hooks());
+  REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
+  const solver::State& s = *sim.state;
+  Vec3 p1 = Vec3::Zero();
+  for (Index n = 0; n < s.nodes.count(); ++n)
+    p1 += s.nodes.mass[static_cast<std::size_t>(n)] * s.nodes.velocity.col(n);
+  const solver::EnergySummary e = solver::energy_summary(s, s.nodes.velocity);
+  MESSAGE("momentum drift ", (p1 - p0).norm() / scale, "; largest |dE/E| ", drift.worst,
+          "; stabilisation (hourglass) energy ", e.hourglass, " of internal ", e.internal);
+  CHECK((p1 - p0).norm() <= 1e-12 * scale);
+  // The stabilisation works: it stores energy of the noise's particle-scale modes ...
+  CHECK(e.hourglass > 1e-3 * e.internal);
+  // ... and the scheme stays conservative: an undamped elastic body keeps its total energy
+  // (central differences: a bounded O(dt^2) oscillation) to the 0.1 % issue 24 asks of
+  // rotating bodies.
+  CHECK(drift.worst < 1e-3);
+}
+
+TEST_CASE("ITB 1 keeps the elastic wave smooth where plain nodal integration oscillates") {
+  // As the MC-SPG case of spg_solver_test.cpp: plain nodal integration against ITB 1.
+  const double norm[2] = {elastic_wave_oscillation(spg::Stabilization::none),
+                          elastic_wave_oscillation(spg::Stabilization::strain_gradient)};
+  MESSAGE("oscillation norm: none ", norm[0], ", ITB 1 ", norm[1]);
+  CHECK(norm[0] > 5.0 * norm[1]);
+}
+
+TEST_CASE("ITB 1 results are bitwise identical on 1 and 2 threads") {
+  CHECK(same_bits_on_1_and_2_threads(itb_deck(10, 9, 8, 100, 1),
+                                     [](solver::State& s) { set_noisy_velocity(s, 0.02); }));
+}
+
+TEST_CASE("ITB 1 with --spg-step eigen is refused with the reason") {
+  TempDir dir;
+  const auto deck = dir.write("itb1.k", itb_deck(3, 3, 3, 5, 1));
+  const Run r = run_mcdyna("run " + deck.string() + " --spg-step eigen --out " +
+                           (dir.path() / "out").string());
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("runs the original SPG (ITB 1)") != std::string::npos);
+}
+
+}  // namespace mcdyna::test
