@@ -45,9 +45,10 @@ struct GradientStabilization {
   /// a = X, Y, Z, 6 components each (stress x length): the work rate is
   /// V sum_a sigma-tilde_a : e_a, e_a = d(D)/dX_a from the second-derivative functions.
   Eigen::Matrix<double, 18, Eigen::Dynamic> stress;
-  /// The row's stable-step factor (1 + tr(M) (sum_K |psi_K|)^2 / (sum_K |grad phi_K|)^2)^-1/2,
-  /// at the renewal (psi: ShapeFunctions::hessian).
-  std::vector<double> step_factor;
+  /// Factor of the particles' nearest-neighbour steps: the critical step of the initial
+  /// arrangement with the stabilisation over that without (both by power iteration,
+  /// frequency.cpp), at most 1.
+  double step_scale = 1.0;
   // Of the last stress pass (rebuilt every cycle):
   Eigen::Matrix3Xd spin;      ///< W (Kinematics::w)
   std::vector<double> bulk;   ///< K = rho c^2 - 4/3 G
@@ -56,6 +57,7 @@ struct GradientStabilization {
   // its second-derivative functions over the active neighbours.
   Eigen::Matrix<double, 27, Eigen::Dynamic> work_stress;
   Eigen::Matrix<double, 6, Eigen::Dynamic> own_hessian;
+  Eigen::Matrix3Xd field, force;  ///< the particles' velocities and their stabilisation forces
 };
 
 /// Bonds: neighbour pairs of the initial configuration (either particle's support containing

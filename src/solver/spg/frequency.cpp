@@ -6,6 +6,9 @@
 // share of the neighbours' accelerations, as in smoothing.cpp. The central-difference update is
 // stable for dt < 2 / omega_max with omega_max^2 the largest eigenvalue of A.
 //
+// ITB 1 (gradient_stabilization.cpp): its stabilisation forces, linearised with the elastic
+// tangent, join K.
+//
 // What it leaves out: the FE elements around pinned particles (their own step bounds them),
 // contact springs (bounded by SOFT 1, contact_forces.cpp), bulk viscosity (it damps), MSC
 // mode-control springs and PDAMP. The elastic tangent is used where the material yields: the
@@ -22,7 +25,7 @@ namespace {
 // A x for displacements x (3 x count) into `out`, with the domain's workspace for the stress,
 // the forces (turned into the smoothed particles' accelerations in place) and u-hat.
 void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-           Eigen::Matrix3Xd& out) {
+           Eigen::Matrix3Xd& out, bool stabilization) {
   const Index n = d.count();
   const double shear = mat.shear_modulus;
   Eigen::Matrix<double, 9, Eigen::Dynamic>& p = d.scratch.stress;
@@ -68,6 +71,10 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
       f.noalias() -= pj * d.transpose.gradient.col(t);
     }
     acc.col(i) = !d.pinned[ii] && mc ? Vec3(f / d.smoothed_mass[ii]) : f;
+  }
+  if (stabilization) {  // ITB 1: every particle pinned, acc holds forces
+    stabilization_operator(d, mat, x, d.gradient.force);
+    acc += d.gradient.force;
   }
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index k = 0; k < n; ++k) {
@@ -132,7 +139,9 @@ Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& r
 }
 
 FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
-                                    Eigen::Matrix3Xd* mode) {
+                                    Eigen::Matrix3Xd* mode, bool without_stabilization) {
+  const bool stabilization =
+      d.settings.stabilization == Stabilization::strain_gradient && !without_stabilization;
   const Index n = d.count();
   FrequencyEstimate r;
   if (n == 0) return r;
@@ -147,7 +156,7 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
   x /= norm_in_order(x);
   double previous = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply(s, d, mat, x, ax);
+    apply(s, d, mat, x, ax, stabilization);
     const double lambda = norm_in_order(ax);  // |A x| with |x| = 1
     r.omega_squared = lambda;
     r.iterations = it + 1;

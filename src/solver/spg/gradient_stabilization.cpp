@@ -27,6 +27,7 @@
 
 #include <cmath>
 
+#include "solver/material/constitutive.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -55,7 +56,6 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
   if (g.moment.cols() != n) {
     g.moment.setZero(6, n);
     g.stress.setZero(18, n);
-    g.step_factor.assign(static_cast<std::size_t>(n), 1.0);
   }
   g.spin.setZero(3, n);
   g.bulk.assign(static_cast<std::size_t>(n), 0.0);
@@ -67,14 +67,10 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
     if (!rows.empty() && rows[jj] == 0) continue;
     const Vec3 xj = x.col(d.nodes[jj]);
     Mat3 m = Mat3::Zero();
-    double first = 0.0, second = 0.0;  // sum |grad phi_K|, sum |psi_K| (Frobenius)
     for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
       const auto pp = static_cast<std::size_t>(p);
       const Vec3 r = x.col(d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])]) - xj;
       m.noalias() += d.shape.value[pp] * r * r.transpose();
-      first += d.shape.gradient.col(p).norm();
-      const Eigen::Matrix<double, 6, 1> psi = d.shape.hessian.col(p);
-      second += std::sqrt(psi.head<3>().squaredNorm() + 2.0 * psi.tail<3>().squaredNorm());
     }
     // RK functions may be negative near a surface: keep the moment positive semi-definite.
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
@@ -84,26 +80,111 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
     const double moment[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(2, 0)};
     for (int c = 0; c < 6; ++c)
       g.moment(c, j) = moment[c];
-    // Row J's nodal-integration stiffness goes as C (sum |grad phi|)^2, the stabilisation's as
-    // C M (sum |psi|)^2 (Gershgorin on B^T C B and B-tilde^T C M B-tilde): the step shrinks by
-    // the square root of 1 + their ratio.
-    const double ratio = first > 0.0 ? m.trace() * second * second / (first * first) : 0.0;
-    g.step_factor[jj] = 1.0 / std::sqrt(1.0 + ratio);
   }
 }
+
+namespace {
+
+const int kPairA[6] = {0, 1, 2, 0, 1, 2}, kPairB[6] = {0, 1, 2, 1, 2, 0};
+
+// e_a = d(D)/dX_a, a = X, Y, Z, at row j of the particle field u (velocities, or displacements
+// for the linearised operator): H_ab(u) = sum_K psi^ab_K (u_K - u_j) over the active
+// neighbours, e_a = sym(sum_b H_ab(u) (x) (F-hat^-1 row b)). Adds the row's sum of psi to `own`.
+void strain_gradient(const Domain& d, const Eigen::Matrix3Xd& u, Index j, const Mat3& f_inv,
+                     double e[3][6], Eigen::Ref<Eigen::Matrix<double, 6, 1>> own) {
+  const auto jj = static_cast<std::size_t>(j);
+  Eigen::Matrix<double, 6, 3> hu = Eigen::Matrix<double, 6, 3>::Zero();  // (ab, component)
+  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+    const Index k = d.list.neighbours[static_cast<std::size_t>(p)];
+    if (k == j || !active(d, k)) continue;
+    const Eigen::Matrix<double, 6, 1> psi = d.shape.hessian.col(p);
+    own += psi;
+    hu.noalias() += psi * (u.col(k) - u.col(j)).transpose();
+  }
+  for (int a = 0; a < 3; ++a) {
+    Mat3 grad = Mat3::Zero();  // d(grad_x u)/dX_a: grad(c, b') = sum_b H_ab(u_c) F^-1(b, b')
+    for (int q = 0; q < 6; ++q) {
+      int b = -1;
+      if (kPairA[q] == a) b = kPairB[q];
+      if (kPairB[q] == a && kPairA[q] != kPairB[q]) b = kPairA[q];
+      if (b < 0) continue;
+      grad.noalias() += hu.row(q).transpose() * f_inv.row(b);
+    }
+    const Mat3 sym = 0.5 * (grad + grad.transpose());
+    const double comps[6] = {sym(0, 0), sym(1, 1), sym(2, 2), sym(0, 1), sym(1, 2), sym(2, 0)};
+    std::copy(comps, comps + 6, e[a]);
+  }
+}
+
+// M e_a (the stabilisation strain along X_a) of row j.
+void moment_times(const Domain& d, Index j, const double e[3][6], double me[3][6]) {
+  const double* mo = d.gradient.moment.col(j).data();
+  const double m[3][3] = {{mo[0], mo[3], mo[5]}, {mo[3], mo[1], mo[4]}, {mo[5], mo[4], mo[2]}};
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 6; ++c)
+      me[a][c] = m[a][0] * e[0][c] + m[a][1] * e[1][c] + m[a][2] * e[2][c];
+}
+
+// P_a = V sigma-tilde_a F-hat^-T into column j of `p` (27 per particle).
+void store_work_stress(const double* sigma, double volume, const Mat3& f_inv,
+                       Eigen::Matrix<double, 27, Eigen::Dynamic>& p, Index j) {
+  for (int a = 0; a < 3; ++a) {
+    const double* sa = sigma + 6 * a;
+    Mat3 t;
+    t << sa[0], sa[3], sa[5], sa[3], sa[1], sa[4], sa[5], sa[4], sa[2];
+    Eigen::Map<Mat3>(p.col(j).data() + 9 * a) = volume * t * f_inv.transpose();
+  }
+}
+
+// sum_ab psi^ab P_a col b of row j.
+Vec3 pushed(const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
+            const Eigen::Matrix<double, 6, 1>& psi, Index j) {
+  Vec3 f = Vec3::Zero();
+  for (int q = 0; q < 6; ++q) {
+    const Eigen::Map<const Mat3> p_a(p.col(j).data() + 9 * kPairA[q]);
+    const Eigen::Map<const Mat3> p_b(p.col(j).data() + 9 * kPairB[q]);
+    f += psi[q] * p_a.col(kPairB[q]);
+    if (kPairA[q] != kPairB[q]) f += psi[q] * p_b.col(kPairA[q]);
+  }
+  return f;
+}
+
+// The forces of the work stresses: the work rate is sum_J sum_K (u_K - u_J) . pushed(psi_K, J),
+// so row J pushes K by -pushed(psi^ab_K(X_J), J) and itself by pushed(its own sum, J). Per
+// particle into `force` (3 x count), ascending over each transpose: the same bits on any thread
+// count.
+void stabilization_forces(const Domain& d, const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
+                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& own,
+                          Eigen::Matrix3Xd& force) {
+  const Index n = d.count();
+  force.resize(3, n);
+#pragma omp parallel for schedule(static, 256) if (n > 512)
+  for (Index k = 0; k < n; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    force.col(k).setZero();
+    if (!active(d, k)) continue;
+    Vec3 f = pushed(p, own.col(k), k);
+    for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t) {
+      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+      if (j == k || !active(d, j)) continue;
+      f -= pushed(p, d.shape.hessian.col(d.transpose.pairs[static_cast<std::size_t>(t)]), j);
+    }
+    force.col(k) = f;
+  }
+}
+
+}  // namespace
 
 void strain_gradient_stabilization(State& s, Domain& d, double dt) {
   const Index n = d.count();
   GradientStabilization& g = d.gradient;
   if (!(dt > 0.0)) return;  // the first pass: nothing has moved, sigma-tilde stays as it is
-  const Eigen::Matrix3Xd& v = s.nodes.velocity;
-  // Per particle: P_a = V sigma-tilde_a F-hat^-T (a = X, Y, Z), and the sum of its row's
-  // second-derivative functions over the active neighbours (for its own force term).
-  Eigen::Matrix<double, 27, Eigen::Dynamic>& work_stress = g.work_stress;
-  work_stress.setZero(27, n);
-  Eigen::Matrix<double, 6, Eigen::Dynamic>& own = g.own_hessian;
-  own.setZero(6, n);
-  const int pa[6] = {0, 1, 2, 0, 1, 2}, pb[6] = {0, 1, 2, 1, 2, 0};
+  Eigen::Matrix3Xd& v = g.field;
+  v.resize(3, n);
+  for (Index j = 0; j < n; ++j)
+    v.col(j) = s.nodes.velocity.col(d.nodes[static_cast<std::size_t>(j)]);
+  g.work_stress.setZero(27, n);
+  g.own_hessian.setZero(6, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
@@ -113,89 +194,68 @@ void strain_gradient_stabilization(State& s, Domain& d, double dt) {
         sigma[c] = 0.0;
       continue;
     }
-    // Second material derivatives of the velocity over the row, H_ab(v) = sum_K psi^ab_K
-    // (v_K - v_J), then the rate-of-deformation gradient along X_a:
-    // e_a = sym(sum_b H_ab(v) (x) (F-hat^-1 row b)).
-    const Vec3 vj = v.col(d.nodes[jj]);
-    Eigen::Matrix<double, 6, 3> hv = Eigen::Matrix<double, 6, 3>::Zero();  // (ab, component)
-    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
-      const Index k = d.list.neighbours[static_cast<std::size_t>(p)];
-      if (k == j || !active(d, k)) continue;
-      const Eigen::Matrix<double, 6, 1> psi = d.shape.hessian.col(p);
-      own.col(j) += psi;
-      hv.noalias() += psi * (v.col(d.nodes[static_cast<std::size_t>(k)]) - vj).transpose();
-    }
-    const Eigen::Map<const Mat3> f_hat(d.deformation.col(j).data());
-    const Mat3 f_inv = f_hat.inverse();
-    double e[3][6];
-    for (int a = 0; a < 3; ++a) {
-      Mat3 grad = Mat3::Zero();  // d(grad_x v)/dX_a: grad(c, b') = sum_b H_ab(v_c) F^-1(b, b')
-      for (int q = 0; q < 6; ++q) {
-        int b = -1;
-        if (pa[q] == a) b = pb[q];
-        if (pb[q] == a && pa[q] != pb[q]) b = pa[q];
-        if (b < 0) continue;
-        grad.noalias() += hv.row(q).transpose() * f_inv.row(b);
-      }
-      const Mat3 sym = 0.5 * (grad + grad.transpose());
-      const double comps[6] = {sym(0, 0), sym(1, 1), sym(2, 2), sym(0, 1), sym(1, 2), sym(2, 0)};
-      std::copy(comps, comps + 6, e[a]);
-    }
-    // sigma-tilde_a += dt C-tilde : sum_b M_ab e_b, turned with the particle's spin.
-    const double* mo = g.moment.col(j).data();
-    const double m[3][3] = {{mo[0], mo[3], mo[5]}, {mo[3], mo[1], mo[4]}, {mo[5], mo[4], mo[2]}};
+    const Mat3 f_inv = Eigen::Map<const Mat3>(d.deformation.col(j).data()).inverse();
+    double e[3][6], me[3][6];
+    strain_gradient(d, v, j, f_inv, e, g.own_hessian.col(j));
+    moment_times(d, j, e, me);
+    // sigma-tilde_a += dt C-tilde : M e_a, turned with the particle's spin.
     const double shear = g.shear[jj];
     const double lame = g.bulk[jj] - 2.0 / 3.0 * shear;
     const Kinematics spin = spin_of(d, j);
     const double turn = spin.objective ? 0.5 * dt : dt;
     double work = 0.0;
-    const double volume = d.volume[jj];
     for (int a = 0; a < 3; ++a) {
-      double me[6];
-      for (int c = 0; c < 6; ++c)
-        me[c] = m[a][0] * e[0][c] + m[a][1] * e[1][c] + m[a][2] * e[2][c];
       double* sa = sigma + 6 * a;
       rotate_stress(sa, spin, turn);
       double old[6];
       std::copy(sa, sa + 6, old);
-      const double trace = me[0] + me[1] + me[2];
+      const double trace = me[a][0] + me[a][1] + me[a][2];
       for (int c = 0; c < 6; ++c)
-        sa[c] += dt * (2.0 * shear * me[c] + (c < 3 ? lame * trace : 0.0));
+        sa[c] += dt * (2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0));
       double mid[6];
       for (int c = 0; c < 6; ++c)
         mid[c] = 0.5 * (old[c] + sa[c]);
       work += contract(mid, e[a]) * dt;
       if (spin.objective) rotate_stress(sa, spin, turn);
-      Mat3 t;
-      t << sa[0], sa[3], sa[5], sa[3], sa[1], sa[4], sa[5], sa[4], sa[2];
-      Eigen::Map<Mat3>(work_stress.col(j).data() + 9 * a) = volume * t * f_inv.transpose();
     }
-    d.mode_energy[jj] += volume * work;
+    store_work_stress(sigma, d.volume[jj], f_inv, g.work_stress, j);
+    d.mode_energy[jj] += d.volume[jj] * work;
   }
-  // Forces: the work rate is sum_J sum_K (v_K - v_J) . sum_ab psi^ab_K(X_J) P_aJ col b, so row J
-  // pushes K by -sum_ab psi^ab_K(X_J) P_aJ col b and itself by the sum of those over K.
-  auto pushed = [&](const Eigen::Matrix<double, 6, 1>& psi, Index j) {
-    Vec3 f = Vec3::Zero();
-    for (int q = 0; q < 6; ++q) {
-      const Eigen::Map<const Mat3> p_a(work_stress.col(j).data() + 9 * pa[q]);
-      const Eigen::Map<const Mat3> p_b(work_stress.col(j).data() + 9 * pb[q]);
-      f += psi[q] * p_a.col(pb[q]);
-      if (pa[q] != pb[q]) f += psi[q] * p_b.col(pa[q]);
-    }
-    return f;
-  };
+  stabilization_forces(d, g.work_stress, g.own_hessian, g.force);
+  for (Index k = 0; k < n; ++k)
+    s.nodes.force.col(d.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
+}
+
+void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
+                            Eigen::Matrix3Xd& force) {
+  const Index n = d.count();
+  Eigen::Matrix<double, 27, Eigen::Dynamic> p =
+      Eigen::Matrix<double, 27, Eigen::Dynamic>::Zero(27, n);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> own =
+      Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index k = 0; k < n; ++k) {
-    const auto kk = static_cast<std::size_t>(k);
-    if (!active(d, k)) continue;
-    Vec3 f = pushed(own.col(k), k);
-    for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t) {
-      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
-      if (j == k || !active(d, j)) continue;
-      f -= pushed(d.shape.hessian.col(d.transpose.pairs[static_cast<std::size_t>(t)]), j);
+  for (Index j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (!active(d, j)) continue;
+    const Mat3 f_inv = Eigen::Map<const Mat3>(d.deformation.col(j).data()).inverse();
+    double e[3][6], me[3][6];
+    strain_gradient(d, x, j, f_inv, e, own.col(j));
+    moment_times(d, j, e, me);
+    // The elastic C (as frequency.cpp takes for nodal integration): K from the wave speed.
+    const double physical = d.mass[jj] - d.added_mass[jj];
+    const double rc2 =
+        physical / d.volume[jj] * wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
+    const double shear = d.failed[jj] ? 0.0 : mat.shear_modulus;
+    const double lame = rc2 - 2.0 * shear;
+    double sigma[18];
+    for (int a = 0; a < 3; ++a) {
+      const double trace = me[a][0] + me[a][1] + me[a][2];
+      for (int c = 0; c < 6; ++c)
+        sigma[6 * a + c] = 2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0);
     }
-    s.nodes.force.col(d.nodes[kk]) += f;
+    store_work_stress(sigma, d.volume[jj], f_inv, p, j);
   }
+  stabilization_forces(d, p, own, force);
 }
 
 }  // namespace mcdyna::solver::spg

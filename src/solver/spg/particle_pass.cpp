@@ -196,7 +196,7 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
     g.shear[jj] = modified_shear;
     g.bulk[jj] =
         std::max(vol.density * vol.wave_speed_squared - 4.0 / 3.0 * mat.shear_modulus, 0.0);
-    step *= g.step_factor[jj];
+    step *= g.step_scale;
   }
   Outcome o{.step = step, .physical_step = step};
   scale_particle_mass(s, d, j, o);

@@ -82,8 +82,10 @@ struct FrequencyEstimate {
 };
 /// `mode`: start vector (used when it has the right size) and the mode found.
 /// Uses the domain's workspace (Domain::scratch).
+/// ITB 1's stabilisation is part of the operator unless `without_stabilization`.
 FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
-                                    Eigen::Matrix3Xd* mode = nullptr);
+                                    Eigen::Matrix3Xd* mode = nullptr,
+                                    bool without_stabilization = false);
 /// The fixed pseudo-random start of the power iteration (the same for any thread count), on the
 /// particles flagged in `rows` only (all of them when `rows` is empty).
 Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& rows = {});
@@ -146,6 +148,11 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
 /// updates the stabilisation stresses (Eq. 10) from the strain-rate gradient of the node
 /// velocities and adds their forces (Eq. 9) to the nodes, their work to d.mode_energy.
 void strain_gradient_stabilization(State& s, Domain& d, double dt);
+
+/// ITB 1's stabilisation linearised with the elastic tangent (for the power iteration of
+/// frequency.cpp): the forces of a displacement field x (3 x count, per particle).
+void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
+                            Eigen::Matrix3Xd& force);
 
 /// Kinetic energy (1/2 m u-hat^{n-1/2} . u-hat^{n+1/2}) and momentum of the particles whose
 /// velocity is smoothed (the quantities MC-SPG conserves); pinned particles count as nodes.
