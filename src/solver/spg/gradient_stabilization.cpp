@@ -53,13 +53,13 @@ Kinematics spin_of(const Domain& d, Index j) {
 void stabilization_moments(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
   GradientStabilization& g = d.gradient;
-  if (g.moment.cols() != n) {
+  if (g.moment.cols() != n) {  // the first renewal; the stress pass fills spin, bulk, shear
     g.moment.setZero(6, n);
     g.stress.setZero(18, n);
+    g.spin.setZero(3, n);
+    g.bulk.assign(static_cast<std::size_t>(n), 0.0);
+    g.shear.assign(static_cast<std::size_t>(n), 0.0);
   }
-  g.spin.setZero(3, n);
-  g.bulk.assign(static_cast<std::size_t>(n), 0.0);
-  g.shear.assign(static_cast<std::size_t>(n), 0.0);
   const Eigen::Matrix3Xd& x = s.nodes.position;
 #pragma omp parallel for schedule(static, 256) if (n > 4096)
   for (Index j = 0; j < n; ++j) {
@@ -123,6 +123,16 @@ void moment_times(const Domain& d, Index j, const double e[3][6], double me[3][6
   for (int a = 0; a < 3; ++a)
     for (int c = 0; c < 6; ++c)
       me[a][c] = m[a][0] * e[0][c] + m[a][1] * e[1][c] + m[a][2] * e[2][c];
+}
+
+// C-tilde : M e_a = 2 G (M e_a) + lambda tr(M e_a) I, the rate (or, linearised, the value) of
+// sigma-tilde_a for a = X, Y, Z into `sigma` (18).
+void isotropic_stresses(double shear, double lame, const double me[3][6], double sigma[18]) {
+  for (int a = 0; a < 3; ++a) {
+    const double trace = me[a][0] + me[a][1] + me[a][2];
+    for (int c = 0; c < 6; ++c)
+      sigma[6 * a + c] = 2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0);
+  }
 }
 
 // P_a = V sigma-tilde_a F-hat^-T into column j of `p` (27 per particle).
@@ -203,15 +213,16 @@ void strain_gradient_stabilization(State& s, Domain& d, double dt) {
     const double lame = g.bulk[jj] - 2.0 / 3.0 * shear;
     const Kinematics spin = spin_of(d, j);
     const double turn = spin.objective ? 0.5 * dt : dt;
+    double rate[18];
+    isotropic_stresses(shear, lame, me, rate);
     double work = 0.0;
     for (int a = 0; a < 3; ++a) {
       double* sa = sigma + 6 * a;
       rotate_stress(sa, spin, turn);
       double old[6];
       std::copy(sa, sa + 6, old);
-      const double trace = me[a][0] + me[a][1] + me[a][2];
       for (int c = 0; c < 6; ++c)
-        sa[c] += dt * (2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0));
+        sa[c] += dt * rate[6 * a + c];
       double mid[6];
       for (int c = 0; c < 6; ++c)
         mid[c] = 0.5 * (old[c] + sa[c]);
@@ -248,11 +259,7 @@ void stabilization_operator(const Domain& d, const Material& mat, const Eigen::M
     const double shear = d.failed[jj] ? 0.0 : mat.shear_modulus;
     const double lame = rc2 - 2.0 * shear;
     double sigma[18];
-    for (int a = 0; a < 3; ++a) {
-      const double trace = me[a][0] + me[a][1] + me[a][2];
-      for (int c = 0; c < 6; ++c)
-        sigma[6 * a + c] = 2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0);
-    }
+    isotropic_stresses(shear, lame, me, sigma);
     store_work_stress(sigma, d.volume[jj], f_inv, p, j);
   }
   stabilization_forces(d, p, own, force);
