@@ -31,7 +31,7 @@ constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 136, 240,
-                                                          1392, 1864, 96, 112, 360, 328, 144, 160},
+                                                          1392, 1928, 96, 112, 360, 328, 144, 160},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -170,8 +170,8 @@ void fields(Ar& ar, Domain& d) {
   ar(d.points, d.pressure, d.eos_energy, d.temperature, d.viscosity, d.internal_energy, d.failed,
      d.deformation, d.stress_gradient, d.damping_energy);
   ar(d.mode_stiffness, d.mode_residual, d.mode_force, d.mode_energy);
-  ar(d.gradient.moment, d.gradient.stress, d.gradient.step_scale, d.gradient.spin, d.gradient.bulk,
-     d.gradient.shear);
+  ar(d.gradient.moment, d.gradient.strain, d.gradient.stress, d.gradient.step_scale,
+     d.gradient.bulk, d.gradient.shear, d.gradient.applied_bulk, d.gradient.applied_shear);
   ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times);
   // d.scratch is left out: a workspace every call refills before reading it.
 }

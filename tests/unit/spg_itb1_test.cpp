@@ -92,17 +92,22 @@ TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic 
     const bool inside =
         (xj.array() > 0.5).all() && (xj.array() < Eigen::Array3d(5.5, 4.5, 3.5)).all();
     interior += inside ? 1 : 0;
-    int resolved = 0;
+    // An entry the row cannot resolve (d2/dn2 at a surface) has functions at round-off size
+    // against the resolved ones' and reproduces zero.
+    double h[6] = {}, weight[6] = {}, largest = 0.0;
     for (int q = 0; q < 6; ++q) {
-      double h = 0.0, weight = 0.0;
       for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
         const Vec3 x = d.initial_position.col(d.list.neighbours[static_cast<std::size_t>(p)]);
-        h += d.shape.hessian(q, p) * g(x);
-        weight += std::abs(d.shape.hessian(q, p));
+        h[q] += d.shape.hessian(q, p) * g(x);
+        weight[q] += std::abs(d.shape.hessian(q, p));
       }
-      if (!(weight > 0.0)) continue;  // an entry the row cannot resolve (d2/dn2 at a surface)
-      ++resolved;
-      worst = std::max(worst, std::abs(h - a(pa[q], pb[q])));
+      largest = std::max(largest, weight[q]);
+    }
+    int resolved = 0;
+    for (int q = 0; q < 6; ++q) {
+      const bool resolves = weight[q] > 1e-8 * largest;
+      resolved += resolves ? 1 : 0;
+      worst = std::max(worst, std::abs(h[q] - (resolves ? a(pa[q], pb[q]) : 0.0)));
     }
     if (resolved == 6) ++full;
     if (inside) CHECK(resolved == 6);
@@ -148,7 +153,7 @@ TEST_CASE("ITB 1: linear momentum to round-off and the energy of a ringing free 
     p0 += m * sim.state->nodes.velocity.col(n);
     scale += m * sim.state->nodes.velocity.col(n).norm();
   }
-  EnergyDrift drift;
+  EnergyDrift drift{.from_cycle = 1};
   run(sim, drift.hooks());
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
   const solver::State& s = *sim.state;
@@ -169,7 +174,7 @@ TEST_CASE("ITB 1: linear momentum to round-off and the energy of a ringing free 
   Simulation half = prepare(half_dir, itb_deck(7, 6, 5, 1200, 1, true));
   set_noisy_velocity(*half.state, 0.02);
   half.state->time_control.fixed_step = 0.5 * s.step;
-  EnergyDrift half_drift;
+  EnergyDrift half_drift{.from_cycle = 1};
   run(half, half_drift.hooks());
   REQUIRE(half.result.reason == solver::StopReason::end_cycle);
   MESSAGE("largest |dE/E| at the code's step ", drift.worst, ", at half of its last step ",
@@ -198,6 +203,102 @@ TEST_CASE("ITB 1 with --spg-step eigen is refused with the reason") {
                            (dir.path() / "out").string());
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("runs the original SPG (ITB 1)") != std::string::npos);
+}
+
+namespace {
+
+// A 6 x 6 x 6 elastic block with its rows built, its nodes moved by a smooth quadratic field
+// (0.01 y^2 along x) and `noise` of particle scale; the stabilisation's moduli set elastic.
+struct DeformedBlock {
+  TempDir dir;
+  Simulation sim;
+  explicit DeformedBlock(double noise_amplitude) : sim(prepare(dir, itb_deck(6, 6, 6, 1, 1))) {
+    spg::initialise(*sim.state, sim.state->spg.front());
+    std::uint64_t seed = 7;
+    auto noise = [&seed] {
+      seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+      return static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+    };
+    solver::Nodes& nodes = sim.state->nodes;
+    for (Index n = 0; n < nodes.count(); ++n) {
+      const Vec3 x = nodes.position.col(n);
+      nodes.position.col(n) +=
+          noise_amplitude * Vec3(noise(), noise(), noise()) + Vec3(0.01 * x.y() * x.y(), 0.0, 0.0);
+    }
+  }
+  // One stabilisation pass at the present positions (F-hat from them); `fresh`: from zero
+  // stresses and strains. Returns the node forces.
+  Eigen::Matrix3Xd pass(bool fresh) {
+    solver::State& s = *sim.state;
+    spg::Domain& d = s.spg.front();
+    for (Index j = 0; j < d.count(); ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      Eigen::Map<solver::Mat3>(d.deformation.col(j).data()) =
+          spg::particle_kinematics(s, d, j, 0.0).deformation;
+      d.gradient.shear[jj] = d.gradient.applied_shear[jj] = 38.5;  // E 100, nu 0.3
+      d.gradient.bulk[jj] = d.gradient.applied_bulk[jj] = 83.3;
+    }
+    if (fresh) {
+      d.gradient.stress.setZero();
+      d.gradient.strain.setZero();
+    }
+    s.nodes.force.setZero();
+    spg::strain_gradient_stabilization(s, d);
+    return s.nodes.force;
+  }
+  // The stored energy 1/2 sum V0 sigma-tilde_a : e_a (exact after a fresh pass).
+  [[nodiscard]] double energy() const {
+    const spg::Domain& d = sim.state->spg.front();
+    double w = 0.0;
+    for (Index j = 0; j < d.count(); ++j)
+      for (int c = 0; c < 18; ++c)
+        w += 0.5 * d.renewal_volume[static_cast<std::size_t>(j)] * d.gradient.stress(c, j) *
+             d.gradient.strain(c, j) * (c % 6 < 3 ? 1.0 : 2.0);
+    return w;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("ITB 1 forces are the derivative of the stabilisation energy") {
+  DeformedBlock block(0.03);
+  solver::Nodes& nodes = block.sim.state->nodes;
+  const Eigen::Matrix3Xd force = block.pass(true);
+  const double largest = force.cwiseAbs().maxCoeff();
+  double worst = 0.0;
+  const double h = 1e-6;  // central differences: error ~ h^2 against forces ~ 1
+  for (Index n = 0; n < nodes.count(); n += 7)
+    for (int c = 0; c < 3; ++c) {
+      nodes.position(c, n) += h;
+      block.pass(true);
+      const double up = block.energy();
+      nodes.position(c, n) -= 2.0 * h;
+      block.pass(true);
+      const double down = block.energy();
+      nodes.position(c, n) += h;
+      worst = std::max(worst, std::abs(-(up - down) / (2.0 * h) - force(c, n)));
+    }
+  MESSAGE("largest force ", largest, ", worst difference to -dW/dx ", worst);
+  CHECK(largest > 0.1);
+  CHECK(worst <= 1e-7 * largest);
+}
+
+TEST_CASE("ITB 1 carries its stabilisation stresses through a kernel renewal") {
+  // At a renewal the row's functions are rebuilt on the present positions and e starts from
+  // zero; the stress is carried into the new reference (gradient_stabilization.cpp). The force
+  // then changes only by what the new functions see differently: the carry is first order in
+  // the curvature, and the new quadratic basis is fitted to moved neighbours. Without the carry
+  // the whole force would vanish at every renewal (and the lost step's work, measured on the
+  // h 0.2 elastic-wave rod renewed every 15 steps, let its energy grow 34 times by t = 80).
+  for (const double noise : {0.0, 0.01}) {
+    DeformedBlock block(noise);
+    const Eigen::Matrix3Xd before = block.pass(true);
+    spg::renew_kernel(*block.sim.state, block.sim.state->spg.front());
+    const Eigen::Matrix3Xd after = block.pass(false);
+    const double change = (after - before).norm() / before.norm();
+    MESSAGE("noise ", noise, ": force ", before.norm(), " before, relative change ", change);
+    CHECK(change < 0.05);  // measured 0.027 and 0.016
+  }
 }
 
 }  // namespace mcdyna::test

@@ -41,23 +41,31 @@ struct GradientStabilization {
   /// particle, M_J = sum_K phi_K(X_J) (X_K - X_J) (X_K - X_J)^T in the row's reference,
   /// xx yy zz xy yz zx, taken at the row's renewal (negative eigenvalues cut to zero).
   Eigen::Matrix<double, 6, Eigen::Dynamic> moment;
-  /// The stabilisation stresses sigma-tilde_a (Eq. 10) along the reference directions
-  /// a = X, Y, Z, 6 components each (stress x length): the work rate is
-  /// V sum_a sigma-tilde_a : e_a, e_a = d(D)/dX_a from the second-derivative functions.
+  /// The strain gradients e_a = dE/dX_a = sym(F-hat^T dF-hat/dX_a) along the reference
+  /// directions a = X, Y, Z of the row's last renewal (E the Green-Lagrange strain since then),
+  /// 6 components each, as the last pass left them.
+  Eigen::Matrix<double, 18, Eigen::Dynamic> strain;
+  /// The stabilisation stresses sigma-tilde_a (Eq. 10) in the row's reference, work conjugate
+  /// to e_a, updated in rate form from the increments of e and carried into the new reference
+  /// at a renewal.
   Eigen::Matrix<double, 18, Eigen::Dynamic> stress;
   /// Factor of the particles' nearest-neighbour steps: the critical step of the initial
   /// arrangement with the stabilisation over that without (both by power iteration,
   /// frequency.cpp), at most 1.
   double step_scale = 1.0;
   // Of the last stress pass (rebuilt every cycle):
-  Eigen::Matrix3Xd spin;      ///< W (Kinematics::w)
   std::vector<double> bulk;   ///< K = rho c^2 - 4/3 G
   std::vector<double> shear;  ///< G-tilde of Eqs. 11-12
-  // Workspace of the force pass (not dumped): V sigma-tilde_a F-hat^-T, and per row the sum of
-  // its second-derivative functions over the active neighbours.
+  /// The moduli (K, G-tilde) of each particle's last stabilisation update: a stored stress is
+  /// scaled down with them when they fall.
+  std::vector<double> applied_bulk, applied_shear;
+  // Workspace of the force pass (not dumped): V0 F-hat sigma-tilde_a (27) and
+  // V0 sum_a dF/dX_a sigma-tilde_a (9) per row, and per row the sums of its second-derivative
+  // functions and gradients over the active neighbours.
   Eigen::Matrix<double, 27, Eigen::Dynamic> work_stress;
+  Eigen::Matrix<double, 9, Eigen::Dynamic> curvature_stress;
   Eigen::Matrix<double, 6, Eigen::Dynamic> own_hessian;
-  Eigen::Matrix3Xd field, force;  ///< the particles' velocities and their stabilisation forces
+  Eigen::Matrix3Xd own_gradient, force;  ///< and the particles' stabilisation forces
 };
 
 /// Bonds: neighbour pairs of the initial configuration (either particle's support containing

@@ -7,22 +7,34 @@
 // Eqs. 11-12 in place of the elasto-plastic tangent. The paper gives the structure; mcdyna's
 // reading of its pieces (manual/theory.md, "ITB 1"):
 // - B-tilde holds second derivatives of the shape functions (ShapeFunctions::hessian, the
-//   quadratic reproducing kernel's psi^ab): e_a = d(D)/dX_a at particle J from
-//   H_ab(v) = sum_K psi^ab_K(X_J) (v_K - v_J). The particles' own strain rates cannot serve:
-//   the spurious modes of nodal integration are those with zero strain rate at every particle,
-//   so any gradient of the particles' D is blind to them. Second derivatives are not, and they
-//   vanish for every affine motion (translation, rotation, uniform stretch and shear);
-// - lambda^b is the second moment of the smoothing function of Eq. 7 about the particle,
-//   M_J = sum_K phi_K(X_J) (X_K - X_J)(X_K - X_J)^T: the Taylor expansion of the smoothed
-//   displacement u-bar(X_J) = sum_K phi_K(X_J) u_K brings the strain gradient in with this
-//   weight (the first moment is zero by linear reproduction). The stored energy is
-//   1/2 sum_J V_J sum_ab M_ab e_a : C-tilde : e_b, and sigma-tilde_a = C-tilde : sum_b M_ab e_b
-//   is updated in rate form like a stress (turned with the particle's spin, objectively under
-//   OSU 1);
-// - f_stab is the exact derivative of that work rate, V sum_a sigma-tilde_a : e_a
-//   = sum_K (v_K - v_J) . sum_ab psi^ab_K(X_J) P_a col b with P_a = V sigma-tilde_a F-hat^-T:
-//   equal and opposite between each row and its particles, so linear momentum is kept to
-//   round-off. The work is reported as hourglass energy.
+//   quadratic reproducing kernel's psi^ab, exactly zero on every linear field): the curvature
+//   of the motion in row J's reference (its last renewal), dF/dX_a with
+//   (dF/dX_a)_cb = sum_K psi^ab_K(X_J) (x_K - x_J)_c. The particles' own strains cannot serve:
+//   the spurious modes of nodal integration are those with zero strain at every particle, so
+//   any gradient of the particles' strains is blind to them; second derivatives are not;
+// - Eq. 10 is written for small strain. In the row's reference (its last renewal) the strain
+//   gradient is that of the Green-Lagrange strain, e_a = dE/dX_a = sym(F^T dF/dX_a): zero for
+//   every affine motion, unchanged by any rotation (objective without a stress rotation), and
+//   the small-strain grad eps where F = I. lambda^b is the second moment of the smoothing
+//   function of Eq. 7 about the particle, M_J = sum_K phi_K(X_J) (X_K - X_J)(X_K - X_J)^T: the
+//   Taylor expansion of the smoothed displacement u-bar(X_J) = sum_K phi_K(X_J) u_K brings the
+//   strain gradient in with this weight (the first moment is zero by linear reproduction);
+// - sigma-tilde_a is updated in rate form, += C-tilde : M (e_a^{n+1} - e_a^n), as the paper's
+//   stress update with G-tilde implies, in the row's reference (so work conjugate to e_a). At a
+//   renewal it is carried into the new reference: with X' = F X, e_a = sum_d F_da F^T e'_d F
+//   to first order, so sigma-tilde'_d = (V0 / V0') sum_a F_da F sigma-tilde_a F^T keeps the
+//   work rate. Where G-tilde (or K) falls, the stored stress is first scaled down with it: a
+//   stress built at a high modulus and released at a far lower one (plastic flow drops G-tilde
+//   by orders of magnitude) would otherwise return more work than it took and feed the motion
+//   (measured on the coarse Taylor bar before this scaling: -2.1e5 N mm of stabilisation work,
+//   as large as the internal energy, by 5.6 us, and an inversion at 5.8 us). With it the
+//   stored energy 1/2 sigma-tilde : C-tilde^-1 : sigma-tilde never exceeds the work done, so
+//   the stabilisation only stores or dissipates;
+// - f_stab follows from the work rate V0 sum_a sigma-tilde_a : e-dot_a, which is
+//   sum_K (v_K - v_J) . [sum_ab psi^ab_K P_a col b + Q grad phi_K(X_J)], P_a = V0 F
+//   sigma-tilde_a, Q = V0 sum_a dF/dX_a sigma-tilde_a: equal and opposite between each row and
+//   its particles, so linear momentum is kept to round-off. The work is reported as hourglass
+//   energy.
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -39,13 +51,10 @@ bool active(const Domain& d, Index j) {
   return d.isolated[jj] == 0 && d.debris[jj] == 0;
 }
 
-// The stress rotation of a particle's spin over `dt` (Jaumann, or Hughes-Winget under OSU 1).
-Kinematics spin_of(const Domain& d, Index j) {
-  Kinematics k{};
-  for (int c = 0; c < 3; ++c)
-    k.w[c] = d.gradient.spin(c, j);
-  k.objective = d.settings.objective;
-  return k;
+Mat3 tensor(const double* s) {
+  Mat3 t;
+  t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+  return t;
 }
 
 }  // namespace
@@ -53,18 +62,23 @@ Kinematics spin_of(const Domain& d, Index j) {
 void stabilization_moments(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
   GradientStabilization& g = d.gradient;
-  if (g.moment.cols() != n) {  // the first renewal; the stress pass fills spin, bulk, shear
+  if (g.moment.cols() != n) {  // the first renewal; the stress pass fills bulk and shear
     g.moment.setZero(6, n);
+    g.strain.setZero(18, n);
     g.stress.setZero(18, n);
-    g.spin.setZero(3, n);
     g.bulk.assign(static_cast<std::size_t>(n), 0.0);
     g.shear.assign(static_cast<std::size_t>(n), 0.0);
+    g.applied_bulk.assign(static_cast<std::size_t>(n), 0.0);
+    g.applied_shear.assign(static_cast<std::size_t>(n), 0.0);
   }
   const Eigen::Matrix3Xd& x = s.nodes.position;
 #pragma omp parallel for schedule(static, 256) if (n > 4096)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     if (!rows.empty() && rows[jj] == 0) continue;
+    // A new reference: e = 0 exactly (the second-derivative functions vanish on the linear
+    // field of the present positions); sigma-tilde was carried over (carry_stabilization).
+    g.strain.col(j).setZero();
     const Vec3 xj = x.col(d.nodes[jj]);
     Mat3 m = Mat3::Zero();
     for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
@@ -87,85 +101,88 @@ namespace {
 
 const int kPairA[6] = {0, 1, 2, 0, 1, 2}, kPairB[6] = {0, 1, 2, 1, 2, 0};
 
-// e_a = d(D)/dX_a, a = X, Y, Z, at row j of the particle field u (velocities, or displacements
-// for the linearised operator): H_ab(u) = sum_K psi^ab_K (u_K - u_j) over the active
-// neighbours, e_a = sym(sum_b H_ab(u) (x) (F-hat^-1 row b)). Adds the row's sum of psi to `own`.
-void strain_gradient(const Domain& d, const Eigen::Matrix3Xd& u, Index j, const Mat3& f_inv,
-                     double e[3][6], Eigen::Ref<Eigen::Matrix<double, 6, 1>> own) {
+// The curvature of the particle field u (positions, or a displacement for the linearised
+// operator) in row j's reference: (G_a)_cb = sum_K psi^ab_K (u_K - u_j)_c over the active
+// neighbours. Adds the row's sums of psi and of grad phi over them to `own_psi`, `own_grad`.
+void curvature(const Domain& d, const Eigen::Matrix3Xd& u, Index j, Mat3 g[3],
+               Eigen::Ref<Eigen::Matrix<double, 6, 1>> own_psi, Eigen::Ref<Vec3> own_grad) {
   const auto jj = static_cast<std::size_t>(j);
   Eigen::Matrix<double, 6, 3> hu = Eigen::Matrix<double, 6, 3>::Zero();  // (ab, component)
   for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
     const Index k = d.list.neighbours[static_cast<std::size_t>(p)];
     if (k == j || !active(d, k)) continue;
     const Eigen::Matrix<double, 6, 1> psi = d.shape.hessian.col(p);
-    own += psi;
+    own_psi += psi;
+    own_grad += d.shape.gradient.col(p);
     hu.noalias() += psi * (u.col(k) - u.col(j)).transpose();
   }
-  for (int a = 0; a < 3; ++a) {
-    Mat3 grad = Mat3::Zero();  // d(grad_x u)/dX_a: grad(c, b') = sum_b H_ab(u_c) F^-1(b, b')
-    for (int q = 0; q < 6; ++q) {
-      int b = -1;
-      if (kPairA[q] == a) b = kPairB[q];
-      if (kPairB[q] == a && kPairA[q] != kPairB[q]) b = kPairA[q];
-      if (b < 0) continue;
-      grad.noalias() += hu.row(q).transpose() * f_inv.row(b);
-    }
-    const Mat3 sym = 0.5 * (grad + grad.transpose());
-    const double comps[6] = {sym(0, 0), sym(1, 1), sym(2, 2), sym(0, 1), sym(1, 2), sym(2, 0)};
-    std::copy(comps, comps + 6, e[a]);
+  for (int q = 0; q < 6; ++q) {
+    g[kPairA[q]].col(kPairB[q]) = hu.row(q).transpose();
+    g[kPairB[q]].col(kPairA[q]) = hu.row(q).transpose();
   }
 }
 
-// M e_a (the stabilisation strain along X_a) of row j.
-void moment_times(const Domain& d, Index j, const double e[3][6], double me[3][6]) {
+// e_a = sym(F^T G_a) as 6-vectors.
+void strain_gradients(const Mat3& f, const Mat3 g[3], double e[18]) {
+  for (int a = 0; a < 3; ++a) {
+    const Mat3 t = f.transpose() * g[a];
+    const Mat3 sym = 0.5 * (t + t.transpose());
+    const double comps[6] = {sym(0, 0), sym(1, 1), sym(2, 2), sym(0, 1), sym(1, 2), sym(2, 0)};
+    std::copy(comps, comps + 6, e + 6 * a);
+  }
+}
+
+// sigma-tilde_a = C-tilde : sum_b M_ab e_b = 2 G (M e)_a + lambda tr((M e)_a) I for a = X, Y, Z.
+void stabilization_stresses(const Domain& d, Index j, double shear, double lame, const double e[18],
+                            double sigma[18]) {
   const double* mo = d.gradient.moment.col(j).data();
   const double m[3][3] = {{mo[0], mo[3], mo[5]}, {mo[3], mo[1], mo[4]}, {mo[5], mo[4], mo[2]}};
-  for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 6; ++c)
-      me[a][c] = m[a][0] * e[0][c] + m[a][1] * e[1][c] + m[a][2] * e[2][c];
-}
-
-// C-tilde : M e_a = 2 G (M e_a) + lambda tr(M e_a) I, the rate (or, linearised, the value) of
-// sigma-tilde_a for a = X, Y, Z into `sigma` (18).
-void isotropic_stresses(double shear, double lame, const double me[3][6], double sigma[18]) {
   for (int a = 0; a < 3; ++a) {
-    const double trace = me[a][0] + me[a][1] + me[a][2];
+    double me[6];
     for (int c = 0; c < 6; ++c)
-      sigma[6 * a + c] = 2.0 * shear * me[a][c] + (c < 3 ? lame * trace : 0.0);
+      me[c] = m[a][0] * e[c] + m[a][1] * e[6 + c] + m[a][2] * e[12 + c];
+    const double trace = me[0] + me[1] + me[2];
+    for (int c = 0; c < 6; ++c)
+      sigma[6 * a + c] = 2.0 * shear * me[c] + (c < 3 ? lame * trace : 0.0);
   }
 }
 
-// P_a = V sigma-tilde_a F-hat^-T into column j of `p` (27 per particle).
-void store_work_stress(const double* sigma, double volume, const Mat3& f_inv,
-                       Eigen::Matrix<double, 27, Eigen::Dynamic>& p, Index j) {
+// P_a = V0 F sigma-tilde_a into column j of `p` (27), and Q = V0 sum_a G_a sigma-tilde_a into
+// column j of `q` (9; left out by the linearised operator, `g` null).
+void store_work_stresses(const double* sigma, double volume, const Mat3& f, const Mat3* g,
+                         Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
+                         Eigen::Matrix<double, 9, Eigen::Dynamic>& q, Index j) {
+  Mat3 curv = Mat3::Zero();
   for (int a = 0; a < 3; ++a) {
-    const double* sa = sigma + 6 * a;
-    Mat3 t;
-    t << sa[0], sa[3], sa[5], sa[3], sa[1], sa[4], sa[5], sa[4], sa[2];
-    Eigen::Map<Mat3>(p.col(j).data() + 9 * a) = volume * t * f_inv.transpose();
+    const Mat3 t = tensor(sigma + 6 * a);
+    Eigen::Map<Mat3>(p.col(j).data() + 9 * a) = volume * f * t;
+    if (g != nullptr) curv.noalias() += volume * g[a] * t;
   }
+  Eigen::Map<Mat3>(q.col(j).data()) = curv;
 }
 
-// sum_ab psi^ab P_a col b of row j.
+// What row j pushes its particle K with (K's functions psi, grad phi in the row):
+// sum_ab psi^ab P_a col b + Q grad phi.
 Vec3 pushed(const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
-            const Eigen::Matrix<double, 6, 1>& psi, Index j) {
-  Vec3 f = Vec3::Zero();
-  for (int q = 0; q < 6; ++q) {
-    const Eigen::Map<const Mat3> p_a(p.col(j).data() + 9 * kPairA[q]);
-    const Eigen::Map<const Mat3> p_b(p.col(j).data() + 9 * kPairB[q]);
-    f += psi[q] * p_a.col(kPairB[q]);
-    if (kPairA[q] != kPairB[q]) f += psi[q] * p_b.col(kPairA[q]);
+            const Eigen::Matrix<double, 9, Eigen::Dynamic>& q,
+            const Eigen::Matrix<double, 6, 1>& psi, const Vec3& grad, Index j) {
+  Vec3 f = Eigen::Map<const Mat3>(q.col(j).data()) * grad;
+  for (int c = 0; c < 6; ++c) {
+    const Eigen::Map<const Mat3> p_a(p.col(j).data() + 9 * kPairA[c]);
+    const Eigen::Map<const Mat3> p_b(p.col(j).data() + 9 * kPairB[c]);
+    f += psi[c] * p_a.col(kPairB[c]);
+    if (kPairA[c] != kPairB[c]) f += psi[c] * p_b.col(kPairA[c]);
   }
   return f;
 }
 
-// The forces of the work stresses: the work rate is sum_J sum_K (u_K - u_J) . pushed(psi_K, J),
-// so row J pushes K by -pushed(psi^ab_K(X_J), J) and itself by pushed(its own sum, J). Per
-// particle into `force` (3 x count), ascending over each transpose: the same bits on any thread
-// count.
+// The forces of the work stresses: the work rate is sum_J sum_K (v_K - v_J) . pushed(K, J), so
+// row J pushes K by -pushed(K, J) and itself by pushed(its own sums, J). Per particle into
+// `force` (3 x count), ascending over each transpose: the same bits on any thread count.
 void stabilization_forces(const Domain& d, const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
-                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& own,
-                          Eigen::Matrix3Xd& force) {
+                          const Eigen::Matrix<double, 9, Eigen::Dynamic>& q,
+                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& own_psi,
+                          const Eigen::Matrix3Xd& own_grad, Eigen::Matrix3Xd& force) {
   const Index n = d.count();
   force.resize(3, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
@@ -173,66 +190,128 @@ void stabilization_forces(const Domain& d, const Eigen::Matrix<double, 27, Eigen
     const auto kk = static_cast<std::size_t>(k);
     force.col(k).setZero();
     if (!active(d, k)) continue;
-    Vec3 f = pushed(p, own.col(k), k);
+    Vec3 f = pushed(p, q, own_psi.col(k), own_grad.col(k), k);
     for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t) {
       const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
       if (j == k || !active(d, j)) continue;
-      f -= pushed(p, d.shape.hessian.col(d.transpose.pairs[static_cast<std::size_t>(t)]), j);
+      const auto pair = d.transpose.pairs[static_cast<std::size_t>(t)];
+      f -= pushed(p, q, d.shape.hessian.col(pair), d.transpose.gradient.col(t), j);
     }
     force.col(k) = f;
   }
 }
 
+// Scales the deviatoric and the volumetric parts of the stored sigma-tilde_a down with the
+// moduli where they fell since the last update (never up: that would create stored energy).
+void soften(double sigma[18], double old_shear, double shear, double old_bulk, double bulk) {
+  const double s_dev = old_shear > shear && old_shear > 0.0 ? shear / old_shear : 1.0;
+  const double s_vol = old_bulk > bulk && old_bulk > 0.0 ? bulk / old_bulk : 1.0;
+  if (s_dev == 1.0 && s_vol == 1.0) return;
+  for (int a = 0; a < 3; ++a) {
+    double* t = sigma + 6 * a;
+    const double mean = (t[0] + t[1] + t[2]) / 3.0;
+    for (int c = 0; c < 6; ++c)
+      t[c] = s_dev * (t[c] - (c < 3 ? mean : 0.0)) + (c < 3 ? s_vol * mean : 0.0);
+  }
+}
+
+// Row j's sigma-tilde and e advanced to the positions x (F its F-hat there, curv its
+// curvature): sigma-tilde += C-tilde : M (e - e_last), after scaling down with fallen moduli,
+// and the step's work, trapezoidal in the stresses the forces saw at either end, into
+// d.mode_energy.
+void advance_row(Domain& d, Index j, const Mat3& f, const Mat3 curv[3]) {
+  GradientStabilization& g = d.gradient;
+  const auto jj = static_cast<std::size_t>(j);
+  double* sigma = g.stress.col(j).data();
+  double* strain = g.strain.col(j).data();
+  double e[18], de[18];
+  strain_gradients(f, curv, e);
+  for (int c = 0; c < 18; ++c)
+    de[c] = e[c] - strain[c];
+  const double shear = g.shear[jj], bulk = g.bulk[jj];
+  double rate[18];
+  stabilization_stresses(d, j, shear, bulk - 2.0 / 3.0 * shear, de, rate);
+  double work = 0.0;
+  for (int c = 0; c < 18; ++c)
+    work += 0.5 * sigma[c] * de[c] * (c % 6 < 3 ? 1.0 : 2.0);
+  soften(sigma, g.applied_shear[jj], shear, g.applied_bulk[jj], bulk);
+  for (int c = 0; c < 18; ++c) {
+    sigma[c] += rate[c];
+    work += 0.5 * sigma[c] * de[c] * (c % 6 < 3 ? 1.0 : 2.0);
+  }
+  g.applied_shear[jj] = shear;
+  g.applied_bulk[jj] = bulk;
+  std::copy(e, e + 18, strain);
+  d.mode_energy[jj] += d.renewal_volume[jj] * work;
+}
+
+// Sized workspaces of the force pass, zeroed.
+void clear_workspace(GradientStabilization& g, Index n) {
+  g.work_stress.setZero(27, n);
+  g.curvature_stress.setZero(9, n);
+  g.own_hessian.setZero(6, n);
+  g.own_gradient.setZero(3, n);
+}
+
 }  // namespace
 
-void strain_gradient_stabilization(State& s, Domain& d, double dt) {
+void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
+  GradientStabilization& g = d.gradient;
+  const Index n = d.count();
+  if (g.stress.cols() != n) return;  // the first renewal: nothing stored yet
+  Eigen::Matrix3Xd x(3, n);
+  for (Index j = 0; j < n; ++j)
+    x.col(j) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(j)]);
+#pragma omp parallel for schedule(static, 256) if (n > 4096)
+  for (Index j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if ((!rows.empty() && rows[jj] == 0) || !active(d, j)) continue;
+    // The step that brought the row here is finished in its old reference first (its work and
+    // stress increment would otherwise be lost at every renewal).
+    const ParticleKinematics k = particle_kinematics(s, d, j, 0.0);
+    if (!k.invertible) continue;
+    const Mat3& f = k.deformation;
+    Mat3 curv[3];
+    Eigen::Matrix<double, 6, 1> own_psi;
+    Vec3 own_grad;
+    curvature(d, x, j, curv, own_psi, own_grad);
+    advance_row(d, j, f, curv);
+    const double ratio = 1.0 / f.determinant();  // V0 / V0'
+    Mat3 pushed[3];
+    for (int a = 0; a < 3; ++a)
+      pushed[a] = ratio * f * tensor(g.stress.col(j).data() + 6 * a) * f.transpose();
+    for (int dd = 0; dd < 3; ++dd) {
+      const Mat3 t = f(dd, 0) * pushed[0] + f(dd, 1) * pushed[1] + f(dd, 2) * pushed[2];
+      const double comps[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
+      std::copy(comps, comps + 6, g.stress.col(j).data() + 6 * dd);
+    }
+  }
+}
+
+void strain_gradient_stabilization(State& s, Domain& d) {
   const Index n = d.count();
   GradientStabilization& g = d.gradient;
-  if (!(dt > 0.0)) return;  // the first pass: nothing has moved, sigma-tilde stays as it is
-  Eigen::Matrix3Xd& v = g.field;
-  v.resize(3, n);
+  Eigen::Matrix3Xd x(3, n);
   for (Index j = 0; j < n; ++j)
-    v.col(j) = s.nodes.velocity.col(d.nodes[static_cast<std::size_t>(j)]);
-  g.work_stress.setZero(27, n);
-  g.own_hessian.setZero(6, n);
+    x.col(j) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(j)]);
+  clear_workspace(g, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     double* sigma = g.stress.col(j).data();
     if (!active(d, j)) {
-      for (int c = 0; c < 18; ++c)
-        sigma[c] = 0.0;
+      std::fill(sigma, sigma + 18, 0.0);
+      g.strain.col(j).setZero();
       continue;
     }
-    const Mat3 f_inv = Eigen::Map<const Mat3>(d.deformation.col(j).data()).inverse();
-    double e[3][6], me[3][6];
-    strain_gradient(d, v, j, f_inv, e, g.own_hessian.col(j));
-    moment_times(d, j, e, me);
-    // sigma-tilde_a += dt C-tilde : M e_a, turned with the particle's spin.
-    const double shear = g.shear[jj];
-    const double lame = g.bulk[jj] - 2.0 / 3.0 * shear;
-    const Kinematics spin = spin_of(d, j);
-    const double turn = spin.objective ? 0.5 * dt : dt;
-    double rate[18];
-    isotropic_stresses(shear, lame, me, rate);
-    double work = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      double* sa = sigma + 6 * a;
-      rotate_stress(sa, spin, turn);
-      double old[6];
-      std::copy(sa, sa + 6, old);
-      for (int c = 0; c < 6; ++c)
-        sa[c] += dt * rate[6 * a + c];
-      double mid[6];
-      for (int c = 0; c < 6; ++c)
-        mid[c] = 0.5 * (old[c] + sa[c]);
-      work += contract(mid, e[a]) * dt;
-      if (spin.objective) rotate_stress(sa, spin, turn);
-    }
-    store_work_stress(sigma, d.volume[jj], f_inv, g.work_stress, j);
-    d.mode_energy[jj] += d.volume[jj] * work;
+    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(j).data());
+    Mat3 curv[3];
+    curvature(d, x, j, curv, g.own_hessian.col(j), g.own_gradient.col(j));
+    advance_row(d, j, f, curv);
+    store_work_stresses(sigma, d.renewal_volume[jj], f, curv, g.work_stress, g.curvature_stress, j);
   }
-  stabilization_forces(d, g.work_stress, g.own_hessian, g.force);
+  stabilization_forces(d, g.work_stress, g.curvature_stress, g.own_hessian, g.own_gradient,
+                       g.force);
   for (Index k = 0; k < n; ++k)
     s.nodes.force.col(d.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
 }
@@ -240,29 +319,30 @@ void strain_gradient_stabilization(State& s, Domain& d, double dt) {
 void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
                             Eigen::Matrix3Xd& force) {
   const Index n = d.count();
-  Eigen::Matrix<double, 27, Eigen::Dynamic> p =
-      Eigen::Matrix<double, 27, Eigen::Dynamic>::Zero(27, n);
-  Eigen::Matrix<double, 6, Eigen::Dynamic> own =
-      Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, n);
+  GradientStabilization w;
+  clear_workspace(w, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     if (!active(d, j)) continue;
-    const Mat3 f_inv = Eigen::Map<const Mat3>(d.deformation.col(j).data()).inverse();
-    double e[3][6], me[3][6];
-    strain_gradient(d, x, j, f_inv, e, own.col(j));
-    moment_times(d, j, e, me);
+    // Linearised about the present state with its curvature neglected: de_a = sym(F^T dG_a).
+    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(j).data());
+    Mat3 curv[3];
+    curvature(d, x, j, curv, w.own_hessian.col(j), w.own_gradient.col(j));
+    double e[18];
+    strain_gradients(f, curv, e);
     // The elastic C (as frequency.cpp takes for nodal integration): K from the wave speed.
     const double physical = d.mass[jj] - d.added_mass[jj];
     const double rc2 =
         physical / d.volume[jj] * wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
     const double shear = d.failed[jj] ? 0.0 : mat.shear_modulus;
-    const double lame = rc2 - 2.0 * shear;
     double sigma[18];
-    isotropic_stresses(shear, lame, me, sigma);
-    store_work_stress(sigma, d.volume[jj], f_inv, p, j);
+    stabilization_stresses(d, j, shear, rc2 - 2.0 * shear, e, sigma);
+    store_work_stresses(sigma, d.renewal_volume[jj], f, nullptr, w.work_stress, w.curvature_stress,
+                        j);
   }
-  stabilization_forces(d, p, own, force);
+  w.own_gradient.setZero();  // no Q: the gradient sums push nothing
+  stabilization_forces(d, w.work_stress, w.curvature_stress, w.own_hessian, w.own_gradient, force);
 }
 
 }  // namespace mcdyna::solver::spg

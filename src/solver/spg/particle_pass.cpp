@@ -191,8 +191,6 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
                 std::sqrt(d.mobility[jj]);
   if (gradient) {  // ITB 1: what the stabilisation pass needs, and its stiffer step
     GradientStabilization& g = d.gradient;
-    for (int c = 0; c < 3; ++c)
-      g.spin(c, j) = k.w[c];
     g.shear[jj] = modified_shear;
     g.bulk[jj] =
         std::max(vol.density * vol.wave_speed_squared - 4.0 / 3.0 * mat.shear_modulus, 0.0);
@@ -316,7 +314,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     smooth_masses(s, d);
   }
   if (d.settings.stabilization == Stabilization::strain_gradient)
-    strain_gradient_stabilization(s, d, step);
+    strain_gradient_stabilization(s, d);
   d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
   start = Clock::now();
 

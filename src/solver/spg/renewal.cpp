@@ -248,6 +248,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   Eigen::Matrix3Xd x(3, n);
   for (Index i = 0; i < n; ++i)
     x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
+  if (d.settings.stabilization == Stabilization::strain_gradient)
+    carry_stabilization(s, d, all ? std::vector<std::uint8_t>{} : rows);
   // Eq. 32: F^{n+m} = F-hat F^n; a renewed row starts again from F-hat = I.
   for (Index i = 0; i < n; ++i) {
     if (!renewed(i)) continue;

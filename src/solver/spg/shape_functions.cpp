@@ -23,11 +23,18 @@ Vec10 quadratic_basis(const Eigen::Vector3d& z) {
 
 // Second-derivative functions of particle I's row (ShapeFunctions::hessian), from the window
 // values w_J (`windows`, in row order). With r = X_I - X_J and z = B r (B = I's support
-// matrix), a quadratic g has g(X_J) = H(z)^T a, a = [g, -B^-T grad g, the z-Hessian Hz as
-// Hz11/2, Hz22/2, Hz33/2, Hz12, Hz23, Hz31]; psi = w H^T M^-1 e picks a's entry e out of
-// sum_J psi g(X_J) = e^T M^-1 (sum w H H^T) a. The x-Hessian is B^T Hz B. A z-Hessian entry the
-// row cannot resolve is zero; with a general B that can spread into other x entries, which is
-// still zero for every linear field (the stabilisation then weighs less there, nothing more).
+// matrix), a quadratic g has g(X_J) = l_J^T a_L + q_J^T a_Q, l = [1, z], q = [z1^2, z2^2, z3^2,
+// z1 z2, z2 z3, z3 z1], a_Q = [Hz11/2, Hz22/2, Hz33/2, Hz12, Hz23, Hz31] (Hz the z-Hessian).
+// With the moment blocks A = sum w l l^T, Bq = sum w l q^T, C = sum w q q^T, the quadratic part
+// of each neighbour orthogonal to the linear basis, q'_J = q_J - Bq^T A^-1 l_J, has
+// sum_J w q'_J l_J^T = 0, so psi_J = w_J S^+ q'_J (S = C - Bq^T A^-1 Bq, the Schur complement)
+// gives sum_J psi_J g(X_J) = S^+ S a_Q: exactly zero for every linear field whatever S^+ keeps,
+// and exact for the curvature in the directions S resolves. A row on a surface has two layers
+// of neighbours across it (support 1.5 spacings), where z_n^2 is a multiple of z_n: S is
+// singular along that combination, and near-singular once the layers are perturbed; a direction
+// of S weaker than kMinimumHessianRatio times its largest is left out (its curvature zero), so
+// no row's stiffness exceeds about 1 / kMinimumHessianRatio times a resolved row's.
+// The x-Hessian is B^T Hz B.
 void row_hessian(const Eigen::Matrix3Xd& x, const Eigen::Matrix3d& to_unit,
                  const NeighbourList& list, Index i, const std::vector<double>& windows,
                  std::size_t first, std::size_t last, ShapeFunctions& out) {
@@ -39,44 +46,36 @@ void row_hessian(const Eigen::Matrix3Xd& x, const Eigen::Matrix3d& to_unit,
   }
   for (std::size_t p = first; p < last; ++p)
     out.hessian.col(static_cast<Eigen::Index>(p)).setZero();
-  // A row on a surface has two layers of neighbours across it (support 1.5 spacings), where
-  // z_n^2 and z_n take the same values up to a factor: M is singular along that combination.
-  // The pseudo-inverse on the rest leaves every other Hessian entry exact for quadratics and
-  // zero for linear fields; the entries the null space touches (d2/dn2) are left out (zero).
-  const Eigen::SelfAdjointEigenSolver<Mat10> eig(m);
-  const double hi = eig.eigenvalues()[9];
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
+  using Mat46 = Eigen::Matrix<double, 4, 6>;
+  const Eigen::LDLT<Mat4> linear(m.topLeftCorner<4, 4>());  // well conditioned: checked by caller
+  const Mat46 projection = linear.solve(m.topRightCorner<4, 6>());  // A^-1 Bq
+  const Mat6 schur =
+      m.bottomRightCorner<6, 6>() - m.topRightCorner<4, 6>().transpose() * projection;
+  const Eigen::SelfAdjointEigenSolver<Mat6> eig(schur);
+  const double hi = eig.eigenvalues()[5];
   if (!(hi > 0.0)) return;
-  Mat10 inverse = Mat10::Zero();
-  Mat10 null = Mat10::Zero();  // projector onto the (near) null space
-  for (int k = 0; k < 10; ++k) {
-    const Vec10 u = eig.eigenvectors().col(k);
+  Mat6 inverse = Mat6::Zero();
+  for (int k = 0; k < 6; ++k)
     if (eig.eigenvalues()[k] > kMinimumHessianRatio * hi)
-      inverse.noalias() += u * u.transpose() / eig.eigenvalues()[k];
-    else
-      null.noalias() += u * u.transpose();
-  }
-  // c_q = M^+ e_q for the z-Hessian entries (index, factor 2 for the squares).
-  Eigen::Matrix<double, 10, 6> c = Eigen::Matrix<double, 10, 6>::Zero();
-  const int entry[6] = {4, 5, 6, 7, 8, 9};
-  bool any = false;
-  for (int q = 0; q < 6; ++q) {
-    if (null(entry[q], entry[q]) > kMinimumHessianRatio) continue;  // not resolved by the row
-    c.col(q) = (q < 3 ? 2.0 : 1.0) * inverse.col(entry[q]);
-    any = true;
-  }
-  if (!any) return;
+      inverse.noalias() +=
+          eig.eigenvectors().col(k) * eig.eigenvectors().col(k).transpose() / eig.eigenvalues()[k];
+  // Hz entries from a_Q: the squares carry a factor 2.
+  const Eigen::Matrix<double, 6, 1> factor =
+      (Eigen::Matrix<double, 6, 1>() << 2, 2, 2, 1, 1, 1).finished();
   const int pa[6] = {0, 1, 2, 0, 1, 2}, pb[6] = {0, 1, 2, 1, 2, 0};
   for (std::size_t p = first; p < last; ++p) {
     const Vec10 h = quadratic_basis(to_unit * (xi - x.col(list.neighbours[p])));
-    const Eigen::Matrix<double, 6, 1> hz = windows[p - first] * (c.transpose() * h);
+    const Eigen::Matrix<double, 6, 1> q = h.tail<6>() - projection.transpose() * h.head<4>();
+    const Eigen::Matrix<double, 6, 1> hz = windows[p - first] * factor.cwiseProduct(inverse * q);
     Eigen::Matrix3d z;  // the z-Hessian function of this pair, symmetric
-    for (int q = 0; q < 6; ++q) {
-      z(pa[q], pb[q]) = hz[q];
-      z(pb[q], pa[q]) = hz[q];
+    for (int c = 0; c < 6; ++c) {
+      z(pa[c], pb[c]) = hz[c];
+      z(pb[c], pa[c]) = hz[c];
     }
     const Eigen::Matrix3d hx = to_unit.transpose() * z * to_unit;
-    for (int q = 0; q < 6; ++q)
-      out.hessian(q, static_cast<Eigen::Index>(p)) = hx(pa[q], pb[q]);
+    for (int c = 0; c < 6; ++c)
+      out.hessian(c, static_cast<Eigen::Index>(p)) = hx(pa[c], pb[c]);
   }
 }
 

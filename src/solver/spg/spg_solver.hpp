@@ -140,14 +140,19 @@ void mode_control_forces(const State& s, Domain& d);
 /// r_J = x_J - sum_K phi_K(X_J) x_K over particle j's row (zero for degenerate rows).
 Vec3 mode_residual(const State& s, const Domain& d, Index j);
 
+/// ITB 1 (gradient_stabilization.cpp), at a renewal before F-hat is folded into F^n: the
+/// stabilisation stresses of the rows flagged in `rows` (all when empty) carried into their new
+/// reference, the present configuration.
+void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8_t>& rows);
+
 /// ITB 1 (gradient_stabilization.cpp): the second moments lambda^b and step factors of the
 /// rows flagged in `rows` (all when empty), at their renewal, in the current configuration.
 void stabilization_moments(const State& s, Domain& d, const std::vector<std::uint8_t>& rows);
 
-/// ITB 1, after the stress pass over `dt` (which left F-hat, W, K and G-tilde per particle):
-/// updates the stabilisation stresses (Eq. 10) from the strain-rate gradient of the node
-/// velocities and adds their forces (Eq. 9) to the nodes, their work to d.mode_energy.
-void strain_gradient_stabilization(State& s, Domain& d, double dt);
+/// ITB 1, after the stress pass (which left F-hat, K and G-tilde per particle): the
+/// stabilisation stresses (Eq. 10) from the strain gradient of the current positions in each
+/// row's reference, their forces (Eq. 9) added to the nodes, their work to d.mode_energy.
+void strain_gradient_stabilization(State& s, Domain& d);
 
 /// ITB 1's stabilisation linearised with the elastic tangent (for the power iteration of
 /// frequency.cpp): the forces of a displacement field x (3 x count, per particle).
