@@ -260,17 +260,8 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.mode_control = options.spg_mode_control;
   if (options.spg_step == "eigen")
-    for (solver::spg::Domain& dom : state->spg) {
-      if (dom.settings.stabilization == solver::spg::Stabilization::strain_gradient) {
-        fmt::print(err,
-                   "mcdyna: error: --spg-step eigen: SPG part {} runs the original SPG (ITB 1), "
-                   "whose stabilisation the eigenvalue estimate does not linearise; use the "
-                   "default step or ITB 3\nmcdyna: {} not run\n",
-                   state->parts[static_cast<std::size_t>(dom.part)].id, options.deck.string());
-        return kRunUsage;
-      }
+    for (solver::spg::Domain& dom : state->spg)
       dom.settings.step_estimate = solver::spg::StepEstimate::eigenvalue;
-    }
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
     fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,

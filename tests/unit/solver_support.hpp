@@ -94,6 +94,14 @@ struct EnergyDrift {
   }
 };
 
+/// The largest node speed of the model.
+inline double largest_speed(const solver::State& s) {
+  double v = 0.0;
+  for (solver::Index n = 0; n < s.nodes.count(); ++n)
+    v = std::max(v, s.nodes.velocity.col(n).norm());
+  return v;
+}
+
 /// Whether any diagnostic's message contains `text`.
 inline bool mentions(const core::Diagnostics& d, const std::string& text) {
   for (const auto& m : d.all())

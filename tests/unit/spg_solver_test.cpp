@@ -102,14 +102,6 @@ Vec3 conserved_momentum(const solver::State& s, double& scale) {
   return p;
 }
 
-// The largest node speed of the model.
-double largest_speed(const solver::State& s) {
-  double v = 0.0;
-  for (Index n = 0; n < s.nodes.count(); ++n)
-    v = std::max(v, s.nodes.velocity.col(n).norm());
-  return v;
-}
-
 }  // namespace
 
 TEST_CASE("MC-SPG free body: linear momentum kept to round-off over 1000 steps") {

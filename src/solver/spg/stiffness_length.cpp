@@ -130,7 +130,8 @@ double calibrate_stiffness_length(const State& s, Domain& d) {
   const FrequencyEstimate f = largest_frequency(s, d, kCalibrationIterations, &d.step_bound.mode);
   if (!(f.omega_squared > 0.0)) return 0.0;
   const double critical = 2.0 / std::sqrt(f.omega_squared);
-  if (d.settings.stabilization == Stabilization::strain_gradient) {
+  if (d.settings.stabilization == Stabilization::strain_gradient &&
+      d.settings.step_estimate != StepEstimate::eigenvalue) {
     // ITB 1: the nearest-neighbour steps follow what the stabilisation does to the critical
     // step of the arrangement (measured on the coarse elastic-wave rod: 0.17-0.20 with it,
     // 0.199 without; a per-row Gershgorin ratio took the step to 0.061).
