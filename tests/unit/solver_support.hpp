@@ -14,6 +14,7 @@
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
+#include "solver/spg/spg_solver.hpp"
 #include "test_support.hpp"
 
 namespace mcdyna::test {
@@ -100,6 +101,26 @@ inline double largest_speed(const solver::State& s) {
   for (solver::Index n = 0; n < s.nodes.count(); ++n)
     v = std::max(v, s.nodes.velocity.col(n).norm());
   return v;
+}
+
+/// The critical-step check of the SPG tests: `deck` (a free SPG block), its velocities from
+/// `setup`, run at `factor` x the critical step its first renewal found (2 / omega_max by power
+/// iteration); returns how the run stopped, with that step in `critical` and the final largest
+/// node speed over the initial in `speed_ratio`.
+template <class Setup>
+solver::StopReason run_at_critical_step(const std::string& deck, Setup setup, double factor,
+                                        double& critical, double& speed_ratio) {
+  TempDir dir;
+  Simulation sim = prepare(dir, deck);
+  setup(*sim.state);
+  solver::spg::Domain& d = sim.state->spg.front();
+  solver::spg::initialise(*sim.state, d);
+  critical = d.step_bound.initial_critical;
+  sim.state->time_control.fixed_step = factor * critical;
+  const double v0 = largest_speed(*sim.state);
+  run(sim);
+  speed_ratio = largest_speed(*sim.state) / v0;
+  return sim.result.reason;
 }
 
 /// Whether any diagnostic's message contains `text`.

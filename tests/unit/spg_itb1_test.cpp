@@ -203,17 +203,11 @@ TEST_CASE("ITB 1 results are bitwise identical on 1 and 2 threads") {
 TEST_CASE("ITB 1 critical step: 2 / omega with the stabilisation is where a free body blows up") {
   TempDir dir;
   auto at_fixed_step = [&](double factor, double& critical, double& speed_ratio) {
-    Simulation sim = prepare(dir, itb_deck(7, 6, 5, 400, 1));
-    set_noisy_velocity(*sim.state, 0.02);
-    spg::Domain& d = sim.state->spg.front();
-    spg::initialise(*sim.state, d);
-    critical = d.step_bound.initial_critical;
-    sim.state->time_control.fixed_step = factor * critical;
-    const double v0 = largest_speed(*sim.state);
-    run(sim);
-    speed_ratio = largest_speed(*sim.state) / v0;
-    return sim.result.reason;
+    return run_at_critical_step(
+        itb_deck(7, 6, 5, 400, 1), [](solver::State& s) { set_noisy_velocity(s, 0.02); }, factor,
+        critical, speed_ratio);
   };
+
   double critical = 0.0, below = 0.0, above = 0.0;
   const solver::StopReason stable = at_fixed_step(0.9, critical, below);
   MESSAGE("critical step ", critical, "; largest speed after 400 cycles at 0.9 x: ", below,

@@ -623,17 +623,11 @@ namespace mcdyna::test {
 TEST_CASE("MC-SPG critical step: 2 / omega from power iteration is where a free body blows up") {
   TempDir dir;
   auto at_fixed_step = [&](double factor, double& critical, double& speed_ratio) {
-    Simulation sim = prepare(dir, spg_deck(7, 6, 5, 400));
-    set_velocity_field(*sim.state);
-    spg::Domain& d = sim.state->spg.front();
-    spg::initialise(*sim.state, d);
-    critical = d.step_bound.initial_critical;
-    sim.state->time_control.fixed_step = factor * critical;
-    const double v0 = largest_speed(*sim.state);
-    run(sim);
-    speed_ratio = largest_speed(*sim.state) / v0;
-    return sim.result.reason;
+    return run_at_critical_step(
+        spg_deck(7, 6, 5, 400), [](solver::State& s) { set_velocity_field(s); }, factor, critical,
+        speed_ratio);
   };
+
   double critical = 0.0, below = 0.0, above = 0.0;
   const solver::StopReason stable = at_fixed_step(0.9, critical, below);
   MESSAGE("critical step ", critical, "; largest speed after 400 cycles at 0.9 x: ", below,
