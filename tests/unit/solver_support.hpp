@@ -103,24 +103,36 @@ inline double largest_speed(const solver::State& s) {
   return v;
 }
 
-/// The critical-step check of the SPG tests: `deck` (a free SPG block), its velocities from
-/// `setup`, run at `factor` x the critical step its first renewal found (2 / omega_max by power
-/// iteration); returns how the run stopped, with that step in `critical` and the final largest
-/// node speed over the initial in `speed_ratio`.
+/// The critical-step check of the SPG tests: `deck` (a free SPG block, 400 cycles), its
+/// velocities from `setup`, is run at 0.9 and 1.1 x the critical step its first renewal found
+/// (2 / omega_max by power iteration): bounded below it, blown up above it (the run stopped, or
+/// the largest node speed grown a thousandfold). Returns that critical step.
 template <class Setup>
-solver::StopReason run_at_critical_step(const std::string& deck, Setup setup, double factor,
-                                        double& critical, double& speed_ratio) {
-  TempDir dir;
-  Simulation sim = prepare(dir, deck);
-  setup(*sim.state);
-  solver::spg::Domain& d = sim.state->spg.front();
-  solver::spg::initialise(*sim.state, d);
-  critical = d.step_bound.initial_critical;
-  sim.state->time_control.fixed_step = factor * critical;
-  const double v0 = largest_speed(*sim.state);
-  run(sim);
-  speed_ratio = largest_speed(*sim.state) / v0;
-  return sim.result.reason;
+double check_blow_up_at_critical_step(const std::string& deck, Setup setup) {
+  double critical = 0.0;
+  auto at_fixed_step = [&](double factor, double& speed_ratio) {
+    TempDir dir;
+    Simulation sim = prepare(dir, deck);
+    setup(*sim.state);
+    solver::spg::Domain& d = sim.state->spg.front();
+    solver::spg::initialise(*sim.state, d);
+    critical = d.step_bound.initial_critical;
+    sim.state->time_control.fixed_step = factor * critical;
+    const double v0 = largest_speed(*sim.state);
+    run(sim);
+    speed_ratio = largest_speed(*sim.state) / v0;
+    return sim.result.reason;
+  };
+  double below = 0.0, above = 0.0;
+  const solver::StopReason stable = at_fixed_step(0.9, below);
+  MESSAGE("critical step ", critical, "; largest speed after 400 cycles at 0.9 x: ", below,
+          " x the initial");
+  CHECK(stable == solver::StopReason::end_cycle);
+  CHECK(below < 1.5);
+  const solver::StopReason unstable = at_fixed_step(1.1, above);
+  MESSAGE("at 1.1 x: stop reason ", static_cast<int>(unstable), ", speed ratio ", above);
+  CHECK((unstable != solver::StopReason::end_cycle || !(above < 1e3)));
+  return critical;
 }
 
 /// Whether any diagnostic's message contains `text`.

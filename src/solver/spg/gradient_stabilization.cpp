@@ -57,6 +57,12 @@ Mat3 tensor(const double* s) {
   return t;
 }
 
+// The inverse of tensor(): a symmetric t as xx yy zz xy yz zx into `out`.
+void store_symmetric(const Mat3& t, double* out) {
+  const double comps[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
+  std::copy(comps, comps + 6, out);
+}
+
 }  // namespace
 
 void stabilization_moments(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
@@ -91,9 +97,7 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
     eig.computeDirect(m);
     const Vec3 lambda = eig.eigenvalues().cwiseMax(0.0);
     m = eig.eigenvectors() * lambda.asDiagonal() * eig.eigenvectors().transpose();
-    const double moment[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(2, 0)};
-    for (int c = 0; c < 6; ++c)
-      g.moment(c, j) = moment[c];
+    store_symmetric(m, g.moment.col(j).data());
   }
 }
 
@@ -126,9 +130,7 @@ void curvature(const Domain& d, const Eigen::Matrix3Xd& u, Index j, Mat3 g[3],
 void strain_gradients(const Mat3& f, const Mat3 g[3], double e[18]) {
   for (int a = 0; a < 3; ++a) {
     const Mat3 t = f.transpose() * g[a];
-    const Mat3 sym = 0.5 * (t + t.transpose());
-    const double comps[6] = {sym(0, 0), sym(1, 1), sym(2, 2), sym(0, 1), sym(1, 2), sym(2, 0)};
-    std::copy(comps, comps + 6, e + 6 * a);
+    store_symmetric(0.5 * (t + t.transpose()), e + 6 * a);
   }
 }
 
@@ -232,13 +234,13 @@ void advance_row(Domain& d, Index j, const Mat3& f, const Mat3 curv[3]) {
   double rate[18];
   stabilization_stresses(d, j, shear, bulk - 2.0 / 3.0 * shear, de, rate);
   double work = 0.0;
-  for (int c = 0; c < 18; ++c)
-    work += 0.5 * sigma[c] * de[c] * (c % 6 < 3 ? 1.0 : 2.0);
+  for (int a = 0; a < 3; ++a)
+    work += 0.5 * contract(sigma + 6 * a, de + 6 * a);
   soften(sigma, g.applied_shear[jj], shear, g.applied_bulk[jj], bulk);
-  for (int c = 0; c < 18; ++c) {
+  for (int c = 0; c < 18; ++c)
     sigma[c] += rate[c];
-    work += 0.5 * sigma[c] * de[c] * (c % 6 < 3 ? 1.0 : 2.0);
-  }
+  for (int a = 0; a < 3; ++a)
+    work += 0.5 * contract(sigma + 6 * a, de + 6 * a);
   g.applied_shear[jj] = shear;
   g.applied_bulk[jj] = bulk;
   std::copy(e, e + 18, strain);
@@ -259,9 +261,7 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
   GradientStabilization& g = d.gradient;
   const Index n = d.count();
   if (g.stress.cols() != n) return;  // the first renewal: nothing stored yet
-  Eigen::Matrix3Xd x(3, n);
-  for (Index j = 0; j < n; ++j)
-    x.col(j) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(j)]);
+  const Eigen::Matrix3Xd x = particle_positions(s, d);
 #pragma omp parallel for schedule(static, 256) if (n > 4096)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
@@ -272,8 +272,8 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
     if (!k.invertible) continue;
     const Mat3& f = k.deformation;
     Mat3 curv[3];
-    Eigen::Matrix<double, 6, 1> own_psi;
-    Vec3 own_grad;
+    Eigen::Matrix<double, 6, 1> own_psi = Eigen::Matrix<double, 6, 1>::Zero();  // unused here
+    Vec3 own_grad = Vec3::Zero();
     curvature(d, x, j, curv, own_psi, own_grad);
     advance_row(d, j, f, curv);
     const double ratio = 1.0 / f.determinant();  // V0 / V0'
@@ -281,9 +281,8 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
     for (int a = 0; a < 3; ++a)
       pushed[a] = ratio * f * tensor(g.stress.col(j).data() + 6 * a) * f.transpose();
     for (int dd = 0; dd < 3; ++dd) {
-      const Mat3 t = f(dd, 0) * pushed[0] + f(dd, 1) * pushed[1] + f(dd, 2) * pushed[2];
-      const double comps[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
-      std::copy(comps, comps + 6, g.stress.col(j).data() + 6 * dd);
+      store_symmetric(f(dd, 0) * pushed[0] + f(dd, 1) * pushed[1] + f(dd, 2) * pushed[2],
+                      g.stress.col(j).data() + 6 * dd);
     }
   }
 }
@@ -291,9 +290,7 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
 void strain_gradient_stabilization(State& s, Domain& d) {
   const Index n = d.count();
   GradientStabilization& g = d.gradient;
-  Eigen::Matrix3Xd x(3, n);
-  for (Index j = 0; j < n; ++j)
-    x.col(j) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(j)]);
+  const Eigen::Matrix3Xd x = particle_positions(s, d);
   clear_workspace(g, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {

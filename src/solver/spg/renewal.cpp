@@ -236,6 +236,13 @@ void smooth_masses(State& s, Domain& d) {
   update_mobility(d, s.time);
 }
 
+Eigen::Matrix3Xd particle_positions(const State& s, const Domain& d) {
+  Eigen::Matrix3Xd x(3, d.count());
+  for (Index i = 0; i < d.count(); ++i)
+    x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
+  return x;
+}
+
 void renew_kernel(State& s, Domain& d) {
   renew_kernel(s, d, {});
 }
@@ -245,9 +252,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const bool all = rows.empty() || d.renewals == 0;
   auto renewed = [&](Index i) { return all || rows[static_cast<std::size_t>(i)] != 0; };
   auto start = Clock::now();
-  Eigen::Matrix3Xd x(3, n);
-  for (Index i = 0; i < n; ++i)
-    x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
+  const Eigen::Matrix3Xd x = particle_positions(s, d);
   if (d.settings.stabilization == Stabilization::strain_gradient)
     carry_stabilization(s, d, all ? std::vector<std::uint8_t>{} : rows);
   // Eq. 32: F^{n+m} = F-hat F^n; a renewed row starts again from F-hat = I.

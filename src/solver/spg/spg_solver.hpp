@@ -31,6 +31,9 @@ struct ParticlePassResult {
 /// `step` is the step the current velocities were integrated over (0 at the start).
 ParticlePassResult particle_pass(State& s, Domain& d, double step);
 
+/// The particles' node positions, in particle order (3 x count).
+Eigen::Matrix3Xd particle_positions(const State& s, const Domain& d);
+
 /// F-hat (Eq. 33) and the velocity gradient of the node velocities (the smoothed velocity) at
 /// particle j, over its current row of the neighbour list. With `half_step` = dt / 2 > 0
 /// (*CONTROL_ACCURACY OSU 1) the gradient is that of the mid-step configuration,
