@@ -148,9 +148,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   run_cmd
       ->add_option("--spg-step", run.spg_step,
-                   "SPG particle step estimate: nn (nearest-neighbour distance, default) or "
-                   "eigen (stiffness lengths scaled every second cycle to the largest "
-                   "eigenvalue of the linearised equations, by power iteration)")
+                   "SPG particle step estimate: nn (nearest-neighbour distance; the default "
+                   "for MC-SPG and plain nodal integration) or eigen (stiffness lengths scaled "
+                   "every second cycle to the largest eigenvalue of the linearised equations, "
+                   "by power iteration; the default for ITB 1)")
       ->check(CLI::IsMember({"nn", "eigen"}));
   run_cmd
       ->add_option("--fixed-step", run.fixed_step,

@@ -250,8 +250,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
         : options.spg_stabilization == "direct" ? solver::spg::Stabilization::direct
         : options.spg_stabilization == "spg"    ? solver::spg::Stabilization::strain_gradient
                                                 : solver::spg::Stabilization::momentum_consistent;
-    for (solver::spg::Domain& dom : state->spg)
+    for (solver::spg::Domain& dom : state->spg) {
       dom.settings.stabilization = mode;
+      dom.settings.step_estimate = solver::spg::default_step_estimate(mode);
+    }
   }
   if (options.spg_renewal_strain >= 0.0)
     for (solver::spg::Domain& dom : state->spg)
@@ -259,9 +261,11 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.spg_mode_control >= 0.0)
     for (solver::spg::Domain& dom : state->spg)
       dom.settings.mode_control = options.spg_mode_control;
-  if (options.spg_step == "eigen")
+  if (!options.spg_step.empty())
     for (solver::spg::Domain& dom : state->spg)
-      dom.settings.step_estimate = solver::spg::StepEstimate::eigenvalue;
+      dom.settings.step_estimate = options.spg_step == "eigen"
+                                       ? solver::spg::StepEstimate::eigenvalue
+                                       : solver::spg::StepEstimate::nearest_neighbour;
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
     fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,

@@ -22,8 +22,8 @@ struct RunOptions {
   /// SMSTEP check); negative: the default of the solver
   double spg_renewal_strain = -1.0;
   double spg_mode_control = -1.0;  ///< < 0: from the deck (MSC)
-  /// --spg-step: "nn" (nearest-neighbour length, default) or "eigen" (stiffness length scaled to
-  /// the largest eigenvalue by power iteration every cycle)
+  /// --spg-step: "nn" (nearest-neighbour length) or "eigen" (stiffness length scaled to the
+  /// largest eigenvalue by power iteration); empty: spg::default_step_estimate
   std::string spg_step;
   /// --fixed-step: every cycle takes this step, no mass scaling, no restart dumps (a probe for
   /// the true critical step; not part of the dump fingerprint so it can start from any dump)

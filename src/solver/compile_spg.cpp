@@ -56,6 +56,7 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
   // ITB 1 (and 2, which the model check notes) is the original SPG; 3 is MC-SPG.
   st.stabilization = in.stabilization == 3 ? spg::Stabilization::momentum_consistent
                                            : spg::Stabilization::strain_gradient;
+  st.step_estimate = spg::default_step_estimate(st.stabilization);
   st.bulk_viscosity = q;
   return st;
 }
