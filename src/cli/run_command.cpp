@@ -24,6 +24,7 @@
 #include "cli/wait_policy.hpp"
 #include "deck/deck.hpp"
 #include "io/checked_file.hpp"
+#include "io/output_lock.hpp"
 #include "io/outputs.hpp"
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
@@ -269,6 +270,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
   if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
     fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,
+               options.deck.string());
+    return kRunUsage;
+  }
+  const io::OutputLock lock(dir);
+  if (!lock.problem().empty()) {
+    fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", lock.problem(),
                options.deck.string());
     return kRunUsage;
   }

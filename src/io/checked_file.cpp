@@ -54,8 +54,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   }
   std::filesystem::rename(part, path, ec);
   if (ec) {
+    const int rename_error = ec.value();  // before remove() overwrites ec
     std::filesystem::remove(part, ec);
-    fail(path, "rename into place", ec.value());
+    fail(path, "rename into place", rename_error);
   }
 }
 

@@ -5,6 +5,9 @@
 
 #include <fstream>
 
+#include <unistd.h>
+
+#include "io/output_lock.hpp"
 #include "output_support.hpp"
 
 namespace mcdyna::test {
@@ -134,6 +137,30 @@ TEST_CASE("--out that cannot be a directory is a usage error (exit 2) with the r
     CHECK(r.output.find(reason) != std::string::npos);
     CHECK(r.output.find("internal error") == std::string::npos);
   }
+}
+
+TEST_CASE("a second run into a directory another run is writing is refused with its process") {
+  // Two runs in one --out directory interleave their histories and rename each other's restart
+  // dumps away ("cannot rename into place"); the second is now a usage error instead.
+  TempDir dir;
+  const fs::path deck = dir.write("cube.k", source_text("decks/cube/cube_drop.k"));
+  const fs::path out = dir.path() / "out";
+  fs::create_directories(out);
+  {
+    const io::OutputLock first(out);  // this process stands for the run already writing there
+    REQUIRE(first.problem().empty());
+    const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q");
+    CHECK(r.exit_code == 2);
+    CHECK_MESSAGE(r.output.find(fmt::format("mcdyna: error: --out: another mcdyna run (process "
+                                            "{}) is writing to {}",
+                                            ::getpid(), out.string())) != std::string::npos,
+                  r.output);
+    CHECK_FALSE(fs::exists(out / "glstat"));
+  }
+  // The lock goes with its holder: the same run now goes ahead.
+  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q");
+  CHECK_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(fs::exists(out / "glstat"));
 }
 
 }  // namespace mcdyna::test
