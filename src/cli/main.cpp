@@ -153,6 +153,10 @@ int main(int argc, char** argv) {
                    "every second cycle to the largest eigenvalue of the linearised equations, "
                    "by power iteration; the default for ITB 1)")
       ->check(CLI::IsMember({"nn", "eigen"}));
+  run_cmd->add_flag("--spg-angular-budget", run.spg_angular_budget,
+                    "record every SPG part's angular-momentum budget each cycle and report the "
+                    "scheme's own contribution (the gather's first-moment defect, theory.md) at "
+                    "the end");
   run_cmd
       ->add_option("--fixed-step", run.fixed_step,
                    "probe: take this step every cycle whatever the stable-step estimate, add no "

@@ -29,6 +29,7 @@
 #include "solver/compile.hpp"
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
+#include "solver/spg/angular_budget.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::cli {
@@ -124,6 +125,30 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                    ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
                    : std::string("off"),
                stress_update_name(st.objective));
+  }
+}
+
+// --spg-angular-budget: the scheme's own contribution to each part's angular momentum.
+void print_angular_budgets(std::ostream& out, const solver::State& s,
+                           const std::vector<solver::spg::AngularBudget>& budgets) {
+  for (std::size_t k = 0; k < budgets.size(); ++k) {
+    const solver::spg::AngularBudget& b = budgets[k];
+    if (!b.started) continue;
+    const solver::Vec3 dl = b.last - b.first, defect = b.defect();
+    fmt::print(
+        out,
+        "  SPG part {}: angular momentum (about the origin) changed by ({:.4e}, {:.4e}, "
+        "{:.4e}); the moment impulse of the forces on its particles was ({:.4e}, {:.4e}, "
+        "{:.4e}); the scheme's own part A + B - C (theory.md, Angular momentum) "
+        "({:.4e}, {:.4e}, {:.4e}): {:.3e} of the forces' moment impulse, {:.3e} of the initial "
+        "sum m|x - x_c||u| {:.4e}{}\n",
+        s.parts[static_cast<std::size_t>(s.spg[k].part)].id, dl.x(), dl.y(), dl.z(), b.sum_c.x(),
+        b.sum_c.y(), b.sum_c.z(), defect.x(), defect.y(), defect.z(),
+        b.sum_c.norm() > 0.0 ? defect.norm() / b.sum_c.norm() : 0.0,
+        b.scale > 0.0 ? defect.norm() / b.scale : 0.0, b.scale,
+        b.pinned ? " (pinned particles: constraint and coupling impulses are not in the "
+                   "forces)"
+                 : "");
   }
 }
 
@@ -384,6 +409,14 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
       outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
     });
   };
+  std::vector<solver::spg::AngularBudget> budgets;
+  if (options.spg_angular_budget) {
+    budgets.resize(state->spg.size());
+    hooks.velocities_advanced = [&](const solver::State& s, const solver::StepTimes& t) {
+      for (std::size_t k = 0; k < budgets.size(); ++k)
+        budgets[k].record(s, s.spg[k], t.step, t.mean);
+    };
+  }
   hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
   hooks.progress = [&](const solver::State& s) {
     progress.update(s);
@@ -452,6 +485,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                1e-6 * result.particle_cycles / result.wall_seconds);
   }
   print_spg_summary(summary, *state);
+  print_angular_budgets(summary, *state, budgets);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())
     fmt::print(summary,
                "  continue with: mcdyna run {} --out {} --restart {} (and the same options)\n",

@@ -25,6 +25,9 @@ struct RunOptions {
   /// --spg-step: "nn" (nearest-neighbour length) or "eigen" (stiffness length scaled to the
   /// largest eigenvalue by power iteration); empty: spg::default_step_estimate
   std::string spg_step;
+  /// --spg-angular-budget: record each SPG part's angular-momentum budget every cycle and report
+  /// it at the end (spg/angular_budget.hpp; costs about one gather per particle and cycle)
+  bool spg_angular_budget = false;
   /// --fixed-step: every cycle takes this step, no mass scaling, no restart dumps (a probe for
   /// the true critical step; not part of the dump fingerprint so it can start from any dump)
   double fixed_step = 0.0;

@@ -268,6 +268,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
       result.message = fmt::format("non-finite velocity at node {} at t = {:.6e} (cycle {})",
                                    s.nodes.ids[static_cast<std::size_t>(bad)], s.time, s.cycle);
     }
+    if (hooks.velocities_advanced && bad < 0) hooks.velocities_advanced(s, t);
     if (write || bad >= 0) {
       if (hooks.write) hooks.write(s, velocity_before, stop || bad >= 0);
       clock.charge(PhaseTimes::output);

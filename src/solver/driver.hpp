@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -74,6 +75,9 @@ struct RunHooks {
   /// use both, see solver/energy.hpp). `final` is set for the last state of the run (normal end,
   /// interruption or error stop).
   std::function<void(const State&, const Eigen::Matrix3Xd& previous, bool final)> write;
+  /// Called every cycle once the velocities have advanced to n+1/2 (constraints applied), before
+  /// the positions move: the state holds x^n, f^n and v^{n+1/2} (spg/angular_budget.hpp).
+  std::function<void(const State&, const StepTimes&)> velocities_advanced;
   /// Polled every cycle (signals).
   std::function<bool()> stop_requested;
   /// Called every cycle after the step (progress display decides how often to print).

@@ -1,0 +1,49 @@
+#include "solver/spg/angular_budget.hpp"
+
+namespace mcdyna::solver::spg {
+
+void AngularBudget::record(const State& s, const Domain& d, double position_step,
+                           double velocity_step) {
+  Vec3 l = Vec3::Zero(), a = Vec3::Zero(), b = Vec3::Zero(), c = Vec3::Zero();
+  Vec3 centre = Vec3::Zero();
+  double mass = 0.0;
+  for (Index j = 0; j < d.count(); ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (d.pinned[jj]) pinned = true;
+    const Index node = d.nodes[jj];
+    const Vec3 x = s.nodes.position.col(node);
+    const Vec3 f = s.nodes.force.col(node);
+    // A pinned particle keeps a plain velocity: its force is taken at its own position (its
+    // gather may be 0/0 where it reaches no smoothed row, as on the FDS plate's FE coupling).
+    Vec3 xbar = d.pinned[jj] ? x : Vec3::Zero();
+    for (Index t = d.transpose.offsets[jj]; !d.pinned[jj] && t < d.transpose.offsets[jj + 1]; ++t) {
+      const auto tt = static_cast<std::size_t>(t);
+      const Index k = d.transpose.rows[tt];
+      xbar += d.transpose.gather[tt] * s.nodes.position.col(d.nodes[static_cast<std::size_t>(k)]);
+    }
+    l += d.mass[jj] * x.cross(d.unsmoothed.col(j));
+    a += position_step * d.mass[jj] * s.nodes.velocity.col(node).cross(d.unsmoothed.col(j));
+    b += velocity_step * xbar.cross(f);
+    c += velocity_step * x.cross(f);
+    centre += d.mass[jj] * x;
+    mass += d.mass[jj];
+  }
+  if (started) {
+    sum_a += pending_a;
+    sum_b += b;
+    sum_c += c;
+  } else {
+    first = l;
+    centre /= mass;
+    for (Index j = 0; j < d.count(); ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      scale += d.mass[jj] * (s.nodes.position.col(d.nodes[jj]) - centre).norm() *
+               d.unsmoothed.col(j).norm();
+    }
+    started = true;
+  }
+  pending_a = a;
+  last = l;
+}
+
+}  // namespace mcdyna::solver::spg
