@@ -35,11 +35,10 @@ OutputLock::OutputLock(const std::filesystem::path& dir) {
     fd_ = -1;
     return;
   }
-  // Who holds it, for the message of a run that is refused (advisory: the lock is the flock).
+  // Who holds it, for the message of a run that is refused. Best effort: if this write fails the
+  // lock holds all the same, and only a refused run's message lacks the process id.
   const std::string me = fmt::format("{}\n", ::getpid());
-  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, me.data(), me.size(), 0) < 0) {
-    // The lock holds all the same; only the refused run's message loses the process id.
-  }
+  if (::ftruncate(fd_, 0) == 0) (void)!::pwrite(fd_, me.data(), me.size(), 0);
 }
 
 OutputLock::~OutputLock() {

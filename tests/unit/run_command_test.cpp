@@ -480,10 +480,6 @@ TEST_CASE("eroded elements vanish from the forces and the d3plot states, their m
   CHECK(last->GetNumberOfPoints() == first->GetNumberOfPoints());
 }
 
-}  // namespace mcdyna::test
-
-namespace mcdyna::test {
-
 TEST_CASE("--spg-angular-budget reports the scheme's own angular momentum (Taylor bar: none)") {
   // The coarse SPG Taylor bar hits its wall straight, and its mesh is mirror-symmetric: the
   // gather's first-moment defects (theory.md, Angular momentum) cancel over the bar, so the

@@ -1,5 +1,7 @@
 #include "solver/spg/angular_budget.hpp"
 
+#include "solver/spg/spg_solver.hpp"
+
 namespace mcdyna::solver::spg {
 
 void AngularBudget::record(const State& s, const Domain& d, double position_step,
@@ -7,20 +9,16 @@ void AngularBudget::record(const State& s, const Domain& d, double position_step
   Vec3 l = Vec3::Zero(), a = Vec3::Zero(), b = Vec3::Zero(), c = Vec3::Zero();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
+  const Eigen::Matrix3Xd positions = particle_positions(s, d);
   for (Index j = 0; j < d.count(); ++j) {
     const auto jj = static_cast<std::size_t>(j);
     if (d.pinned[jj]) pinned = true;
     const Index node = d.nodes[jj];
-    const Vec3 x = s.nodes.position.col(node);
+    const Vec3 x = positions.col(j);
     const Vec3 f = s.nodes.force.col(node);
     // A pinned particle keeps a plain velocity: its force is taken at its own position (its
     // gather may be 0/0 where it reaches no smoothed row, as on the FDS plate's FE coupling).
-    Vec3 xbar = d.pinned[jj] ? x : Vec3::Zero();
-    for (Index t = d.transpose.offsets[jj]; !d.pinned[jj] && t < d.transpose.offsets[jj + 1]; ++t) {
-      const auto tt = static_cast<std::size_t>(t);
-      const Index k = d.transpose.rows[tt];
-      xbar += d.transpose.gather[tt] * s.nodes.position.col(d.nodes[static_cast<std::size_t>(k)]);
-    }
+    const Vec3 xbar = d.pinned[jj] ? x : gathered(d, j, positions);
     l += d.mass[jj] * x.cross(d.unsmoothed.col(j));
     a += position_step * d.mass[jj] * s.nodes.velocity.col(node).cross(d.unsmoothed.col(j));
     b += velocity_step * xbar.cross(f);
@@ -37,8 +35,7 @@ void AngularBudget::record(const State& s, const Domain& d, double position_step
     centre /= mass;
     for (Index j = 0; j < d.count(); ++j) {
       const auto jj = static_cast<std::size_t>(j);
-      scale += d.mass[jj] * (s.nodes.position.col(d.nodes[jj]) - centre).norm() *
-               d.unsmoothed.col(j).norm();
+      scale += d.mass[jj] * (positions.col(j) - centre).norm() * d.unsmoothed.col(j).norm();
     }
     started = true;
   }

@@ -274,4 +274,17 @@ struct Domain {
   [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
 };
 
+/// Eq. 14's gather at particle i of a field held per particle (3 x count): sum over the rows
+/// that hold i of psi_i(X_K) field_K. The smoothing (Eq. 13), the power iteration and the
+/// angular-momentum budget share it; a pinned particle keeps its own value there, not this.
+inline Eigen::Vector3d gathered(const Domain& d, Index i, const Eigen::Matrix3Xd& field) {
+  const auto ii = static_cast<std::size_t>(i);
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();
+  for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    const auto tt = static_cast<std::size_t>(t);
+    u += d.transpose.gather[tt] * field.col(d.transpose.rows[tt]);
+  }
+  return u;
+}
+
 }  // namespace mcdyna::solver::spg

@@ -101,12 +101,7 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
       out.col(i) = hat.col(i);
       continue;
     }
-    Vec3 u = Vec3::Zero();
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const auto tt = static_cast<std::size_t>(t);
-      u += d.transpose.gather[tt] * hat.col(d.transpose.rows[tt]);
-    }
-    out.col(i) = u;
+    out.col(i) = gathered(d, i, hat);
   }
 }
 

@@ -144,11 +144,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     const auto ii = static_cast<std::size_t>(i);
     Vec3 u = source.col(i);
     if (!d.pinned[ii] && mc) {
-      u.setZero();
-      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-        const auto tt = static_cast<std::size_t>(t);
-        u += d.transpose.gather[tt] * source.col(d.transpose.rows[tt]);
-      }
+      u = gathered(d, i, source);
     } else if (!d.pinned[ii] && mode == Stabilization::direct) {
       u.setZero();
       for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
