@@ -342,9 +342,10 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     if (renewed(i) && gradient_norm[ii] > 0.0)
       d.length[ii] = std::min(d.length[ii], d.gradient_length_scale / gradient_norm[ii]);
   }
-  if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(d);
   if (d.settings.stabilization == Stabilization::strain_gradient)
     stabilization_moments(s, d, all ? std::vector<std::uint8_t>{} : rows);
+  // After the moments: ITB 1's lengths include its stabilisation's stiffness.
+  if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(d);
   smooth_masses(s, d);
   if (d.renewals == 0) d.step_bound.initial_critical = calibrate_stiffness_length(s, d);
   d.steps_since_renewal = 0;

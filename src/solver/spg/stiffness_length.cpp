@@ -29,6 +29,8 @@
 // and Gershgorin lengths scaled once at the start blew the plate up at 9.5 us, when the critical
 // step under the tip fell from 3.1e-8 to 1.9e-8 s within 30 cycles.
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +67,61 @@ void rescale(StepBound& b, double factor) {
   for (double& l : b.lengths)
     l *= factor;
 }
+
+// |psi|, the Frobenius norm of the symmetric 3 x 3 second derivatives stored as xx yy zz xy yz zx.
+double hessian_norm(const Eigen::Matrix<double, 6, 1>& psi) {
+  return std::sqrt(psi.head<3>().squaredNorm() + 2.0 * psi.tail<3>().squaredNorm());
+}
+
+// ITB 1's stabilisation (gradient_stabilization.cpp) in the same bound. Linearised, row J's
+// stabilisation stiffness between particles K and L is V0_J sum_ab M_ab psi_a(K) C psi_b(L)
+// with psi_a(K) the row of K's second derivatives psi^ab_K(X_J) (the row's own entry carrying
+// minus their sum), so |K^J_KL| <= V0_J lambda_max(M_J) rho c^2 |psi_K| |psi_L| and the
+// stiffness particle I meets through the rows it belongs to is bounded by
+//   sum_J m_J (V0_J / V_J) lambda_max(M_J) |psi_I(X_J)| P_J,  P_J = sum_K |psi_K(X_J)|.
+// Without it the one scale of the lengths is set by the rows the stabilisation makes stiffest
+// (renewed surface rows under the screw), every particle's step falls with it, and DT2MS adds
+// mass everywhere: measured on FDS h 0.15, 59 x the plate's mass (manual/verification.md).
+void add_stabilization_stiffness(const Domain& d, std::vector<double>& stiffness) {
+  const Index n = d.count();
+  const GradientStabilization& g = d.gradient;
+  if (d.shape.hessian.cols() != d.shape.gradient.cols() || g.moment.cols() != n) return;
+  std::vector<double> row_weight(static_cast<std::size_t>(n), 0.0);  // m V0/V lambda_max(M) P
+  std::vector<double> own(static_cast<std::size_t>(n), 0.0);         // |psi_J(X_J)|
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (d.isolated[jj] || d.debris[jj]) continue;
+    Eigen::Matrix<double, 6, 1> own_psi = Eigen::Matrix<double, 6, 1>::Zero();
+    double sum = 0.0;
+    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+      if (d.list.neighbours[static_cast<std::size_t>(p)] == j) continue;
+      own_psi += d.shape.hessian.col(p);
+      sum += hessian_norm(d.shape.hessian.col(p));
+    }
+    own[jj] = hessian_norm(own_psi);
+    const double* mo = g.moment.col(j).data();
+    Mat3 m;
+    m << mo[0], mo[3], mo[5], mo[3], mo[1], mo[4], mo[5], mo[4], mo[2];
+    Eigen::SelfAdjointEigenSolver<Mat3> eig;
+    eig.computeDirect(m, Eigen::EigenvaluesOnly);
+    const double physical = d.mass[jj] - d.added_mass[jj];
+    row_weight[jj] = physical * d.renewal_volume[jj] / d.volume[jj] *
+                     std::max(eig.eigenvalues().maxCoeff(), 0.0) * (sum + own[jj]);
+  }
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    double sum = own[ii] * row_weight[ii];
+    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+      if (j == i) continue;
+      const auto pair = d.transpose.pairs[static_cast<std::size_t>(t)];
+      sum += hessian_norm(d.shape.hessian.col(pair)) * row_weight[static_cast<std::size_t>(j)];
+    }
+    stiffness[ii] += sum;
+  }
+}
 }  // namespace
 
 void update_stiffness_length(Domain& d) {
@@ -78,19 +135,26 @@ void update_stiffness_length(Domain& d) {
       sum += d.shape.gradient.col(p).norm();
     row_gradient[static_cast<std::size_t>(j)] = sum;
   }
-  d.step_bound.lengths.resize(static_cast<std::size_t>(n));
+  std::vector<double> stiffness(static_cast<std::size_t>(n), 0.0);  // sum_J m_J |g_IJ| G_J
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    double stiffness = 0.0;  // sum_J m_J |g_IJ| G_J, physical masses
+    double sum = 0.0;  // physical masses
     for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
       const auto j = static_cast<std::size_t>(d.transpose.rows[static_cast<std::size_t>(t)]);
-      stiffness +=
-          (d.mass[j] - d.added_mass[j]) * d.transpose.gradient.col(t).norm() * row_gradient[j];
+      sum += (d.mass[j] - d.added_mass[j]) * d.transpose.gradient.col(t).norm() * row_gradient[j];
     }
+    stiffness[ii] = sum;
+  }
+  if (d.settings.stabilization == Stabilization::strain_gradient)
+    add_stabilization_stiffness(d, stiffness);
+  d.step_bound.lengths.resize(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
     const double own = d.mass[ii] - d.added_mass[ii];
-    d.step_bound.lengths[ii] = stiffness > 0.0 ? d.step_bound.scale * std::sqrt(own / stiffness)
-                                               : std::numeric_limits<double>::infinity();
+    d.step_bound.lengths[ii] = stiffness[ii] > 0.0
+                                   ? d.step_bound.scale * std::sqrt(own / stiffness[ii])
+                                   : std::numeric_limits<double>::infinity();
   }
 }
 
