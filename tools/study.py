@@ -7,10 +7,12 @@ usage: tools/study.py [--quick] [--out results/study] [--threads N] [--only FAMI
                       [--cases NAME ...] [--reuse] [--records DIR] [--no-run]
 
 Families, methods and references (benchmarks.md, paper §4):
-  elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none); h 0.2 / 0.1 (quick) + 0.05
+  elastic_wave  FE hex, MC-SPG, plain DNI (--spg-stabilization none), SPG ITB 1
+                (--spg-stabilization spg); h 0.2 / 0.1 (quick) + 0.05
                 error: relative L2 of the free-end displacement against the analytic solution
                 (also the mid-length stress error)
-  taylor_bar    FE hex, MC-SPG with MSC 1; coarse (quick) + medium, fine; MC-SPG MSC 0 coarse
+  taylor_bar    FE hex, MC-SPG with MSC 1; coarse (quick) + medium, fine; MC-SPG MSC 0 coarse;
+                SPG ITB 1 (MSC 0, its own stabilisation) coarse and medium
                 error: final length against Wilkins & Guinan's 16.51 mm (also the footprint
                 diameter against their 16.7 mm, and the length against the FE codes' 15.95 mm)
   fds           MC-SPG and FE with erosion; h 0.3 (quick) + 0.15; MC-SPG h 0.125 and 0.10
@@ -20,6 +22,10 @@ Families, methods and references (benchmarks.md, paper §4):
                 when the study has no finer run than h 0.3 (decks/fds/fds_h0.15.k run through the
                 whole schedule, stage 2 of 4.4 mm, plunge 0 to 8.95 mm, 2026-11-27;
                 manual/verification.md)
+                The paper's comparison (Fig. 11, Table 2): SPG ITB 1 beside MC-SPG with the same
+                (eigenvalue) step estimate on the same deck, at h 0.3 (the shipped deck, no mass
+                scaling) and h 0.15 with the fast recipe (DT2MS 1e-8 s, OSU 1); the table then
+                gives the cost ratio SPG : MC-SPG of each pair (paper: 2.39 at h 0.125)
 
 Writes OUT/study.csv (one row per run, one header row), the same as a Markdown table
 (OUT/study.md, for manual/verification.md), OUT/error_vs_time.png (log-log, one
@@ -58,6 +64,7 @@ MCDYNA = os.environ.get("MCDYNA", os.path.join(ROOT, "build", "mcdyna"))
 FDS_REFERENCE = os.path.join(ROOT, "decks", "fds", "reference_force_h0.15.csv")
 TAYLOR_EXPERIMENT_LENGTH, TAYLOR_EXPERIMENT_DIAMETER, TAYLOR_FE_LENGTH = 16.51, 16.7, 15.95
 QUICK_STAGE2 = 2.1  # mm of stage 2 in the quick study's FDS runs
+ITB1 = ["--spg-stabilization", "spg"]  # the original SPG stabilisation (eigenvalue step)
 
 
 @dataclass
@@ -84,6 +91,9 @@ def cases():
         out.append(Case("elastic_wave", "plain DNI", f"h {h}",
                         f"decks/elastic_wave/rod_spg_h{h}.k", quick,
                         flags=["--spg-stabilization", "none"]))
+        # ITB 1 at h 0.1 costs 70 s of one core (3.3 x MC-SPG): the full study only.
+        out.append(Case("elastic_wave", "SPG ITB 1", f"h {h}",
+                        f"decks/elastic_wave/rod_spg_h{h}.k", h == "0.2", flags=ITB1))
     # MC-SPG Taylor bars: MSC 1 (low-energy-mode control) at every resolution; the paper's MSC 0
     # alone at coarse only, in the full study: the medium bar with MSC 0 pairs its axis layers
     # and its step falls to 4e-10 s at 38 us (manual/verification.md).
@@ -93,6 +103,9 @@ def cases():
                         quick, flags=["--spg-mode-control", "0.5"]))
     out.append(Case("taylor_bar", "MC-SPG MSC 0", "coarse", "decks/taylor_bar/taylor_spg_coarse.k",
                     False))
+    for r in ("coarse", "medium"):
+        out.append(Case("taylor_bar", "SPG ITB 1", r, f"decks/taylor_bar/taylor_spg_{r}.k", False,
+                        flags=ITB1))
     # FDS: h 0.15 carries DT2MS 2e-9 s, h 0.125 and 0.10 the fast recipe (DT2MS 1e-8 s, OSU 1,
     # the eigen step; decks/generate.sh); the finest finished one is the full study's reference.
     # The quick study's FDS runs stop 2.1 mm into stage 2 (plunge 6.65 mm, a quarter of the cost
@@ -107,6 +120,12 @@ def cases():
         out.append(Case("fds", "FE + erosion", f"h {h}", f"{{out}}/decks/fds_fe_h{h}.k", False,
                         generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", "20",
                                   "--fe-erosion"]))
+    # The paper's pairs: ITB 1 and MC-SPG, both with the eigenvalue step, on the same deck.
+    fast = ["--time-scale", "20", "--mass-scaling", "1e-8", "--osu", "1"]
+    for method, flags in (("SPG ITB 1", ITB1), ("MC-SPG eigen", ["--spg-step", "eigen"])):
+        out.append(Case("fds", method, "h 0.3", "decks/fds/fds_h0.3.k", False, flags=flags))
+        out.append(Case("fds", method, "h 0.15 DT2MS 1e-8", "{out}/decks/fds_h0.15_fast.k", False,
+                        flags=flags, generate=["tools/decks/fds.py", "0.15", "{deck}"] + fast))
     quick_stage2 = ["--time-scale", "20", "--stage2", str(QUICK_STAGE2)]
     out.append(Case("fds", "MC-SPG", "h 0.3", "{out}/decks/fds_h0.3_quick.k", True,
                     generate=["tools/decks/fds.py", "0.3", "{deck}"] + quick_stage2))
@@ -356,6 +375,30 @@ def write_markdown(rows, path):
                     f"{work / r['core_s'] / 1e6:.2f} M | {r['error']:.4f} | {other} |\n")
 
 
+# The MC-SPG run an ITB 1 run is paired with for the cost ratio, in order of preference: the same
+# step estimate (eigen) first, then the scheme alone (MSC 0), then the family's MC-SPG run.
+PARTNERS = ("MC-SPG eigen", "MC-SPG MSC 0", "MC-SPG")
+
+
+def cost_ratios(rows):
+    """The paper's Table 2 figure for every ITB 1 run with an MC-SPG partner at the same
+    resolution: core time and cycles of SPG : MC-SPG. Lines of text."""
+    lines = []
+    for r in rows:
+        if r["method"] != "SPG ITB 1":
+            continue
+        for partner in PARTNERS:
+            b = next((q for q in rows if q["family"] == r["family"] and q["method"] == partner
+                      and q["resolution"] == r["resolution"]), None)
+            if b:
+                lines.append(f"cost ratio SPG ITB 1 : {partner}, {r['family'].replace('_', ' ')} "
+                             f"{r['resolution']}: core time {r['core_s'] / b['core_s']:.2f} "
+                             f"({r['core_s']:,.1f} / {b['core_s']:,.1f} s), cycles "
+                             f"{r['cycles'] / b['cycles']:.2f} ({r['cycles']:,} / {b['cycles']:,})")
+                break
+    return lines
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help="the CI-length subset (~8 min)")
@@ -434,7 +477,13 @@ def main():
               f"{r['steps_per_s'] / 1e6:>12.3f}M {r['error']:>9.4f}")
     if any(c.family == "fds" for c, _ in finished):
         print(f"fds reference: {os.path.relpath(fds_reference, ROOT)}")
+    ratios = cost_ratios(rows)
+    for line in ratios:
+        print(line)
     write_markdown(rows, os.path.join(a.out, "study.md"))
+    if ratios:
+        with open(os.path.join(a.out, "study.md"), "a") as f:
+            f.write("\n" + "".join(f"- {line}\n" for line in ratios))
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
     history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")

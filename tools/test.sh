@@ -17,7 +17,7 @@ git ls-files 'src/*.cpp' 'src/*.hpp' 'tests/*.cpp' 'tests/*.hpp' | xargs clang-f
 echo "== tests (Release)"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
-echo "== study smoke: tools/study.py --quick --only elastic_wave (the six quick elastic-wave runs)"
+echo "== study smoke: tools/study.py --quick --only elastic_wave (the seven quick elastic-wave runs, ITB 1 at h 0.2 among them)"
 rm -rf build/study_smoke
 /usr/bin/python3 tools/study.py --quick --only elastic_wave --threads "$jobs" --out build/study_smoke
 # The same table again from the runs' records alone (run directories gone), as a study assembled
