@@ -31,7 +31,7 @@ constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 136, 240,
-                                                          1392, 1952, 96, 136, 360, 328, 144, 160},
+                                                          1392, 1928, 96, 112, 360, 328, 144, 160},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -152,7 +152,7 @@ void fields(Ar& ar, SpgTimes& t) {
 
 template <class Ar>
 void fields(Ar& ar, StepBound& b) {
-  ar(b.lengths, b.scale, b.local, b.initial_critical, b.critical, b.smallest_critical,
+  ar(b.lengths, b.scale, b.initial_critical, b.critical, b.smallest_critical,
      b.smallest_critical_particle, b.smallest_critical_time, b.mode, b.pass_step, b.physical,
      b.physical_particle);
 }

@@ -130,10 +130,7 @@ struct StepBound {
   /// functions (Gershgorin), at the renewal; the step uses it times the smallest stretch since.
   /// Includes `scale`.
   std::vector<double> lengths;
-  double scale = 1.0;  ///< factor of `lengths` from the eigenvalue
-  /// Per particle, a factor (<= 1) of its length where a mode was found that the lengths did
-  /// not put first (ITB 1: stiffness_length.cpp); kept across renewals. Empty: all 1.
-  std::vector<double> local;
+  double scale = 1.0;              ///< factor of `lengths` from the eigenvalue
   double initial_critical = 0.0;   ///< 2 / omega_max of the initial arrangement (0: none)
   double critical = 0.0;           ///< 2 / omega_max at the last pass (one iteration)
   double smallest_critical = 0.0;  ///< the smallest of the run, where the mode was, when

@@ -62,45 +62,10 @@ constexpr int kRecalibrationInterval = 2;
 constexpr int kRenewalIterations = 4;
 constexpr double kLargestRecalibrationGrowth = 1.005;
 
-// The share of a mode's kinetic energy (mass product) above which a particle is taken to hold it.
-constexpr double kModeShare = 0.1;
-
 void rescale(StepBound& b, double factor) {
   b.scale *= factor;
   for (double& l : b.lengths)
     l *= factor;
-}
-
-// Where the lengths did not put the mode first (the step it allows, `allowed`, is shorter than
-// the pass's shortest step), only the particles that hold the mode (mass-product share at least
-// kModeShare of the largest) get shorter lengths, each to the allowed step with the mass and
-// stretch it has now. One scale for all would shorten every particle's step instead, and with
-// DT2MS every particle would take mass for a mode that lives in a few rows: on FDS h 0.15 with
-// ITB 1, whose stabilisation the Gershgorin lengths rank only roughly (surface rows, the FE
-// coupling ring), a particle ring at r 3.0-3.5 mm and the plate at r 1-2 mm took 0.7-1.2 x their
-// mass by 61 us while the screw was at r < 1 mm (manual/verification.md). The shortened
-// lengths stay shortened across renewals (StepBound::local).
-void shorten_where_the_mode_is(const State& s, Domain& d, const Eigen::Matrix3Xd& mode,
-                               double allowed) {
-  const Index n = d.count();
-  StepBound& b = d.step_bound;
-  if (b.local.size() != static_cast<std::size_t>(n))
-    b.local.assign(static_cast<std::size_t>(n), 1.0);
-  std::vector<double> share(static_cast<std::size_t>(n), 0.0);
-  double largest = 0.0;
-  for (Index i = 0; i < n; ++i) {
-    const auto node = static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(i)]);
-    share[static_cast<std::size_t>(i)] =
-        (s.nodes.mass[node] + s.nodes.added_mass[node]) * mode.col(i).squaredNorm();
-    largest = std::max(largest, share[static_cast<std::size_t>(i)]);
-  }
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
-    if (share[ii] < kModeShare * largest || !(d.step[ii] > allowed)) continue;
-    const double factor = allowed / d.step[ii];
-    b.lengths[ii] *= factor;
-    b.local[ii] *= factor;
-  }
 }
 
 // |psi|, the Frobenius norm of the symmetric 3 x 3 second derivatives stored as xx yy zz xy yz zx.
@@ -184,13 +149,11 @@ void update_stiffness_length(Domain& d) {
   if (d.settings.stabilization == Stabilization::strain_gradient)
     add_stabilization_stiffness(d, stiffness);
   d.step_bound.lengths.resize(static_cast<std::size_t>(n));
-  const std::vector<double>& local = d.step_bound.local;
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     const double own = d.mass[ii] - d.added_mass[ii];
-    const double factor = local.empty() ? 1.0 : local[ii];
     d.step_bound.lengths[ii] = stiffness[ii] > 0.0
-                                   ? d.step_bound.scale * factor * std::sqrt(own / stiffness[ii])
+                                   ? d.step_bound.scale * std::sqrt(own / stiffness[ii])
                                    : std::numeric_limits<double>::infinity();
   }
 }
@@ -218,20 +181,12 @@ void recalibrate_stiffness_length(const State& s, Domain& d,
   const double ratio =
       std::min(critical * damped / d.step_bound.pass_step, kLargestRecalibrationGrowth);
   d.step_bound.critical = critical;
-  // Without MC smoothing the mode is known in the product where A is self-adjoint (frequency.cpp)
-  // and its particles are the ones to shorten; MC-SPG keeps the one scale (its Gershgorin
-  // lengths follow its stiffness: on FDS h 0.15 with DT2MS its mass went to the rows under the
-  // screw).
-  const bool localise = d.settings.stabilization != Stabilization::momentum_consistent;
   if (d.step_bound.smallest_critical == 0.0 || critical < d.step_bound.smallest_critical) {
     d.step_bound.smallest_critical = critical;
     d.step_bound.smallest_critical_time = s.time;
     d.step_bound.smallest_critical_particle = f.particle;
   }
-  if (localise && ratio < 1.0)
-    shorten_where_the_mode_is(s, d, d.step_bound.mode, critical * damped);
-  else
-    rescale(d.step_bound, ratio);
+  rescale(d.step_bound, ratio);
 }
 
 double calibrate_stiffness_length(const State& s, Domain& d) {
