@@ -423,7 +423,7 @@ namespace mcdyna::test {
 // A = M^-1 K is self-adjoint in the mass product only, and |A x| / |x| may exceed omega_max^2 by
 // up to the square root of the mass ratio once DT2MS has made masses differ: on FDS h 0.3 (ITB 1,
 // DT2MS 1e-8, restarted at cycle 60,000) the |A x| estimate put 2 / omega at 4.98e-9 s for a few
-// cycles between checks at 1.6e-8 s and 5.7 x the plate's mass went to every particle; with the
+// cycles between checks at 1.6e-8 s and the added mass grew to 11 x the plate's; with the
 // Rayleigh quotient the same restart kept 1.22e-8 s or more and added nothing new. Here, a block
 // whose masses differ 30 x, local starts as after a renewal, 1 to 4 iterations: every estimate is
 // a lower bound of the converged one (on this regular block |A x| does not overshoot either; the
