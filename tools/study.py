@@ -353,9 +353,9 @@ OTHER_FIGURES = {
 }
 
 
-def write_markdown(rows, path):
+def write_markdown(rows, path, ratios=()):
     """The table for manual/verification.md: one row per run; the cost per core second so runs
-    made on 1 and 2 threads (or continued on another count) compare."""
+    made on 1 and 2 threads (or continued on another count) compare; then the cost ratios."""
     with open(path, "w") as f:
         f.write("| family | method | resolution | particles | elements | cycles | wall s "
                 "(threads) | core s | (p+e)-steps per core-s | error | other figures |\n")
@@ -373,6 +373,8 @@ def write_markdown(rows, path):
                     f"{r['particles']:,} | {r['elements']:,} | {r['cycles']:,} | "
                     f"{r['wall_s']:,.1f} ({threads}) | {r['core_s']:,.1f} | "
                     f"{work / r['core_s'] / 1e6:.2f} M | {r['error']:.4f} | {other} |\n")
+        if ratios:
+            f.write("\n" + "".join(f"- {line}\n" for line in ratios))
 
 
 # The MC-SPG run an ITB 1 run is paired with for the cost ratio, in order of preference: the same
@@ -481,10 +483,7 @@ def main():
     ratios = cost_ratios(rows)
     for line in ratios:
         print(line)
-    write_markdown(rows, os.path.join(a.out, "study.md"))
-    if ratios:
-        with open(os.path.join(a.out, "study.md"), "a") as f:
-            f.write("\n" + "".join(f"- {line}\n" for line in ratios))
+    write_markdown(rows, os.path.join(a.out, "study.md"), ratios)
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
     history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")

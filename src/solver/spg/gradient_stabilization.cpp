@@ -56,13 +56,7 @@ bool active(const Domain& d, Index j) {
   return d.isolated[jj] == 0 && d.debris[jj] == 0;
 }
 
-Mat3 tensor(const double* s) {
-  Mat3 t;
-  t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-  return t;
-}
-
-// The inverse of tensor(): a symmetric t as xx yy zz xy yz zx into `out`.
+// The inverse of symmetric_tensor(): a symmetric t as xx yy zz xy yz zx into `out`.
 void store_symmetric(const Mat3& t, double* out) {
   const double comps[6] = {t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0)};
   std::copy(comps, comps + 6, out);
@@ -161,7 +155,7 @@ void store_work_stresses(const double* sigma, double volume, const Mat3& f, cons
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& q, Index j) {
   Mat3 curv = Mat3::Zero();
   for (int a = 0; a < 3; ++a) {
-    const Mat3 t = tensor(sigma + 6 * a);
+    const Mat3 t = symmetric_tensor(sigma + 6 * a);
     Eigen::Map<Mat3>(p.col(j).data() + 9 * a) = volume * f * t;
     if (g != nullptr) curv.noalias() += volume * g[a] * t;
   }
@@ -283,7 +277,7 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
     const double ratio = 1.0 / f.determinant();  // V0 / V0'
     Mat3 pushed[3];
     for (int a = 0; a < 3; ++a)
-      pushed[a] = ratio * f * tensor(g.stress.col(j).data() + 6 * a) * f.transpose();
+      pushed[a] = ratio * f * symmetric_tensor(g.stress.col(j).data() + 6 * a) * f.transpose();
     for (int dd = 0; dd < 3; ++dd) {
       store_symmetric(f(dd, 0) * pushed[0] + f(dd, 1) * pushed[1] + f(dd, 2) * pushed[2],
                       g.stress.col(j).data() + 6 * dd);

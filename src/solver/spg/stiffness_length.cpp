@@ -100,11 +100,8 @@ void add_stabilization_stiffness(const Domain& d, std::vector<double>& stiffness
       sum += hessian_norm(d.shape.hessian.col(p));
     }
     own[jj] = hessian_norm(own_psi);
-    const double* mo = g.moment.col(j).data();
-    Mat3 m;
-    m << mo[0], mo[3], mo[5], mo[3], mo[1], mo[4], mo[5], mo[4], mo[2];
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
-    eig.computeDirect(m, Eigen::EigenvaluesOnly);
+    eig.computeDirect(symmetric_tensor(g.moment.col(j).data()), Eigen::EigenvaluesOnly);
     const double physical = d.mass[jj] - d.added_mass[jj];
     row_weight[jj] = physical * d.renewal_volume[jj] / d.volume[jj] *
                      std::max(eig.eigenvalues().maxCoeff(), 0.0) * (sum + own[jj]);
