@@ -42,6 +42,37 @@ extern "C" void on_stop_signal(int sig) {
   g_stop_signal = sig;
 }
 
+// SIGINT / SIGTERM handlers for the whole of a run, set-up included, restored on return: a
+// signal during reading or compiling stops the run before any output exists, one during the
+// time loop stops it at the next cycle with a final state and whole files.
+class StopSignalGuard {
+ public:
+  StopSignalGuard() {
+    g_stop_signal = 0;
+    old_int_ = std::signal(SIGINT, on_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_stop_signal);
+  }
+  ~StopSignalGuard() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopSignalGuard(const StopSignalGuard&) = delete;
+  StopSignalGuard& operator=(const StopSignalGuard&) = delete;
+
+ private:
+  void (*old_int_)(int) = SIG_DFL;
+  void (*old_term_)(int) = SIG_DFL;
+};
+
+// Whether a stop signal came during set-up; if so says so on ERR.
+bool stopped_in_setup(const RunOptions& options, std::ostream& err) {
+  if (g_stop_signal == 0) return false;
+  fmt::print(err,
+             "mcdyna: interrupted by signal {} during set-up: {} not run, no outputs written\n",
+             static_cast<int>(g_stop_signal), options.deck.string());
+  return true;
+}
+
 const char* reason_text(solver::StopReason r) {
   switch (r) {
     case solver::StopReason::end_time:
@@ -247,8 +278,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
     return kRunUsage;
   }
+  const StopSignalGuard signals;
   std::ostringstream report;
   LoadedDeck d = load_deck(options.deck, report);
+  if (stopped_in_setup(options, err)) return kRunInterrupted;
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
   const bool blocked = d.unsupported_physics > 0 && !options.allow_unsupported;
   if (blocked) {
@@ -270,6 +303,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                compile_diags.error_count());
     return kRunDeckErrors;
   }
+  if (stopped_in_setup(options, err)) return kRunInterrupted;
   if (!options.spg_stabilization.empty()) {
     const solver::spg::Stabilization mode =
         options.spg_stabilization == "none"     ? solver::spg::Stabilization::none
@@ -378,9 +412,6 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   DumpSchedule dumps(d.built.model.outputs, dir);
   log.flush();  // the model summary is there to read while the run goes on
 
-  g_stop_signal = 0;
-  auto old_int = std::signal(SIGINT, on_stop_signal);
-  auto old_term = std::signal(SIGTERM, on_stop_signal);
   const double end_time = state->time_control.end_time;
   Progress progress(out, log, isatty(STDOUT_FILENO) != 0, options.quiet,
                     end_time > 0.0 ? std::min(1.0, state->time / end_time) : 0.0);
@@ -449,8 +480,6 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const solver::RunResult result = solver::run(*state, hooks, dump ? &dump->point : nullptr);
   progress.finish();
   if (step_log) checked([&] { step_log->flush(); });
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
 
   std::ostringstream summary;
   fmt::print(summary, "\n{} at t = {:.6e}, cycle {}\n",

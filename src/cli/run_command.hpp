@@ -43,7 +43,7 @@ enum RunExit : int {
   kRunDeckErrors = 1,
   kRunUsage = 2,         ///< a missing deck, an --out that cannot be a directory
   kRunUnstable = 4,      ///< stopped by NaN, negative volume or step collapse
-  kRunInterrupted = 5,   ///< SIGINT / SIGTERM: final state written, files closed
+  kRunInterrupted = 5,   ///< SIGINT / SIGTERM: final state written, files closed (none in set-up)
   kRunOutputFailed = 6,  ///< a write failed (disk full ...): stopped, the files on disk whole
 };
 

@@ -69,6 +69,8 @@ TEST_CASE("ITB 1 and 2 decks run the original SPG stabilisation, ITB 3 MC-SPG") 
         (itb == 3 ? spg::Stabilization::momentum_consistent : spg::Stabilization::strain_gradient));
     CHECK(loaded->has_message(
               "ITB = 2 (simplified fluid-particle approximation) runs as ITB = 1") == (itb == 2));
+    // The deck's DX 1.5 with MSC 0 draws the support note only where MC-SPG runs.
+    CHECK(loaded->has_message("MC-SPG with MSC = 0 and a support of DX = 1.5") == (itb == 3));
   }
 }
 
