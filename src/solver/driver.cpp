@@ -28,7 +28,10 @@ const char* PhaseTimes::name(int p) {
                                        "SPG shape functions",
                                        "SPG smoothing",
                                        "SPG stress",
+                                       "SPG stabilisation",
                                        "SPG forces",
+                                       "SPG bond failure",
+                                       "SPG step estimate",
                                        "contact"};
   return kNames[p];
 }
@@ -303,11 +306,13 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     if (hooks.progress) hooks.progress(s);
   }
   // The SPG work ran inside the element phase; show it split (neighbour search, shape
-  // functions, smoothing, stress, forces).
+  // functions, smoothing, stress, stabilisation, forces, bond failure, step estimate).
   for (const spg::Domain& d : s.spg) {
-    const double split[5] = {d.times.neighbours, d.times.shape_functions, d.times.smoothing,
-                             d.times.stress, d.times.force};
-    for (int k = 0; k < 5; ++k) {
+    constexpr int kSplit = PhaseTimes::spg_step_estimate - PhaseTimes::spg_neighbours + 1;
+    const double split[kSplit] = {d.times.neighbours, d.times.shape_functions, d.times.smoothing,
+                                  d.times.stress,     d.times.stabilization,   d.times.force,
+                                  d.times.bonds,      d.times.step_estimate};
+    for (int k = 0; k < kSplit; ++k) {
       result.phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
       result.phases.seconds[PhaseTimes::elements] -= split[k];
     }

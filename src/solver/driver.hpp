@@ -14,7 +14,7 @@ namespace mcdyna::solver {
 
 /// Wall-clock seconds per phase of the cycle.
 struct PhaseTimes {
-  static constexpr int kCount = 11;
+  static constexpr int kCount = 14;
   enum Phase {
     elements,
     boundary,
@@ -25,7 +25,10 @@ struct PhaseTimes {
     spg_shape_functions,
     spg_smoothing,
     spg_stress,
+    spg_stabilization,
     spg_forces,
+    spg_bonds,
+    spg_step_estimate,
     contact
   };
   std::array<double, kCount> seconds{};

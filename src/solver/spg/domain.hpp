@@ -170,8 +170,13 @@ struct SpgSettings {
 };
 
 /// Wall-clock seconds of the SPG work, for the phase table.
+/// Wall seconds per part of the particle work, in PhaseTimes' order (spg_neighbours ...).
 struct SpgTimes {
-  double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0, force = 0.0;
+  double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0;
+  double stabilization = 0.0;  ///< ITB 1: the strain-gradient stabilisation (Eqs. 8-12)
+  double force = 0.0;
+  double bonds = 0.0;          ///< bond failure (Eqs. 33-36) at a check
+  double step_estimate = 0.0;  ///< eigenvalue step: power iteration and stiffness lengths
 };
 
 /// Buffers the per-cycle passes reuse instead of allocating them at every call. Not dumped:

@@ -236,9 +236,11 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
+  auto start = Clock::now();
   if (d.steps_since_renewal >= d.settings.renewal_interval) {
     const long broke = break_bonds(s, d);
-    const Index due = rows_to_renew(s, d, broke > 0, renewed);
+    d.times.bonds += std::chrono::duration<double>(Clock::now() - start).count();
+    const Index due = rows_to_renew(s, d, broke > 0, renewed);  // timed as neighbour search
     if (due == d.count())
       renew_kernel(s, d);
     else if (due > 0)
@@ -247,10 +249,13 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       d.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
   }
-  if (d.settings.step_estimate == StepEstimate::eigenvalue)
+  if (d.settings.step_estimate == StepEstimate::eigenvalue) {
+    start = Clock::now();
     recalibrate_stiffness_length(s, d, renewed);
+    d.times.step_estimate += std::chrono::duration<double>(Clock::now() - start).count();
+  }
   ++d.steps_since_renewal;
-  auto start = Clock::now();
+  start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   const Index n = d.count();
   double best = std::numeric_limits<double>::infinity();
@@ -313,9 +318,12 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     grow_row_masses(d);
     smooth_masses(s, d);
   }
-  if (d.settings.stabilization == Stabilization::strain_gradient)
-    strain_gradient_stabilization(s, d);
   d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
+  if (d.settings.stabilization == Stabilization::strain_gradient) {
+    start = Clock::now();
+    strain_gradient_stabilization(s, d);
+    d.times.stabilization += std::chrono::duration<double>(Clock::now() - start).count();
+  }
   start = Clock::now();
 
   // Internal forces, gathered per particle over the pairs (J, I) of its transpose, with the
