@@ -23,9 +23,9 @@ Families, methods and references (benchmarks.md, paper §4):
                 whole schedule, stage 2 of 4.4 mm, plunge 0 to 8.95 mm, 2026-11-27;
                 manual/verification.md)
                 The paper's comparison (Fig. 11, Table 2): SPG ITB 1 beside MC-SPG with the same
-                (eigenvalue) step estimate on the same deck, at h 0.3 (the shipped deck) and
-                h 0.2 (8 layers, no mass scaling; ITB 1 takes about 3 hours on this
-                2-core machine), and h 0.15 with the fast recipe (DT2MS 1e-8 s, OSU 1); the table then
+                (eigenvalue) step estimate on the same deck, at h 0.3 (the shipped deck),
+                h 0.2 (8 layers, no mass scaling; ITB 1 takes about 3 hours on this 2-core
+                machine) and h 0.15 with the fast recipe (DT2MS 1e-8 s, OSU 1); the table then
                 gives the cost ratio SPG : MC-SPG of each pair (paper: 2.39 at h 0.125)
 
 Writes OUT/study.csv (one row per run, one header row), the same as a Markdown table

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -169,8 +170,8 @@ struct SpgSettings {
   StepEstimate step_estimate = StepEstimate::nearest_neighbour;
 };
 
-/// Wall-clock seconds of the SPG work, for the phase table.
-/// Wall seconds per part of the particle work, in PhaseTimes' order (spg_neighbours ...).
+/// Wall seconds per part of the particle work, for the phase table, in PhaseTimes' order
+/// (spg_neighbours ...).
 struct SpgTimes {
   double neighbours = 0.0, shape_functions = 0.0, smoothing = 0.0, stress = 0.0;
   double stabilization = 0.0;  ///< ITB 1: the strain-gradient stabilisation (Eqs. 8-12)
@@ -178,6 +179,11 @@ struct SpgTimes {
   double bonds = 0.0;          ///< bond failure (Eqs. 33-36) at a check
   double step_estimate = 0.0;  ///< eigenvalue step: power iteration and stiffness lengths
 };
+
+/// Wall seconds since `start`, for SpgTimes.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Buffers the per-cycle passes reuse instead of allocating them at every call. Not dumped:
 /// every call fills what it reads.

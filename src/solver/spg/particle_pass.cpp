@@ -236,10 +236,10 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
-  auto start = Clock::now();
   if (d.steps_since_renewal >= d.settings.renewal_interval) {
+    const auto bonds_start = Clock::now();
     const long broke = break_bonds(s, d);
-    d.times.bonds += std::chrono::duration<double>(Clock::now() - start).count();
+    d.times.bonds += seconds_since(bonds_start);
     const Index due = rows_to_renew(s, d, broke > 0, renewed);  // timed as neighbour search
     if (due == d.count())
       renew_kernel(s, d);
@@ -250,12 +250,12 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     if (due == 0) renewed.clear();
   }
   if (d.settings.step_estimate == StepEstimate::eigenvalue) {
-    start = Clock::now();
+    const auto estimate_start = Clock::now();
     recalibrate_stiffness_length(s, d, renewed);
-    d.times.step_estimate += std::chrono::duration<double>(Clock::now() - start).count();
+    d.times.step_estimate += seconds_since(estimate_start);
   }
   ++d.steps_since_renewal;
-  start = Clock::now();
+  auto start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   const Index n = d.count();
   double best = std::numeric_limits<double>::infinity();
@@ -318,11 +318,11 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     grow_row_masses(d);
     smooth_masses(s, d);
   }
-  d.times.stress += std::chrono::duration<double>(Clock::now() - start).count();
+  d.times.stress += seconds_since(start);
   if (d.settings.stabilization == Stabilization::strain_gradient) {
     start = Clock::now();
     strain_gradient_stabilization(s, d);
-    d.times.stabilization += std::chrono::duration<double>(Clock::now() - start).count();
+    d.times.stabilization += seconds_since(start);
   }
   start = Clock::now();
 
@@ -343,7 +343,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     if (control) f -= d.mode_force.col(i);
     s.nodes.force.col(d.nodes[ii]) += f;
   }
-  d.times.force += std::chrono::duration<double>(Clock::now() - start).count();
+  d.times.force += seconds_since(start);
 
   ParticlePassResult r;
   r.critical_step = best;

@@ -13,9 +13,6 @@ namespace mcdyna::solver::spg {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // A smoothed mass below this share of the particle's own mass (a neighbourhood whose shape
 // functions nearly cancel, or only degenerate rows around it) would turn force / m into a huge

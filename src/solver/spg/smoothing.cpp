@@ -156,8 +156,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     nd.velocity.col(d.nodes[ii]) = u;
     if (!std::isfinite(u.sum())) bad = std::min(bad, d.nodes[ii]);
   }
-  d.times.smoothing +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  d.times.smoothing += seconds_since(start);
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
 }
 

@@ -75,8 +75,6 @@ void smooth_masses(State& s, Domain& d);
 /// per row), which is all Eqs. 21-23 need.
 void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows);
 
-/// The largest eigenvalue omega^2 of the part's linearised MC-SPG equations of motion (power
-/// iteration, frequency.cpp): dt < 2 / omega is the critical step of the particles alone.
 /// A symmetric 3 x 3 tensor from its six components stored as xx yy zz xy yz zx (ITB 1's
 /// moments and stabilisation stresses).
 inline Mat3 symmetric_tensor(const double* s) {
@@ -85,6 +83,8 @@ inline Mat3 symmetric_tensor(const double* s) {
   return t;
 }
 
+/// The largest eigenvalue omega^2 of the part's linearised MC-SPG equations of motion (power
+/// iteration, frequency.cpp): dt < 2 / omega is the critical step of the particles alone.
 struct FrequencyEstimate {
   double omega_squared = 0.0;
   int iterations = 0;
