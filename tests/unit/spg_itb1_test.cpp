@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "solver/energy.hpp"
@@ -458,6 +459,48 @@ TEST_CASE("ITB 1 frequency estimate stays below omega_max where masses differ") 
   MESSAGE("largest local estimate / converged omega^2 ", worst);
   CHECK(worst <= 1.0 + 1e-9);
   CHECK(worst > 0.5);  // the local starts find the stiff part (measured 0.97)
+}
+
+}  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+// The iterations started on renewed rows form each product on the patch where it can be nonzero
+// (frequency.cpp, ProductPatch): the same estimate and mode, bit for bit, as the whole-domain
+// products, for ITB 1 (nodal integration and stabilisation) and MC-SPG (with the smoothing's
+// two further reaches). The block is large enough for the patch to stay under half of it for
+// the first products.
+TEST_CASE("Power-iteration products on a renewal's patch have the whole domain's bits") {
+  for (const int itb : {1, 3}) {
+    TempDir dir;
+    Simulation sim = prepare(dir, itb_deck(16, 14, 12, 1, itb));
+    solver::State& s = *sim.state;
+    spg::Domain& d = s.spg.front();
+    spg::initialise(s, d);
+    set_noisy_velocity(s, 0.05);
+    for (Index n = 0; n < s.nodes.count(); ++n)  // a deformed state to linearise about
+      s.nodes.position.col(n) += 1e-2 * s.nodes.velocity.col(n);
+    int patch_products = 0;
+    for (const Index row : {Index{0}, Index{1000}, Index{1555}}) {
+      std::vector<std::uint8_t> rows(static_cast<std::size_t>(d.count()), 0);
+      rows[static_cast<std::size_t>(row)] = 1;
+      for (const int iterations : {1, 2, 4}) {
+        Eigen::Matrix3Xd whole = spg::frequency_start(d.count(), rows);
+        Eigen::Matrix3Xd patch = whole;
+        const spg::FrequencyEstimate a = spg::largest_frequency(s, d, iterations, &whole);
+        const spg::FrequencyEstimate b =
+            spg::largest_frequency(s, d, iterations, &patch, false, true);
+        CHECK(a.patch_products == 0);
+        patch_products += b.patch_products;
+        CHECK(a.omega_squared > 0.0);
+        CHECK(std::memcmp(&a.omega_squared, &b.omega_squared, sizeof(double)) == 0);
+        CHECK(a.particle == b.particle);
+        CHECK((whole.array() == patch.array()).all());  // -0 == +0: the sign of zeros may differ
+      }
+    }
+    MESSAGE("ITB ", itb, ": ", patch_products, " products on a patch");
+    CHECK(patch_products >= 3);
+  }
 }
 
 }  // namespace mcdyna::test

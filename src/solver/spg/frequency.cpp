@@ -22,20 +22,86 @@ namespace mcdyna::solver::spg {
 
 namespace {
 
+// Where a product A x can be nonzero when x is nonzero on a patch of particles only: the
+// iterations started on the rows a renewal changed (kRenewalIterations, stiffness_length.cpp),
+// about 0.1 % of the rows on the FDS plate. Each pass of apply() gathers over the neighbour
+// lists or their transpose, so the patch grows by one reach per pass: the rows whose lists hold
+// a patch particle (their strain), the particles of those rows (their forces), and for MC-SPG
+// the rows again (u-hat, Eq. 30) and their particles (the gather, Eq. 13). Outside it every term
+// of the whole-domain product is an exact zero, so the product formed on the patch has the same
+// bits (up to the sign of zeros, which no later operation turns into a value).
+struct ProductPatch {
+  ParticleSubset rows, particles, hat, out;
+};
+
+void list_subset(ParticleSubset& s) {
+  s.index.clear();
+  for (std::size_t i = 0; i < s.flag.size(); ++i)
+    if (s.flag[i]) s.index.push_back(static_cast<Index>(i));
+}
+
+// `from` and every entry of the compressed lists (offsets, entries) of its particles: over the
+// transpose, the rows whose neighbour lists hold one of them; over the lists, their neighbours.
+void reach(const ParticleSubset& from, const std::vector<Index>& offsets,
+           const std::vector<Index>& entries, ParticleSubset& to) {
+  to.flag = from.flag;
+  for (const Index k : from.index)
+    for (Index t = offsets[static_cast<std::size_t>(k)];
+         t < offsets[static_cast<std::size_t>(k) + 1]; ++t)
+      to.flag[static_cast<std::size_t>(entries[static_cast<std::size_t>(t)])] = 1;
+  list_subset(to);
+}
+
+// The patch of a product of x nonzero on `live`.
+void spread(const Domain& d, const ParticleSubset& live, ProductPatch& patch) {
+  const auto rows_of = [&d](const ParticleSubset& from, ParticleSubset& to) {
+    reach(from, d.transpose.offsets, d.transpose.rows, to);
+  };
+  const auto particles_of = [&d](const ParticleSubset& from, ParticleSubset& to) {
+    reach(from, d.list.offsets, d.list.neighbours, to);
+  };
+  rows_of(live, patch.rows);
+  particles_of(patch.rows, patch.particles);
+  if (d.settings.stabilization != Stabilization::momentum_consistent) return;
+  rows_of(patch.particles, patch.hat);
+  particles_of(patch.hat, patch.out);
+}
+
+// What a product's result is nonzero on.
+const ParticleSubset& result_support(const Domain& d, const ProductPatch& patch) {
+  return d.settings.stabilization == Stabilization::momentum_consistent ? patch.out
+                                                                        : patch.particles;
+}
+
 // A x for displacements x (3 x count) into `out`, with the domain's workspace for the stress,
-// the forces (turned into the smoothed particles' accelerations in place) and u-hat.
+// the forces (turned into the smoothed particles' accelerations in place) and u-hat. With
+// `patch`, formed on it only and zero elsewhere.
 void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-           Eigen::Matrix3Xd& out, bool stabilization) {
+           Eigen::Matrix3Xd& out, bool stabilization, const ProductPatch* patch) {
   const Index n = d.count();
   const double shear = mat.shear_modulus;
+  const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
   Eigen::Matrix<double, 9, Eigen::Dynamic>& p = d.scratch.stress;
   Eigen::Matrix3Xd& acc = d.scratch.force;
   Eigen::Matrix3Xd& hat = d.scratch.hat;
-  p.resize(9, n);
-  acc.resize(3, n);
-  hat.resize(3, n);
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index j = 0; j < n; ++j) {
+  const ParticleSubset* rows = patch != nullptr ? &patch->rows : nullptr;
+  const ParticleSubset* particles = patch != nullptr ? &patch->particles : nullptr;
+  const ParticleSubset* hats = patch == nullptr ? nullptr : mc ? &patch->hat : particles;
+  const ParticleSubset* outs = patch == nullptr ? nullptr : &result_support(d, *patch);
+  if (patch != nullptr) {
+    p.setZero(9, n);
+    acc.setZero(3, n);
+    hat.setZero(3, n);
+    out.setZero(3, n);
+  } else {
+    p.resize(9, n);
+    acc.resize(3, n);
+    hat.resize(3, n);
+  }
+  const auto row_count = static_cast<std::int64_t>(members(rows, n));
+#pragma omp parallel for schedule(static, 256) if (row_count > 512)
+  for (std::int64_t r = 0; r < row_count; ++r) {
+    const Index j = member(rows, static_cast<std::size_t>(r));
     const auto jj = static_cast<std::size_t>(j);
     Eigen::Map<Mat3> pj(p.col(j).data());
     if (d.isolated[jj] || d.debris[jj]) {
@@ -61,9 +127,10 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
   }
   // Forces, gathered over the transpose; for the smoothed particles the accelerations f / m
   // (Eq. 20 masses), for the pinned ones the force itself (their node mass takes it below).
-  const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
+  const auto particle_count = static_cast<std::int64_t>(members(particles, n));
+#pragma omp parallel for schedule(static, 256) if (particle_count > 512)
+  for (std::int64_t r = 0; r < particle_count; ++r) {
+    const Index i = member(particles, static_cast<std::size_t>(r));
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
     for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
@@ -73,11 +140,13 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
     acc.col(i) = !d.pinned[ii] && mc ? Vec3(f / d.smoothed_mass[ii]) : f;
   }
   if (stabilization) {  // ITB 1: every particle pinned, acc holds forces
-    stabilization_operator(d, mat, x, d.gradient.force);
+    stabilization_operator(d, mat, x, d.gradient.force, rows, particles);
     acc += d.gradient.force;
   }
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index k = 0; k < n; ++k) {
+  const auto hat_count = static_cast<std::int64_t>(members(hats, n));
+#pragma omp parallel for schedule(static, 256) if (hat_count > 512)
+  for (std::int64_t r = 0; r < hat_count; ++r) {
+    const Index k = member(hats, static_cast<std::size_t>(r));
     const auto kk = static_cast<std::size_t>(k);
     Vec3 sum = Vec3::Zero();
     if (mc)
@@ -94,8 +163,10 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
       hat.col(k) = sum;
     }
   }
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
+  const auto out_count = static_cast<std::int64_t>(members(outs, n));
+#pragma omp parallel for schedule(static, 256) if (out_count > 512)
+  for (std::int64_t r = 0; r < out_count; ++r) {
+    const Index i = member(outs, static_cast<std::size_t>(r));
     const auto ii = static_cast<std::size_t>(i);
     if (d.pinned[ii] || !mc) {
       out.col(i) = hat.col(i);
@@ -168,7 +239,8 @@ Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& r
 }
 
 FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
-                                    Eigen::Matrix3Xd* mode, bool without_stabilization) {
+                                    Eigen::Matrix3Xd* mode, bool without_stabilization,
+                                    bool on_support) {
   const bool stabilization =
       d.settings.stabilization == Stabilization::strain_gradient && !without_stabilization;
   const Index n = d.count();
@@ -184,9 +256,28 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
     x = frequency_start(n);
   const std::vector<double> w = self_adjoint_weights(s, d);
   x /= length_in(w, x);
+  // Products on the patch while it stays small (past half the particles the whole-domain loops
+  // cost less than the reaches and the zeroing).
+  ParticleSubset live;
+  ProductPatch patch;
+  bool on_patch = on_support;
+  if (on_patch) {
+    live.flag.assign(static_cast<std::size_t>(n), 0);
+    for (Index i = 0; i < n; ++i)
+      live.flag[static_cast<std::size_t>(i)] = (x.col(i).array() != 0.0).any() ? 1 : 0;
+    list_subset(live);
+  }
   double previous = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    apply(s, d, mat, x, ax, stabilization);
+    if (on_patch) {
+      spread(d, live, patch);
+      on_patch = 2 * result_support(d, patch).index.size() < static_cast<std::size_t>(n);
+    }
+    apply(s, d, mat, x, ax, stabilization, on_patch ? &patch : nullptr);
+    if (on_patch) {
+      live = result_support(d, patch);
+      ++r.patch_products;
+    }
     // |x| = 1: the Rayleigh quotient where the product is known (A x holds the forces' side,
     // -M^-1 K x), else |A x|.
     const double lambda = w.empty() ? norm_in_order(ax) : -weighted_dot(w, x, ax);

@@ -163,11 +163,11 @@ void store_work_stresses(const double* sigma, double volume, const Mat3& f, cons
 }
 
 // What row j pushes its particle K with (K's functions psi, grad phi in the row):
-// sum_ab psi^ab P_a col b + Q grad phi.
+// sum_ab psi^ab P_a col b + Q grad phi (q null: without the Q term).
 Vec3 pushed(const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
-            const Eigen::Matrix<double, 9, Eigen::Dynamic>& q,
+            const Eigen::Matrix<double, 9, Eigen::Dynamic>* q,
             const Eigen::Matrix<double, 6, 1>& psi, const Vec3& grad, Index j) {
-  Vec3 f = Eigen::Map<const Mat3>(q.col(j).data()) * grad;
+  Vec3 f = q != nullptr ? Vec3(Eigen::Map<const Mat3>(q->col(j).data()) * grad) : Vec3::Zero();
   for (int c = 0; c < 6; ++c) {
     const Eigen::Map<const Mat3> p_a(p.col(j).data() + 9 * kPairA[c]);
     const Eigen::Map<const Mat3> p_b(p.col(j).data() + 9 * kPairB[c]);
@@ -179,17 +179,23 @@ Vec3 pushed(const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
 
 // The forces of the work stresses: the work rate is sum_J sum_K (v_K - v_J) . pushed(K, J), so
 // row J pushes K by -pushed(K, J) and itself by pushed(its own sums, J). Per particle into
-// `force` (3 x count), ascending over each transpose: the same bits on any thread count.
+// `force` (3 x count), ascending over each transpose: the same bits on any thread count. With
+// `particles`, those only and zero elsewhere.
 void stabilization_forces(const Domain& d, const Eigen::Matrix<double, 27, Eigen::Dynamic>& p,
-                          const Eigen::Matrix<double, 9, Eigen::Dynamic>& q,
+                          const Eigen::Matrix<double, 9, Eigen::Dynamic>* q,
                           const Eigen::Matrix<double, 6, Eigen::Dynamic>& own_psi,
-                          const Eigen::Matrix3Xd& own_grad, Eigen::Matrix3Xd& force) {
+                          const Eigen::Matrix3Xd& own_grad, Eigen::Matrix3Xd& force,
+                          const ParticleSubset* particles = nullptr) {
   const Index n = d.count();
-  force.resize(3, n);
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index k = 0; k < n; ++k) {
+  if (particles != nullptr)
+    force.setZero(3, n);
+  else
+    force.resize(3, n);
+  const auto count = static_cast<std::int64_t>(members(particles, n));
+#pragma omp parallel for schedule(static, 256) if (count > 512)
+  for (std::int64_t r = 0; r < count; ++r) {
+    const Index k = member(particles, static_cast<std::size_t>(r));
     const auto kk = static_cast<std::size_t>(k);
-    force.col(k).setZero();
     Vec3 f = pushed(p, q, own_psi.col(k), own_grad.col(k), k);
     for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t) {
       const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
@@ -305,19 +311,22 @@ void strain_gradient_stabilization(State& s, Domain& d) {
     advance_row(d, j, f, curv);
     store_work_stresses(sigma, d.renewal_volume[jj], f, curv, g.work_stress, g.curvature_stress, j);
   }
-  stabilization_forces(d, g.work_stress, g.curvature_stress, g.own_hessian, g.own_gradient,
+  stabilization_forces(d, g.work_stress, &g.curvature_stress, g.own_hessian, g.own_gradient,
                        g.force);
   for (Index k = 0; k < n; ++k)
     s.nodes.force.col(d.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
 }
 
 void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-                            Eigen::Matrix3Xd& force) {
+                            Eigen::Matrix3Xd& force, const ParticleSubset* rows,
+                            const ParticleSubset* particles) {
   const Index n = d.count();
   GradientStabilization w;
   clear_workspace(w, n);
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index j = 0; j < n; ++j) {
+  const auto count = static_cast<std::int64_t>(members(rows, n));
+#pragma omp parallel for schedule(static, 256) if (count > 512)
+  for (std::int64_t r = 0; r < count; ++r) {
+    const Index j = member(rows, static_cast<std::size_t>(r));
     const auto jj = static_cast<std::size_t>(j);
     if (!active(d, j)) continue;
     // Linearised about the present state with its curvature neglected: de_a = sym(F^T dG_a).
@@ -336,8 +345,8 @@ void stabilization_operator(const Domain& d, const Material& mat, const Eigen::M
     store_work_stresses(sigma, d.renewal_volume[jj], f, nullptr, w.work_stress, w.curvature_stress,
                         j);
   }
-  w.own_gradient.setZero();  // no Q: the gradient sums push nothing
-  stabilization_forces(d, w.work_stress, w.curvature_stress, w.own_hessian, w.own_gradient, force);
+  // No Q (null): the linearised curvature stress is left out, so the gradient sums push nothing.
+  stabilization_forces(d, w.work_stress, nullptr, w.own_hessian, w.own_gradient, force, particles);
 }
 
 }  // namespace mcdyna::solver::spg

@@ -88,15 +88,18 @@ inline Mat3 symmetric_tensor(const double* s) {
 struct FrequencyEstimate {
   double omega_squared = 0.0;
   int iterations = 0;
-  double change = 1.0;  ///< relative change of omega^2 in the last iteration
-  Index particle = -1;  ///< where the mode's amplitude is largest
+  double change = 1.0;     ///< relative change of omega^2 in the last iteration
+  Index particle = -1;     ///< where the mode's amplitude is largest
+  int patch_products = 0;  ///< products formed on a patch only (`on_support`)
 };
 /// `mode`: start vector (used when it has the right size) and the mode found.
 /// Uses the domain's workspace (Domain::scratch).
 /// ITB 1's stabilisation is part of the operator unless `without_stabilization`.
+/// `on_support`: the start vector is nonzero on a few particles (frequency_start with rows);
+/// each product is then formed where it can be nonzero only (the same bits, see ProductPatch).
 FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode = nullptr,
-                                    bool without_stabilization = false);
+                                    bool without_stabilization = false, bool on_support = false);
 /// The fixed pseudo-random start of the power iteration (the same for any thread count), on the
 /// particles flagged in `rows` only (all of them when `rows` is empty).
 Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& rows = {});
@@ -165,10 +168,27 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
 /// row's reference, their forces (Eq. 9) added to the nodes, their work to d.mode_energy.
 void strain_gradient_stabilization(State& s, Domain& d);
 
+/// A subset of a domain's particles: a flag per particle and the flagged ones ascending.
+struct ParticleSubset {
+  std::vector<std::uint8_t> flag;
+  std::vector<Index> index;
+};
+/// The k-th particle of `subset`, or k itself for the whole domain (subset null).
+inline Index member(const ParticleSubset* subset, std::size_t k) {
+  return subset != nullptr ? subset->index[k] : static_cast<Index>(k);
+}
+/// How many particles a loop over `subset` (null: all `count`) visits.
+inline std::size_t members(const ParticleSubset* subset, Index count) {
+  return subset != nullptr ? subset->index.size() : static_cast<std::size_t>(count);
+}
+
 /// ITB 1's stabilisation linearised with the elastic tangent (for the power iteration of
-/// frequency.cpp): the forces of a displacement field x (3 x count, per particle).
+/// frequency.cpp): the forces of a displacement field x (3 x count, per particle). With `rows`
+/// and `particles` (frequency.cpp's ProductPatch) only those rows' stresses and those particles'
+/// forces are formed, the rest of `force` is zero: right where x is zero outside the patch.
 void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-                            Eigen::Matrix3Xd& force);
+                            Eigen::Matrix3Xd& force, const ParticleSubset* rows = nullptr,
+                            const ParticleSubset* particles = nullptr);
 
 /// Kinetic energy (1/2 m u-hat^{n-1/2} . u-hat^{n+1/2}) and momentum of the particles whose
 /// velocity is smoothed (the quantities MC-SPG conserves); pinned particles count as nodes.

@@ -162,7 +162,7 @@ void recalibrate_stiffness_length(const State& s, Domain& d,
   FrequencyEstimate f = largest_frequency(s, d, kRecalibrationIterations, &d.step_bound.mode);
   if (!renewed.empty()) {
     Eigen::Matrix3Xd local = frequency_start(d.count(), renewed);
-    const FrequencyEstimate g = largest_frequency(s, d, kRenewalIterations, &local);
+    const FrequencyEstimate g = largest_frequency(s, d, kRenewalIterations, &local, false, true);
     if (g.omega_squared > f.omega_squared) {  // the renewal's mode is the highest: follow it
       f = g;
       d.step_bound.mode = local;
