@@ -1,6 +1,10 @@
-// The time loop. One cycle, from t^n (forces known) to t^{n+1}:
-//   choose dt^{n+1/2} -> free velocity update -> rigid bodies -> nodal constraints and motions ->
-//   rigid walls -> output at t^n -> positions -> element pass at t^{n+1} -> checks.
+// The time loop over the model's blocks (block.hpp). One cycle, from t^n (forces known) to
+// t^{n+1}, is two halves around the output of t^n:
+//   choose dt^{n+1/2} -> velocities (free nodes, then the blocks: SPG parts, rigid bodies) ->
+//   conditions (constraints, motions, walls) -> what the blocks take up from them ->
+//   output at t^n -> positions -> forces of every block at t^{n+1} -> checks.
+// run() wraps the two halves with the stop decisions, restart dumps, outputs and the phase
+// clock.
 #include "solver/driver.hpp"
 
 #include <fmt/format.h>
@@ -10,11 +14,7 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/contact/contact.hpp"
-#include "solver/fe/solid_elements.hpp"
-#include "solver/loads/loads.hpp"
-#include "solver/rigid/rigid_bodies.hpp"
-#include "solver/spg/spg_solver.hpp"
+#include "solver/block.hpp"
 
 namespace mcdyna::solver {
 
@@ -54,81 +54,33 @@ class PhaseClock {
   Clock::time_point last_;
 };
 
-std::string element_name(const State& s, Index e) {
-  const auto i = static_cast<std::size_t>(e);
-  return fmt::format("solid element {} (part {})", s.solids.ids[i],
-                     s.parts[static_cast<std::size_t>(s.solids.part[i])].id);
-}
-
-// Nodal added mass from the elements' added mass (gather, fixed order).
-void refresh_added_mass(State& s) {
-  Nodes& nd = s.nodes;
-#pragma omp parallel for schedule(static)
-  for (Index n = 0; n < nd.count(); ++n) {
-    double sum = 0.0;
-    for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
-         k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k)
-      sum += s.solids
-                 .added_mass[static_cast<std::size_t>(nd.corners[static_cast<std::size_t>(k)] / 8)];
-    nd.added_mass[static_cast<std::size_t>(n)] = sum / 8.0;
+// The phase clock over the blocks: each block's call charged to its phase.
+class Phases {
+ public:
+  Phases(Blocks& blocks, PhaseTimes& times) : blocks_(blocks), clock_(times) {}
+  template <class Call>
+  void each(Call&& call) {
+    for (const std::unique_ptr<Block>& b : blocks_) {
+      call(*b);
+      clock_.charge(b->phase());
+    }
   }
-}
+  void charge(PhaseTimes::Phase p) { clock_.charge(p); }
 
-std::string particle_name(const State& s, std::size_t domain, Index particle) {
-  const spg::Domain& d = s.spg[domain];
-  return fmt::format(
-      "SPG particle at node {} (part {})",
-      s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(particle)])],
-      s.parts[static_cast<std::size_t>(d.part)].id);
-}
-
-// Forces at t^n from the element and particle passes, and the critical step of both.
-struct ForcePass {
-  ElementPassResult elements;
-  double critical_step = std::numeric_limits<double>::infinity();
-  Index controlling_element = -1;
-  std::size_t controlling_domain = 0;
-  Index controlling_particle = -1;
-  std::string failure;  ///< inverted or non-finite element/particle, named
-  bool inverted = false;
+ private:
+  Blocks& blocks_;
+  PhaseClock clock_;
 };
 
-ForcePass compute_forces(State& s) {
-  ForcePass r;
+// Forces at t^n from every block, and the critical step of them all.
+ForceReport compute_forces(State& s, Phases& phases) {
+  ForceReport r;
   s.nodes.force.setZero();
-  r.elements = solid_element_pass(
-      s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
-  gather_solid_forces(s);
-  if (r.elements.mass_changed) refresh_added_mass(s);
-  r.critical_step = r.elements.critical_step;
-  r.controlling_element = r.elements.controlling;
-  if (r.elements.inverted >= 0) {
-    r.inverted = true;
-    r.failure = "negative volume in " + element_name(s, r.elements.inverted);
-  } else if (r.elements.non_finite >= 0) {
-    r.failure = "non-finite stress or wave speed in " + element_name(s, r.elements.non_finite);
-  }
-  for (std::size_t k = 0; k < s.spg.size(); ++k) {
-    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[k], s.step);
-    if (p.critical_step < r.critical_step) {
-      r.critical_step = p.critical_step;
-      r.controlling_element = -1;
-      r.controlling_domain = k;
-      r.controlling_particle = p.controlling;
-    }
-    if (r.failure.empty() && p.inverted >= 0) {
-      r.inverted = true;
-      r.failure = "non-positive Jacobian or volume at " + particle_name(s, k, p.inverted);
-    } else if (r.failure.empty() && p.non_finite >= 0) {
-      r.failure = "non-finite stress or wave speed at " + particle_name(s, k, p.non_finite);
-    }
-  }
-  apply_body_loads(s);
-  contact::contact_pass(s);  // after the internal forces: SPG particles and rigid nodes included
+  phases.each([&](Block& b) { b.forces(s, r); });
   return r;
 }
 
-std::string controlling_name(const State& s, const ForcePass& r) {
+std::string controlling_name(const State& s, const ForceReport& r) {
   if (r.controlling_element >= 0) return element_name(s, r.controlling_element);
   if (r.controlling_particle >= 0)
     return particle_name(s, r.controlling_domain, r.controlling_particle);
@@ -155,17 +107,43 @@ Index free_velocity_update(State& s, double dt) {
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
 }
 
-void advance_positions(State& s, double dt) {
+// x^n -> x^{n+1} for the nodes that are not rigid.
+void advance_free_positions(State& s, double dt) {
   Nodes& nd = s.nodes;
 #pragma omp parallel for schedule(static) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n) {
     if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0) continue;
     nd.position.col(n) += dt * nd.velocity.col(n);
   }
-  place_rigid_nodes(s, dt);
 }
 
-double choose_step(const State& s, const ForcePass& r, bool first) {
+// The first half of a cycle: v^{n-1/2} -> v^{n+1/2} (the nodes by a = f / m, then the blocks
+// that move their nodes themselves), then the conditions and what the blocks take up from them.
+// Returns the lowest node with a non-finite velocity, or -1.
+Index advance_velocities(State& s, Phases& phases, const StepTimes& t) {
+  Index bad = free_velocity_update(s, t.mean);
+  phases.charge(PhaseTimes::elements);
+  phases.each([&](Block& b) {
+    const Index n = b.advance_velocities(s, t);
+    if (bad < 0) bad = n;
+  });
+  phases.each([&](Block& b) { b.constrain(s, t); });
+  phases.each([&](Block& b) { b.after_constraints(s); });
+  return bad;
+}
+
+// The second half: x^n -> x^{n+1}, t^{n+1}, and the forces there.
+ForceReport advance_positions(State& s, Phases& phases, const StepTimes& t) {
+  advance_free_positions(s, t.step);
+  phases.charge(PhaseTimes::other);
+  phases.each([&](Block& b) { b.advance_positions(s, t.step); });
+  s.time += t.step;
+  s.step = t.step;
+  ++s.cycle;
+  return compute_forces(s, phases);
+}
+
+double choose_step(const State& s, const ForceReport& r, bool first) {
   const TimeControl& tc = s.time_control;
   if (tc.fixed_step > 0.0) return tc.fixed_step;
   // Without deformable elements (rigid bodies only) DTINIT is the step.
@@ -182,14 +160,15 @@ double choose_step(const State& s, const ForcePass& r, bool first) {
 RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
   RunResult result;
   const auto start = Clock::now();
-  PhaseClock clock(result.phases);
-  const long elements = s.solids.count();
-  long particles = 0;
-  for (spg::Domain& d : s.spg) {
-    if (d.renewals == 0 && !resume) spg::initialise(s, d);
-    particles += d.count();
+  Blocks blocks = make_blocks(s);
+  Phases phases(blocks, result.phases);
+  long elements = 0, particles = 0;
+  for (const std::unique_ptr<Block>& b : blocks) {
+    elements += b->elements();
+    particles += b->particles();
   }
-  ForcePass pass;
+  if (!resume) phases.each([&](Block& b) { b.initialise(s); });
+  ForceReport pass;
   if (resume) {
     // The dump was taken at the top of a cycle: its forces and step estimate are in the state
     // and the resume point; computing them again would advance the stresses a second time.
@@ -201,8 +180,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     result.element_cycles = resume->element_cycles;
     result.particle_cycles = resume->particle_cycles;
   } else {
-    pass = compute_forces(s);
-    clock.charge(PhaseTimes::elements);
+    pass = compute_forces(s, phases);
   }
   s.critical_step = pass.critical_step;
   const double earlier_wall = resume ? resume->wall_seconds : 0.0;
@@ -224,7 +202,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     // and in `pass`, so a run continued from here repeats this cycle bit for bit.
     if (hooks.dump && hooks.dump_due && !at_end && (s.cycle != first_cycle || interrupted) &&
         hooks.dump_due(s, interrupted)) {
-      clock.charge(PhaseTimes::other);
+      phases.charge(PhaseTimes::other);
       const double seconds = elapsed();
       ResumePoint point{pass.critical_step,
                         pass.controlling_element,
@@ -237,7 +215,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
                         result.element_cycles,
                         result.particle_cycles};
       hooks.dump(s, point);
-      clock.charge(PhaseTimes::output);
+      phases.charge(PhaseTimes::output);
     }
     const double dt = s.cycle == 0 ? first_step : choose_step(s, pass, false);
     if (!at_end && !interrupted && !(dt > min_step)) {
@@ -252,20 +230,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     const StepTimes t{s.time, step, 0.5 * (s.step + step)};
     const bool write = stop || (hooks.output_due && hooks.output_due(s));
     if (write) velocity_before = s.nodes.velocity;
-    Index bad = free_velocity_update(s, t.mean);
-    for (spg::Domain& d : s.spg) {
-      const Index b = spg::advance_velocities(s, d, t.mean);
-      if (bad < 0) bad = b;
-    }
-    clock.charge(PhaseTimes::elements);
-    advance_rigid_bodies(s, t);
-    clock.charge(PhaseTimes::rigid);
-    apply_nodal_constraints(s, t);
-    apply_nodal_motions(s, t);
-    apply_rigid_walls(s, t);
-    for (spg::Domain& d : s.spg)
-      spg::absorb_constraints(s, d);
-    clock.charge(PhaseTimes::boundary);
+    const Index bad = advance_velocities(s, phases, t);
     if (bad >= 0 && result.reason == StopReason::end_time) {
       result.reason = StopReason::non_finite;
       result.message = fmt::format("non-finite velocity at node {} at t = {:.6e} (cycle {})",
@@ -274,7 +239,7 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     if (hooks.velocities_advanced && bad < 0) hooks.velocities_advanced(s, t);
     if (write || bad >= 0) {
       if (hooks.write) hooks.write(s, velocity_before, stop || bad >= 0);
-      clock.charge(PhaseTimes::output);
+      phases.charge(PhaseTimes::output);
     }
     if (bad >= 0 || stop) {
       if (interrupted && !at_end)
@@ -284,15 +249,9 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
         result.reason = StopReason::end_cycle;
       break;
     }
-    advance_positions(s, t.step);
-    s.time += t.step;
-    s.step = t.step;
-    ++s.cycle;
-    clock.charge(PhaseTimes::other);
-    pass = compute_forces(s);
+    pass = advance_positions(s, phases, t);
     result.element_cycles += elements;
     result.particle_cycles += particles;
-    clock.charge(PhaseTimes::elements);
     if (!pass.failure.empty()) {
       result.reason = pass.inverted ? StopReason::inverted_element : StopReason::non_finite;
       result.message = fmt::format("{} at t = {:.6e} (cycle {})", pass.failure, s.time, s.cycle);
@@ -305,22 +264,10 @@ RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
     s.critical_step = pass.critical_step;
     if (hooks.progress) hooks.progress(s);
   }
-  // The SPG work ran inside the element phase; show it split (neighbour search, shape
-  // functions, smoothing, stress, stabilisation, forces, bond failure, step estimate).
-  for (const spg::Domain& d : s.spg) {
-    constexpr int kSplit = PhaseTimes::spg_step_estimate - PhaseTimes::spg_neighbours + 1;
-    const double split[kSplit] = {d.times.neighbours, d.times.shape_functions, d.times.smoothing,
-                                  d.times.stress,     d.times.stabilization,   d.times.force,
-                                  d.times.bonds,      d.times.step_estimate};
-    for (int k = 0; k < kSplit; ++k) {
-      result.phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
-      result.phases.seconds[PhaseTimes::elements] -= split[k];
-    }
-  }
-  for (const contact::Interface& c : s.contacts) {
-    result.phases.seconds[PhaseTimes::contact] += c.seconds;
-    result.phases.seconds[PhaseTimes::elements] -= c.seconds;
-  }
+  // Finer phases (the SPG parts' neighbour search, shape functions, ...) out of the ones their
+  // blocks were charged to.
+  for (const std::unique_ptr<Block>& b : blocks)
+    b->split_times(s, result.phases);
   const double seconds = elapsed();
   result.wall_seconds = earlier_wall + seconds;
   result.core_seconds = earlier_core + threads * seconds;

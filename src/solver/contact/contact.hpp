@@ -8,9 +8,9 @@
 
 namespace mcdyna::solver::contact {
 
-/// Adds the contact forces at t^n to s.nodes.force (positions at t^n, velocities at t^{n-1/2})
-/// and updates each interface's resultants and energy.
-void contact_pass(State& s);
+/// Adds the interface's contact forces at t^n to s.nodes.force (positions at t^n, velocities at
+/// t^{n-1/2}) and updates its resultants and energy.
+void interface_pass(State& s, Interface& c);
 
 /// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
 /// last sort, or a node has moved more than half the search margin.

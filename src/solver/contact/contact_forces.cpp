@@ -4,7 +4,6 @@
 // normal viscous damping; the opposite force goes to the segment's nodes with the weights of the
 // contact point.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -188,75 +187,71 @@ InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
   return r;
 }
 
-void contact_pass(State& s) {
-  for (Interface& c : s.contacts) {
-    const auto start = std::chrono::steady_clock::now();
-    // What the interface took from the structure (penalty springs and friction), the glstat
-    // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
-    // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
-    // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
-    const double step = s.step;
-    auto charge = [&](Index node, const Vec3& f) {
-      c.energy -= 0.5 * step * f.dot(s.nodes.velocity.col(node));
-    };
-    for (const AppliedForce& a : c.applied)
-      charge(a.node, a.force);
-    c.applied.clear();
-    c.force_a.setZero();
-    c.force_b.setZero();
-    c.moment_a.setZero();
-    c.moment_b.setZero();
-    c.mass_in_contact = 0.0;
-    if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
-    if (s.time < c.birth || s.time > c.death) {
-      for (Pass& p : c.passes) {
-        p.friction.setZero();
-        p.side.setZero();
-      }
-      continue;
-    }
-    if (sort_due(s, c)) sort_buckets(s, c);
+void interface_pass(State& s, Interface& c) {
+  // What the interface took from the structure (penalty springs and friction), the glstat
+  // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
+  // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
+  // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
+  const double step = s.step;
+  auto charge = [&](Index node, const Vec3& f) {
+    c.energy -= 0.5 * step * f.dot(s.nodes.velocity.col(node));
+  };
+  for (const AppliedForce& a : c.applied)
+    charge(a.node, a.force);
+  c.applied.clear();
+  c.force_a.setZero();
+  c.force_b.setZero();
+  c.moment_a.setZero();
+  c.moment_b.setZero();
+  c.mass_in_contact = 0.0;
+  if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
+  if (s.time < c.birth || s.time > c.death) {
     for (Pass& p : c.passes) {
-      const auto n = static_cast<Index>(p.near.size());
-      std::vector<Hit> hits(p.near.size());
+      p.friction.setZero();
+      p.side.setZero();
+    }
+    return;
+  }
+  if (sort_due(s, c)) sort_buckets(s, c);
+  for (Pass& p : c.passes) {
+    const auto n = static_cast<Index>(p.near.size());
+    std::vector<Hit> hits(p.near.size());
 #pragma omp parallel for schedule(static, 64) if (n > 512)
-      for (Index k = 0; k < n; ++k)
-        hits[static_cast<std::size_t>(k)] =
-            contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
-      // Forces added in node order: the same sums for any thread count.
-      for (std::size_t k = 0; k < hits.size(); ++k) {
-        const Hit& h = hits[k];
-        const auto i = static_cast<std::size_t>(p.near[k]);
-        p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
-        p.side.col(static_cast<Eigen::Index>(i)) = h.push;
-        p.initial_penetration[i] = h.initial;
-        if (h.segment < 0) continue;
-        const Index node = p.nodes[i];
-        const Vec3 x = s.nodes.position.col(node);
-        s.nodes.force.col(node) += h.force;
-        c.applied.push_back({node, h.force});
-        charge(node, h.force);
-        Vec3& on_nodes = p.nodes_on_side_a ? c.force_a : c.force_b;
-        Vec3& on_segments = p.nodes_on_side_a ? c.force_b : c.force_a;
-        Vec3& moment_nodes = p.nodes_on_side_a ? c.moment_a : c.moment_b;
-        Vec3& moment_segments = p.nodes_on_side_a ? c.moment_b : c.moment_a;
-        on_nodes += h.force;
-        moment_nodes += x.cross(h.force);
-        if (p.nodes_on_side_a) c.mass_in_contact += s.nodes.mass[static_cast<std::size_t>(node)];
-        const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
-        for (std::size_t j = 0; j < 4; ++j) {
-          if (h.weights[j] == 0.0) continue;
-          const Vec3 f = -h.weights[j] * h.force;
-          const Vec3 xj = s.nodes.position.col(seg[j]);
-          s.nodes.force.col(seg[j]) += f;
-          c.applied.push_back({seg[j], f});
-          charge(seg[j], f);
-          on_segments += f;
-          moment_segments += xj.cross(f);
-        }
+    for (Index k = 0; k < n; ++k)
+      hits[static_cast<std::size_t>(k)] =
+          contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
+    // Forces added in node order: the same sums for any thread count.
+    for (std::size_t k = 0; k < hits.size(); ++k) {
+      const Hit& h = hits[k];
+      const auto i = static_cast<std::size_t>(p.near[k]);
+      p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
+      p.side.col(static_cast<Eigen::Index>(i)) = h.push;
+      p.initial_penetration[i] = h.initial;
+      if (h.segment < 0) continue;
+      const Index node = p.nodes[i];
+      const Vec3 x = s.nodes.position.col(node);
+      s.nodes.force.col(node) += h.force;
+      c.applied.push_back({node, h.force});
+      charge(node, h.force);
+      Vec3& on_nodes = p.nodes_on_side_a ? c.force_a : c.force_b;
+      Vec3& on_segments = p.nodes_on_side_a ? c.force_b : c.force_a;
+      Vec3& moment_nodes = p.nodes_on_side_a ? c.moment_a : c.moment_b;
+      Vec3& moment_segments = p.nodes_on_side_a ? c.moment_b : c.moment_a;
+      on_nodes += h.force;
+      moment_nodes += x.cross(h.force);
+      if (p.nodes_on_side_a) c.mass_in_contact += s.nodes.mass[static_cast<std::size_t>(node)];
+      const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
+      for (std::size_t j = 0; j < 4; ++j) {
+        if (h.weights[j] == 0.0) continue;
+        const Vec3 f = -h.weights[j] * h.force;
+        const Vec3 xj = s.nodes.position.col(seg[j]);
+        s.nodes.force.col(seg[j]) += f;
+        c.applied.push_back({seg[j], f});
+        charge(seg[j], f);
+        on_segments += f;
+        moment_segments += xj.cross(f);
       }
     }
-    c.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 }
 

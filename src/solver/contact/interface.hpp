@@ -2,7 +2,7 @@
 /// Penalty contact state (*CONTACT_[AUTOMATIC_]NODES_TO_SURFACE / SURFACE_TO_SURFACE,
 /// keywords.md §2.15): slave nodes (FE nodes or SPG particles) against master segments (shell
 /// elements or the free faces of solid elements), compiled by solver/compile_contact.cpp and
-/// run by contact_pass (contact.hpp) once per cycle after the internal forces.
+/// run by interface_pass (contact.hpp) once per cycle after the internal forces.
 #include <Eigen/Core>
 
 #include <array>
@@ -84,8 +84,7 @@ struct Interface {
   Vec3 force_a = Vec3::Zero(), force_b = Vec3::Zero();    ///< on side A / side B nodes
   Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();  ///< about the origin
   double mass_in_contact = 0.0;                           ///< of the A nodes in contact
-  double energy = 0.0;   ///< work the contact forces took from the structure
-  double seconds = 0.0;  ///< wall time in contact_pass (the phase table's "contact")
+  double energy = 0.0;  ///< work the contact forces took from the structure
   std::vector<AppliedForce> applied;
 };
 

@@ -1,0 +1,84 @@
+#pragma once
+/// A formulation of the model behind the time loop's phases (design.md §7): hexahedra, an SPG
+/// domain, rigid bodies, nodal constraints, prescribed nodal motions, rigid walls, body loads, a
+/// contact interface. The loop (driver.cpp) calls each phase on every block in the blocks' order,
+/// which is the order the physics needs: internal forces before body loads and contact, the SPG
+/// parts' velocities before the rigid bodies sum their nodes' forces, the constraints before the
+/// SPG parts take up what the constraints changed. A block does nothing in the phases it has no
+/// part in. Blocks are made from the compiled state by block_registry.cpp.
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/driver.hpp"              // PhaseTimes
+#include "solver/rigid/rigid_bodies.hpp"  // StepTimes
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// What the force phase found: the smallest stable step of the blocks (before TSSFAC), who sets
+/// it, and the first failure (an inverted or non-finite element or particle, named).
+struct ForceReport {
+  double critical_step = std::numeric_limits<double>::infinity();
+  Index controlling_element = -1;
+  std::size_t controlling_domain = 0;
+  Index controlling_particle = -1;
+  std::string failure;
+  bool inverted = false;
+  /// Keeps the first failure only.
+  void fail(std::string what, bool inverted_entity) {
+    if (!failure.empty()) return;
+    failure = std::move(what);
+    inverted = inverted_entity;
+  }
+};
+
+class Block {
+ public:
+  virtual ~Block() = default;
+  /// The timing phase its work is charged to.
+  [[nodiscard]] virtual PhaseTimes::Phase phase() const = 0;
+  /// Once before the first cycle of a run that does not continue from a restart dump.
+  virtual void initialise(State& /*s*/) {}
+  /// Forces at t^n added to s.nodes.force (positions x^n, velocities v^{n-1/2}); the block's
+  /// stable step and failures into `report`.
+  virtual void forces(State& /*s*/, ForceReport& /*report*/) {}
+  /// v^{n-1/2} -> v^{n+1/2} over t.mean for the nodes the block moves itself (the other nodes
+  /// took a = f / m before). Returns the lowest node with a non-finite velocity, or -1.
+  virtual Index advance_velocities(State& /*s*/, const StepTimes& /*t*/) { return -1; }
+  /// Velocity-level conditions, after every block's velocities.
+  virtual void constrain(State& /*s*/, const StepTimes& /*t*/) {}
+  /// After every condition: take up what the conditions changed.
+  virtual void after_constraints(State& /*s*/) {}
+  /// x^n -> x^{n+1} for the nodes the block places itself, after the other nodes moved.
+  virtual void advance_positions(State& /*s*/, double /*dt*/) {}
+  /// Entity updates per cycle (element and particle counts of the timing summary).
+  [[nodiscard]] virtual long elements() const { return 0; }
+  [[nodiscard]] virtual long particles() const { return 0; }
+  /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
+  /// of the phase it was charged to.
+  virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}
+};
+
+using Blocks = std::vector<std::unique_ptr<Block>>;
+
+/// The blocks of a compiled state, in the loop's order (block_registry.cpp).
+Blocks make_blocks(State& s);
+
+/// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
+void add_hexahedra_blocks(State& s, Blocks& blocks);         // fe/hexahedra_block.cpp
+void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
+void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
+void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp
+void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_blocks.cpp
+void add_rigid_wall_blocks(State& s, Blocks& blocks);        // loads/condition_blocks.cpp
+void add_body_load_blocks(State& s, Blocks& blocks);         // loads/condition_blocks.cpp
+void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
+
+/// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
+std::string element_name(const State& s, Index element);
+std::string particle_name(const State& s, std::size_t domain, Index particle);
+
+}  // namespace mcdyna::solver

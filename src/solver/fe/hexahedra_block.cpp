@@ -1,0 +1,64 @@
+// The deformable 8-node solids as one block of the time loop: the element pass (strain rate,
+// stress, forces per corner, step and mass scaling, erosion) and the gather of the corner forces
+// into the nodes in the fixed order of Nodes::corners.
+#include <fmt/format.h>
+
+#include "solver/block.hpp"
+#include "solver/fe/solid_elements.hpp"
+
+namespace mcdyna::solver {
+
+std::string element_name(const State& s, Index e) {
+  const auto i = static_cast<std::size_t>(e);
+  return fmt::format("solid element {} (part {})", s.solids.ids[i],
+                     s.parts[static_cast<std::size_t>(s.solids.part[i])].id);
+}
+
+namespace {
+
+// Nodal added mass from the elements' added mass (gather, fixed order).
+void refresh_added_mass(State& s) {
+  Nodes& nd = s.nodes;
+#pragma omp parallel for schedule(static)
+  for (Index n = 0; n < nd.count(); ++n) {
+    double sum = 0.0;
+    for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
+         k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k)
+      sum += s.solids
+                 .added_mass[static_cast<std::size_t>(nd.corners[static_cast<std::size_t>(k)] / 8)];
+    nd.added_mass[static_cast<std::size_t>(n)] = sum / 8.0;
+  }
+}
+
+class HexahedraBlock final : public Block {
+ public:
+  explicit HexahedraBlock(long count) : count_(count) {}
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
+  [[nodiscard]] long elements() const override { return count_; }
+
+  void forces(State& s, ForceReport& r) override {
+    const ElementPassResult e = solid_element_pass(
+        s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
+    gather_solid_forces(s);
+    if (e.mass_changed) refresh_added_mass(s);
+    if (e.critical_step < r.critical_step) {
+      r.critical_step = e.critical_step;
+      r.controlling_element = e.controlling;
+    }
+    if (e.inverted >= 0)
+      r.fail("negative volume in " + element_name(s, e.inverted), true);
+    else if (e.non_finite >= 0)
+      r.fail("non-finite stress or wave speed in " + element_name(s, e.non_finite), false);
+  }
+
+ private:
+  long count_;
+};
+
+}  // namespace
+
+void add_hexahedra_blocks(State& s, Blocks& blocks) {
+  if (s.solids.count() > 0) blocks.push_back(std::make_unique<HexahedraBlock>(s.solids.count()));
+}
+
+}  // namespace mcdyna::solver

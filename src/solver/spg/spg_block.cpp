@@ -1,0 +1,77 @@
+// An SPG part as one block of the time loop (spg_solver.hpp): its particle pass in the force
+// phase, its velocity update (MC-SPG scatter and gather, Eqs. 13, 25-30) after the nodes' own,
+// and the take-up of what constraints and walls changed.
+#include <fmt/format.h>
+
+#include "solver/block.hpp"
+#include "solver/spg/spg_solver.hpp"
+
+namespace mcdyna::solver {
+
+std::string particle_name(const State& s, std::size_t domain, Index particle) {
+  const spg::Domain& d = s.spg[domain];
+  return fmt::format(
+      "SPG particle at node {} (part {})",
+      s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(particle)])],
+      s.parts[static_cast<std::size_t>(d.part)].id);
+}
+
+namespace {
+
+class SpgBlock final : public Block {
+ public:
+  SpgBlock(std::size_t domain, long count) : domain_(domain), count_(count) {}
+  // Charged to "elements" as a whole; split_times moves its finer phases out at the end.
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
+  [[nodiscard]] long particles() const override { return count_; }
+
+  void initialise(State& s) override {
+    spg::Domain& d = s.spg[domain_];
+    if (d.renewals == 0) spg::initialise(s, d);
+  }
+
+  void forces(State& s, ForceReport& r) override {
+    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[domain_], s.step);
+    if (p.critical_step < r.critical_step) {
+      r.critical_step = p.critical_step;
+      r.controlling_element = -1;
+      r.controlling_domain = domain_;
+      r.controlling_particle = p.controlling;
+    }
+    if (p.inverted >= 0)
+      r.fail("non-positive Jacobian or volume at " + particle_name(s, domain_, p.inverted), true);
+    else if (p.non_finite >= 0)
+      r.fail("non-finite stress or wave speed at " + particle_name(s, domain_, p.non_finite),
+             false);
+  }
+
+  Index advance_velocities(State& s, const StepTimes& t) override {
+    return spg::advance_velocities(s, s.spg[domain_], t.mean);
+  }
+
+  void after_constraints(State& s) override { spg::absorb_constraints(s, s.spg[domain_]); }
+
+  void split_times(const State& s, PhaseTimes& phases) const override {
+    const spg::SpgTimes& t = s.spg[domain_].times;
+    constexpr int kSplit = PhaseTimes::spg_step_estimate - PhaseTimes::spg_neighbours + 1;
+    const double split[kSplit] = {t.neighbours,    t.shape_functions, t.smoothing, t.stress,
+                                  t.stabilization, t.force,           t.bonds,     t.step_estimate};
+    for (int k = 0; k < kSplit; ++k) {
+      phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
+      phases.seconds[PhaseTimes::elements] -= split[k];
+    }
+  }
+
+ private:
+  std::size_t domain_;
+  long count_;
+};
+
+}  // namespace
+
+void add_spg_blocks(State& s, Blocks& blocks) {
+  for (std::size_t k = 0; k < s.spg.size(); ++k)
+    blocks.push_back(std::make_unique<SpgBlock>(k, s.spg[k].count()));
+}
+
+}  // namespace mcdyna::solver
