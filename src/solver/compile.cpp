@@ -221,8 +221,7 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
         so.initial_volume.push_back(v0);
         so.mass.push_back(mass);
         so.eos_energy.push_back(cm.eos.initial_energy);
-        so.temperature.push_back(cm.model == MaterialModel::johnson_cook ? cm.room_temperature
-                                                                         : 0.0);
+        so.temperature.push_back(cm.initial_temperature());
         for (const Index v : conn)
           nd.mass[static_cast<std::size_t>(v)] += mass / 8.0;
       }

@@ -1,5 +1,6 @@
 // Deck materials (+ the part's EOS and *MAT_ADD_EROSION) -> solver Material.
 #include <algorithm>
+#include <utility>
 
 #include "solver/compile.hpp"
 
@@ -32,8 +33,8 @@ EosParams compile_eos(const model::Eos& e) {
 
 // MAT_024 hardening: LCSS curve (plastic strain -> yield stress), else the EPS/ES pairs, else
 // bilinear from SIGY and ETAN.
-void piecewise_hardening(const model::ModelDatabase& m, const model::Material& mat, Material& out,
-                         core::Diagnostics& d) {
+void piecewise_hardening(const model::ModelDatabase& m, const model::Material& mat,
+                         PiecewiseLinearModel& out, core::Diagnostics& d) {
   const auto& p = mat.piecewise_linear;
   if (p.stress_strain_curve != 0) {
     const Index c = curve_index(m, p.stress_strain_curve);
@@ -76,24 +77,25 @@ void piecewise_hardening(const model::ModelDatabase& m, const model::Material& m
 
 void johnson_cook(const model::Material& mat, Material& out, core::Diagnostics& d) {
   const auto& j = mat.johnson_cook;
-  out.model = MaterialModel::johnson_cook;
+  JohnsonCookModel jc;
+  jc.a = j.a;
+  jc.b = j.b;
+  jc.n = j.n;
+  jc.c = j.c;
+  jc.m = j.m;
+  jc.melt_temperature = j.melt_temperature;
+  jc.reference_rate = j.reference_strain_rate > 0.0 ? j.reference_strain_rate : 1.0;
+  jc.damage = j.damage;
+  jc.min_failure_strain = j.min_failure_strain;
+  const bool any = std::any_of(j.damage.begin(), j.damage.end(), [](double x) { return x != 0.0; });
+  jc.damage_active = any && j.erode_flag == 0.0;
+  out.model = jc;
   out.shear_modulus = j.shear_modulus;
   out.bulk_modulus = 0.0;  // the EOS gives the pressure
-  out.jc_a = j.a;
-  out.jc_b = j.b;
-  out.jc_n = j.n;
-  out.jc_c = j.c;
-  out.jc_m = j.m;
-  out.melt_temperature = j.melt_temperature;
   out.room_temperature = j.room_temperature;
-  out.reference_rate = j.reference_strain_rate > 0.0 ? j.reference_strain_rate : 1.0;
   out.specific_heat = j.specific_heat;
   out.pressure_cutoff = j.pressure_cutoff;
   out.spall = static_cast<int>(j.spall_type);
-  out.damage = j.damage;
-  out.min_failure_strain = j.min_failure_strain;
-  const bool any = std::any_of(j.damage.begin(), j.damage.end(), [](double x) { return x != 0.0; });
-  out.damage_active = any && j.erode_flag == 0.0;
   // The return mapping relies on a flow stress that does not fall with plastic strain.
   if (j.b < 0.0 || j.n <= 0.0) {
     d.error(mat.loc, "*MAT_JOHNSON_COOK {}: B = {} and N = {} must give hardening (B >= 0, N > 0)",
@@ -117,19 +119,20 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
   out.density = mat.density;
   switch (mat.kind) {
     case model::MaterialKind::elastic:
-      out.model = MaterialModel::elastic;
+      out.model = ElasticModel{};
       elastic_moduli(out, mat.elastic.youngs_modulus, mat.elastic.poisson_ratio);
       break;
     case model::MaterialKind::plastic_kinematic: {
       const auto& p = mat.plastic_kinematic;
-      out.model = MaterialModel::plastic_kinematic;
-      elastic_moduli(out, p.youngs_modulus, p.poisson_ratio);
-      out.yield_stress = p.yield_stress;
-      out.hardening_modulus =
+      PlasticKinematicModel k;
+      k.yield_stress = p.yield_stress;
+      k.hardening_modulus =
           p.tangent_modulus * p.youngs_modulus / (p.youngs_modulus - p.tangent_modulus);
-      out.isotropic_fraction = p.hardening_mix;
-      out.cowper_symonds_c = p.cowper_symonds_c;
-      out.cowper_symonds_p = p.cowper_symonds_p;
+      k.isotropic_fraction = p.hardening_mix;
+      k.cowper_symonds_c = p.cowper_symonds_c;
+      k.cowper_symonds_p = p.cowper_symonds_p;
+      out.model = k;
+      elastic_moduli(out, p.youngs_modulus, p.poisson_ratio);
       out.failure_strain = p.failure_strain;
       if (p.viscoplastic != 0.0) {
         d.warning(mat.loc,
@@ -141,13 +144,14 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
     }
     case model::MaterialKind::piecewise_linear: {
       const auto& p = mat.piecewise_linear;
-      out.model = MaterialModel::piecewise_linear;
+      PiecewiseLinearModel t;
+      t.cowper_symonds_c = p.cowper_symonds_c;
+      t.cowper_symonds_p = p.cowper_symonds_p;
+      piecewise_hardening(m, mat, t, d);
+      out.model = std::move(t);
       elastic_moduli(out, p.youngs_modulus, p.poisson_ratio);
-      out.cowper_symonds_c = p.cowper_symonds_c;
-      out.cowper_symonds_p = p.cowper_symonds_p;
       out.failure_strain =
           p.failure_strain < 1.0e20 && p.failure_strain > 0.0 ? p.failure_strain : 0.0;
-      piecewise_hardening(m, mat, out, d);
       break;
     }
     case model::MaterialKind::johnson_cook:

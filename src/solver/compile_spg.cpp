@@ -154,8 +154,7 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
     }
     dom.pressure.assign(n, 0.0);
     dom.eos_energy.assign(n, mat.eos.initial_energy);
-    dom.temperature.assign(n,
-                           mat.model == MaterialModel::johnson_cook ? mat.room_temperature : 0.0);
+    dom.temperature.assign(n, mat.initial_temperature());
     dom.viscosity.assign(n, 0.0);
     dom.internal_energy.assign(n, 0.0);
     dom.failed.assign(n, 0);

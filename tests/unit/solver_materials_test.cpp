@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <variant>
 
 #include "solver/material/constitutive.hpp"
 
@@ -23,9 +24,12 @@ struct ShearPoint {
   double shear(const Material& m, double d, double rate = 0.0, double temperature = 0.0,
                double pressure = 0.0) {
     const double de[6] = {0, 0, 0, d, 0, 0};
-    const PointResult r =
-        update_deviator(m, PointInput{de, rate, temperature, pressure},
-                        PointState{s, m.has_back_stress() ? alpha : nullptr, ep, damage});
+    const PointResult r = std::visit(
+        [&](const auto& model) {
+          return update_deviator(m, model, PointInput{de, rate, temperature, pressure},
+                                 PointState{s, m.has_back_stress() ? alpha : nullptr, ep, damage});
+        },
+        m.model);
     failed = failed || r.failed;
     return r.plastic_increment;
   }
@@ -38,13 +42,18 @@ double equivalent(double g) {
   return 2.0 * g / std::sqrt(3.0);
 }
 
+PlasticKinematicModel kinematic_model(double beta) {
+  PlasticKinematicModel k;
+  k.yield_stress = 200.0;
+  k.hardening_modulus = 2.0e3;
+  k.isotropic_fraction = beta;
+  return k;
+}
+
 Material kinematic_material(double beta) {
   Material m;
-  m.model = MaterialModel::plastic_kinematic;
+  m.model = kinematic_model(beta);
   m.shear_modulus = 80.0e3;
-  m.yield_stress = 200.0;
-  m.hardening_modulus = 2.0e3;
-  m.isotropic_fraction = beta;
   return m;
 }
 
@@ -52,20 +61,21 @@ Material kinematic_material(double beta) {
 
 TEST_CASE("MAT_003: linear hardening in shear follows q = sy + Ep ep exactly") {
   const Material m = kinematic_material(1.0);
+  const PlasticKinematicModel& k = std::get<PlasticKinematicModel>(m.model);
   ShearPoint p;
   const double step = 1.0e-4;
   for (int i = 1; i <= 60; ++i) {
     p.shear(m, step);
     const double eq = equivalent(i * step);
     const double g = m.shear_modulus;
-    if (3.0 * g * eq <= m.yield_stress) {
+    if (3.0 * g * eq <= k.yield_stress) {
       CHECK(p.ep == 0.0);
       CHECK(p.q() == doctest::Approx(3.0 * g * eq).epsilon(1e-12));
     } else {
       // q = 3G (eq - ep) = sy + Ep ep
-      const double ep = (3.0 * g * eq - m.yield_stress) / (3.0 * g + m.hardening_modulus);
+      const double ep = (3.0 * g * eq - k.yield_stress) / (3.0 * g + k.hardening_modulus);
       CHECK(p.ep == doctest::Approx(ep).epsilon(1e-10));
-      CHECK(p.q() == doctest::Approx(m.yield_stress + m.hardening_modulus * ep).epsilon(1e-10));
+      CHECK(p.q() == doctest::Approx(k.yield_stress + k.hardening_modulus * ep).epsilon(1e-10));
     }
   }
   CHECK(p.ep > 0.005);  // the loading went well into the plastic range
@@ -92,9 +102,11 @@ TEST_CASE("MAT_003: reverse yield at -q_max (isotropic) and at q_max - 2 sy (kin
 
 TEST_CASE("MAT_003: Cowper-Symonds scales the yield stress, FS erodes") {
   Material m = kinematic_material(1.0);
-  m.hardening_modulus = 0.0;
-  m.cowper_symonds_c = 40.0;
-  m.cowper_symonds_p = 5.0;
+  PlasticKinematicModel k = kinematic_model(1.0);
+  k.hardening_modulus = 0.0;
+  k.cowper_symonds_c = 40.0;
+  k.cowper_symonds_p = 5.0;
+  m.model = k;
   m.failure_strain = 0.02;
   ShearPoint p;
   const double rate = 1000.0;
@@ -112,10 +124,11 @@ TEST_CASE("MAT_003: Cowper-Symonds scales the yield stress, FS erodes") {
 
 TEST_CASE("MAT_024: the flow stress follows the hardening curve, FAIL erodes") {
   Material m;
-  m.model = MaterialModel::piecewise_linear;
+  PiecewiseLinearModel t;
+  t.curve_strain = {0.0, 0.05, 0.2};
+  t.curve_stress = {100.0, 150.0, 180.0};
+  m.model = t;
   m.shear_modulus = 26.0e3;
-  m.curve_strain = {0.0, 0.05, 0.2};
-  m.curve_stress = {100.0, 150.0, 180.0};
   m.erosion_plastic_strain = 0.15;  // as *MAT_ADD_EROSION EPSP / MAT_024 FAIL
   ShearPoint p;
   auto curve = [&](double ep) {
@@ -134,18 +147,19 @@ TEST_CASE("MAT_024: the flow stress follows the hardening curve, FAIL erodes") {
 
 TEST_CASE("MAT_015 Johnson-Cook: flow stress with rate and thermal factors, damage sum") {
   Material m;
-  m.model = MaterialModel::johnson_cook;
+  JohnsonCookModel jc;
+  jc.a = 324.0;
+  jc.b = 114.0;
+  jc.n = 0.42;
+  jc.c = 0.002;
+  jc.m = 1.34;
+  jc.melt_temperature = 925.0;
+  jc.reference_rate = 1.0;
+  jc.damage = {-0.77, 1.45, -0.47, 0.0, 1.6};
+  jc.damage_active = true;
+  m.model = jc;
   m.shear_modulus = 26.0e3;  // MPa
-  m.jc_a = 324.0;
-  m.jc_b = 114.0;
-  m.jc_n = 0.42;
-  m.jc_c = 0.002;
-  m.jc_m = 1.34;
   m.room_temperature = 293.0;
-  m.melt_temperature = 925.0;
-  m.reference_rate = 1.0;
-  m.damage = {-0.77, 1.45, -0.47, 0.0, 1.6};
-  m.damage_active = true;
   ShearPoint p;
   const double rate = 1.0e4, temperature = 500.0, pressure = -100.0;
   const double ts = (temperature - 293.0) / (925.0 - 293.0);
@@ -172,13 +186,14 @@ TEST_CASE("MAT_015 Johnson-Cook: flow stress with rate and thermal factors, dama
 
 TEST_CASE("MAT_015 Johnson-Cook: the damage sum reaching 1 erodes the point") {
   Material m;
-  m.model = MaterialModel::johnson_cook;
+  JohnsonCookModel jc;
+  jc.a = 300.0;
+  jc.b = 100.0;
+  jc.n = 0.5;
+  jc.damage = {0.1, 0.0, 0.0, 0.0, 0.0};  // constant failure strain 0.1
+  jc.damage_active = true;
+  m.model = jc;
   m.shear_modulus = 26.0e3;
-  m.jc_a = 300.0;
-  m.jc_b = 100.0;
-  m.jc_n = 0.5;
-  m.damage = {0.1, 0.0, 0.0, 0.0, 0.0};  // constant failure strain 0.1
-  m.damage_active = true;
   ShearPoint p;
   for (int i = 0; i < 200 && !p.failed; ++i)
     p.shear(m, 1.0e-3);

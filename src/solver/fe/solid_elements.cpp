@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include "solver/fe/hex_geometry.hpp"
 #include "solver/material/constitutive.hpp"
@@ -88,14 +89,15 @@ VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, do
           v.zero_deviator, v.density, v.wave_speed_squared};
 }
 
-// Deviatoric update of one point; returns the work done per unit volume.
-double point_update(ElementContext& c, Index point, const Kinematics& k, double temperature,
-                    double pressure, bool& failed) {
+// Deviatoric update of one point with the block's model; returns the work per unit volume.
+template <class Model>
+double point_update(ElementContext& c, const Model& model, Index point, const Kinematics& k,
+                    double temperature, double pressure, bool& failed) {
   MaterialPoints& mp = c.st.solids.points;
   const auto p = static_cast<std::size_t>(point);
   double* alpha = mp.back_stress.size() > 0 ? mp.back_stress.col(point).data() : nullptr;
   return deviatoric_point_update(
-      c.mat, k, c.in.step, temperature, pressure,
+      c.mat, model, k, c.in.step, temperature, pressure,
       PointState{mp.deviator.col(point).data(), alpha, mp.plastic_strain[p], mp.damage[p]}, failed);
 }
 
@@ -225,7 +227,8 @@ double* start_element(State& st, Index e, Corners& x, Corners& v) {
   return f;
 }
 
-ElementOutcome one_point_element(ElementContext& c, Index e) {
+template <class Model>
+ElementOutcome one_point_element(ElementContext& c, const Model& model, Index e) {
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
   Corners x, v;
@@ -240,7 +243,7 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   const Index point = c.block.point_begin + (e - c.block.begin);
   bool failed = false;
   const double dev_work = work_volume(k.objective, s.volume[i], volume) *
-                          point_update(c, point, k, s.temperature[i], s.pressure[i], failed);
+                          point_update(c, model, point, k, s.temperature[i], s.pressure[i], failed);
   const double length = volume / hex::max_face_area(x);
   const VolumetricResult vr =
       volumetric_update(c, e, volume, k.trace, dev_work, length, k.objective);
@@ -261,7 +264,8 @@ ElementOutcome one_point_element(ElementContext& c, Index e) {
   return {vr.step, false, failed};
 }
 
-ElementOutcome selective_reduced_element(ElementContext& c, Index e) {
+template <class Model>
+ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, Index e) {
   Solids& s = c.st.solids;
   const auto i = static_cast<std::size_t>(e);
   Corners x, v;
@@ -296,7 +300,7 @@ ElementOutcome selective_reduced_element(ElementContext& c, Index e) {
   for (int p = 0; p < 8; ++p) {
     k[p].trace = trace;
     dev_work +=
-        g[p].det * point_update(c, first + p, k[p], s.temperature[i], s.pressure[i], failed);
+        g[p].det * point_update(c, model, first + p, k[p], s.temperature[i], s.pressure[i], failed);
   }
   // OSU 1: the work on the mid-step volume (the points' weights scale with the element's).
   if (c.block.objective) dev_work *= work_volume(true, s.volume[i], volume) / volume;
@@ -323,68 +327,81 @@ double scale_mass(Solids& s, std::size_t i, double step, const ElementPassInput&
   return in.mass_scaling_step / in.scale_factor;
 }
 
-}  // namespace
-
-ElementPassResult solid_element_pass(State& state, const ElementPassInput& input) {
-  Solids& s = state.solids;
-  ElementPassResult result;
-  StepMin global;
+// What the pass gathers over blocks and threads.
+struct PassTotals {
+  StepMin step;
   Index inverted = std::numeric_limits<Index>::max();
   Index non_finite = std::numeric_limits<Index>::max();
   Index eroded = 0;
   bool mass_changed = false;
-  for (const SolidBlock& block : s.blocks) {
-    ElementContext c{state, block, state.materials[static_cast<std::size_t>(block.material)],
-                     input};
-    const bool one_point = block.formulation == SolidFormulation::one_point;
-    // Small blocks run serially: a parallel region costs more than a few elements.
+};
+
+// The elements of one block with its material's deviatoric model (visited once per block).
+template <class Model>
+void block_pass(ElementContext& c, const Model& model, PassTotals& totals) {
+  Solids& s = c.st.solids;
+  const SolidBlock& block = c.block;
+  const bool one_point = block.formulation == SolidFormulation::one_point;
+  // Small blocks run serially: a parallel region costs more than a few elements.
 #pragma omp parallel if (block.end - block.begin > kParallelMinimum)
-    {
-      StepMin local;
-      Index local_inverted = std::numeric_limits<Index>::max();
-      Index local_non_finite = std::numeric_limits<Index>::max();
-      Index local_eroded = 0;
-      bool local_changed = false;
+  {
+    StepMin local;
+    Index local_inverted = std::numeric_limits<Index>::max();
+    Index local_non_finite = std::numeric_limits<Index>::max();
+    Index local_eroded = 0;
+    bool local_changed = false;
 #pragma omp for schedule(static, kElementChunk) nowait
-      for (Index e = block.begin; e < block.end; ++e) {
-        const auto i = static_cast<std::size_t>(e);
-        if (s.eroded[i]) continue;
-        const ElementOutcome o =
-            one_point ? one_point_element(c, e) : selective_reduced_element(c, e);
-        if (o.inverted) {
-          local_inverted = std::min(local_inverted, e);
-          continue;
-        }
-        if (!std::isfinite(o.step)) {  // NaN or Inf stress, energy or wave speed
-          local_non_finite = std::min(local_non_finite, e);
-          continue;
-        }
-        if (o.failed) {
-          s.eroded[i] = 1;
-          std::fill(&s.corner_force[24 * i], &s.corner_force[24 * i] + 24, 0.0);
-          ++local_eroded;
-          continue;
-        }
-        const double step = scale_mass(s, i, o.step, input, local_changed);
-        s.time_step[i] = step;
-        local.take(step, e);
+    for (Index e = block.begin; e < block.end; ++e) {
+      const auto i = static_cast<std::size_t>(e);
+      if (s.eroded[i]) continue;
+      const ElementOutcome o =
+          one_point ? one_point_element(c, model, e) : selective_reduced_element(c, model, e);
+      if (o.inverted) {
+        local_inverted = std::min(local_inverted, e);
+        continue;
       }
+      if (!std::isfinite(o.step)) {  // NaN or Inf stress, energy or wave speed
+        local_non_finite = std::min(local_non_finite, e);
+        continue;
+      }
+      if (o.failed) {
+        s.eroded[i] = 1;
+        std::fill(&s.corner_force[24 * i], &s.corner_force[24 * i] + 24, 0.0);
+        ++local_eroded;
+        continue;
+      }
+      const double step = scale_mass(s, i, o.step, c.in, local_changed);
+      s.time_step[i] = step;
+      local.take(step, e);
+    }
 #pragma omp critical
-      {
-        global.take(local.step, local.element);
-        inverted = std::min(inverted, local_inverted);
-        non_finite = std::min(non_finite, local_non_finite);
-        eroded += local_eroded;
-        mass_changed = mass_changed || local_changed;
-      }
+    {
+      totals.step.take(local.step, local.element);
+      totals.inverted = std::min(totals.inverted, local_inverted);
+      totals.non_finite = std::min(totals.non_finite, local_non_finite);
+      totals.eroded += local_eroded;
+      totals.mass_changed = totals.mass_changed || local_changed;
     }
   }
-  result.critical_step = global.step;
-  result.controlling = global.element;
-  result.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
-  result.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
-  result.newly_eroded = eroded;
-  result.mass_changed = mass_changed;
+}
+
+}  // namespace
+
+ElementPassResult solid_element_pass(State& state, const ElementPassInput& input) {
+  PassTotals totals;
+  for (const SolidBlock& block : state.solids.blocks) {
+    const Material& mat = state.materials[static_cast<std::size_t>(block.material)];
+    ElementContext c{state, block, mat, input};
+    std::visit([&](const auto& model) { block_pass(c, model, totals); }, mat.model);
+  }
+  ElementPassResult result;
+  result.critical_step = totals.step.step;
+  result.controlling = totals.step.element;
+  result.inverted = totals.inverted == std::numeric_limits<Index>::max() ? -1 : totals.inverted;
+  result.non_finite =
+      totals.non_finite == std::numeric_limits<Index>::max() ? -1 : totals.non_finite;
+  result.newly_eroded = totals.eroded;
+  result.mass_changed = totals.mass_changed;
   return result;
 }
 

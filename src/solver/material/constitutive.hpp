@@ -4,6 +4,7 @@
 /// Tensors are 6-vectors xx yy zz xy yz zx with tensor (not engineering) shear components.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "solver/material/material.hpp"
 
@@ -61,12 +62,12 @@ double radial_return(double q, double shear, double ep, double sy0, double h0, Y
   return dp;
 }
 
-inline double cowper_symonds(const Material& m, double rate) {
-  if (m.cowper_symonds_c <= 0.0 || rate <= 0.0) return 1.0;
-  return 1.0 + std::pow(rate / m.cowper_symonds_c, 1.0 / m.cowper_symonds_p);
+inline double cowper_symonds(double c, double p, double rate) {
+  if (c <= 0.0 || rate <= 0.0) return 1.0;
+  return 1.0 + std::pow(rate / c, 1.0 / p);
 }
 
-inline void table_yield(const Material& m, double ep, double& sy, double& slope) {
+inline void table_yield(const PiecewiseLinearModel& m, double ep, double& sy, double& slope) {
   const auto& x = m.curve_strain;
   const auto& y = m.curve_stress;
   if (x.size() == 1) {
@@ -82,20 +83,20 @@ inline void table_yield(const Material& m, double ep, double& sy, double& slope)
 }
 
 // Homologous temperature T* = (T - TR) / (TM - TR); 0 when TM is not above TR (no softening).
-inline double homologous_temperature(const Material& m, double temperature) {
-  if (m.melt_temperature <= m.room_temperature) return 0.0;
-  return (temperature - m.room_temperature) / (m.melt_temperature - m.room_temperature);
+inline double homologous_temperature(const JohnsonCookModel& m, double room, double temperature) {
+  if (m.melt_temperature <= room) return 0.0;
+  return (temperature - room) / (m.melt_temperature - room);
 }
 
 // 1 - T*^M for 0 < T* < 1.
-inline double jc_thermal_factor(const Material& m, double ts) {
-  return ts <= 0.0 ? 1.0 : 1.0 - std::pow(ts, m.jc_m);
+inline double jc_thermal_factor(const JohnsonCookModel& m, double ts) {
+  return ts <= 0.0 ? 1.0 : 1.0 - std::pow(ts, m.m);
 }
 
 // A lower bound of 1 - T*^M that needs no power: 1 - T* when M >= 1, else 0.
-inline double jc_thermal_floor(const Material& m, double ts) {
+inline double jc_thermal_floor(const JohnsonCookModel& m, double ts) {
   if (ts <= 0.0) return 1.0;
-  return m.jc_m >= 1.0 ? 1.0 - ts : 0.0;
+  return m.m >= 1.0 ? 1.0 - ts : 0.0;
 }
 
 // Scales the trial deviator (equivalent stress q) back onto the yield surface; returns dp.
@@ -113,110 +114,123 @@ double isotropic_return(double* s, double q, double shear, double& ep, double sy
 
 }  // namespace detail
 
-/// Deviatoric stress update of one point (Jaumann rotation already applied to its state).
-inline PointResult update_deviator(const Material& m, const PointInput& in, PointState st) {
+// The return of each deviatoric model, after the elastic trial s += 2 G de (update_deviator).
+
+inline void return_deviator(const Material& /*m*/, const ElasticModel& /*model*/,
+                            const PointInput& /*in*/, PointState /*st*/, PointResult& /*r*/) {}
+
+// Mixed hardening (BETA) with Cowper-Symonds scaling of the yield stress.
+inline void return_deviator(const Material& m, const PlasticKinematicModel& k, const PointInput& in,
+                            PointState st, PointResult& r) {
+  double* s = st.deviator;
+  const double rf =
+      detail::cowper_symonds(k.cowper_symonds_c, k.cowper_symonds_p, in.effective_strain_rate);
+  const double beta = k.isotropic_fraction, hp = k.hardening_modulus;
+  double xi[6];
+  for (int i = 0; i < 6; ++i)
+    xi[i] = s[i] - (st.back_stress ? st.back_stress[i] : 0.0);
+  const double q = std::sqrt(1.5 * contract(xi, xi));
+  const double sy = rf * (k.yield_stress + beta * hp * st.plastic_strain);
+  if (q > sy) {
+    const double dp = (q - sy) / (3.0 * m.shear_modulus + hp * (beta * rf + (1.0 - beta)));
+    const double shrink = 3.0 * m.shear_modulus * dp / q;
+    const double shift = (1.0 - beta) * hp * dp / q;
+    for (int i = 0; i < 6; ++i) {
+      s[i] -= shrink * xi[i];
+      if (st.back_stress) st.back_stress[i] += shift * xi[i];
+    }
+    st.plastic_strain += dp;
+    r.plastic_increment = dp;
+  }
+}
+
+inline void return_deviator(const Material& m, const PiecewiseLinearModel& t, const PointInput& in,
+                            PointState st, PointResult& r) {
+  double* s = st.deviator;
+  const double rf =
+      detail::cowper_symonds(t.cowper_symonds_c, t.cowper_symonds_p, in.effective_strain_rate);
+  double sy0 = 0.0, slope = 0.0;
+  detail::table_yield(t, st.plastic_strain, sy0, slope);
+  const double q = std::sqrt(1.5 * contract(s, s));
+  r.plastic_increment = detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, rf * sy0,
+                                                 rf * slope, [&](double ep, double& sy, double& h) {
+                                                   detail::table_yield(t, ep, sy, h);
+                                                   sy *= rf;
+                                                   h *= rf;
+                                                 });
+}
+
+// sigma_y = (A + B ep^N)(1 + C ln rate*)(1 - T*^M); rate* clamped at 1 so slow rates do not
+// soften below the quasi-static curve.
+inline void return_deviator(const Material& m, const JohnsonCookModel& jc, const PointInput& in,
+                            PointState st, PointResult& r) {
+  double* s = st.deviator;
+  const double ts = detail::homologous_temperature(jc, m.room_temperature, in.temperature);
+  if (ts >= 1.0) {  // molten: no deviatoric strength
+    for (int i = 0; i < 6; ++i)
+      s[i] = 0.0;
+    return;
+  }
+  // The flow stress is at least A times a lower bound of the rate and thermal factors (B >= 0,
+  // checked at compile): most elastic points are settled without log or pow.
+  const double q = std::sqrt(1.5 * contract(s, s));
+  const double rate_floor = jc.c >= 0.0 ? 1.0 : 0.0;
+  if (q <= rate_floor * detail::jc_thermal_floor(jc, ts) * jc.a) return;
+  const double rate_star = std::max(in.effective_strain_rate / jc.reference_rate, 1.0);
+  const double rate_factor = jc.c != 0.0 ? 1.0 + jc.c * std::log(rate_star) : 1.0;
+  if (rate_factor <= 0.0) {
+    for (int i = 0; i < 6; ++i)
+      s[i] = 0.0;
+    return;
+  }
+  const double rf = rate_factor * detail::jc_thermal_factor(jc, ts);
+  if (q <= rf * jc.a) return;
+  auto yield = [&](double ep, double& sy, double& h) {
+    if (ep > 0.0) {
+      const double pw = std::pow(ep, jc.n);
+      sy = rf * (jc.a + jc.b * pw);
+      h = rf * jc.b * jc.n * pw / ep;
+    } else {
+      // Slope B N ep^(N-1) at ep = 0: 0 for N > 1, B for N = 1, unbounded for N < 1 (a stiff
+      // stand-in; the bracketed Newton iteration takes it from there).
+      sy = rf * jc.a;
+      if (jc.n > 1.0)
+        h = 0.0;
+      else if (jc.n == 1.0)
+        h = rf * jc.b;
+      else
+        h = 1.0e3 * m.shear_modulus;
+    }
+  };
+  double sy0 = 0.0, h0 = 0.0;
+  yield(st.plastic_strain, sy0, h0);
+  const double dp =
+      detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, sy0, h0, yield);
+  r.plastic_increment = dp;
+  if (dp > 0.0 && jc.damage_active) {
+    const double q_returned = std::sqrt(1.5 * contract(s, s));
+    const double triax = q_returned > 0.0 ? -in.pressure / q_returned : 0.0;
+    const auto& d = jc.damage;
+    double ef = (d[0] + d[1] * std::exp(d[2] * triax)) * (1.0 + d[3] * std::log(rate_star)) *
+                (1.0 + d[4] * ts);
+    ef = std::max(ef, jc.min_failure_strain);
+    st.damage = std::min(1.0, st.damage + dp / ef);
+    if (st.damage >= 1.0) r.failed = true;
+  }
+}
+
+/// Deviatoric stress update of one point (Jaumann rotation already applied to its state) with
+/// the material's deviatoric model `model` (the alternative its block visited).
+template <class Model>
+inline PointResult update_deviator(const Material& m, const Model& model, const PointInput& in,
+                                   PointState st) {
   PointResult r;
   double* s = st.deviator;
   const double g2 = 2.0 * m.shear_modulus;
   for (int k = 0; k < 6; ++k)
     s[k] += g2 * in.deviatoric_increment[k];
-  switch (m.model) {
-    case MaterialModel::elastic:
-      return r;
-    case MaterialModel::plastic_kinematic: {
-      // Mixed hardening (BETA) with Cowper-Symonds scaling of the yield stress.
-      const double rf = detail::cowper_symonds(m, in.effective_strain_rate);
-      const double beta = m.isotropic_fraction, hp = m.hardening_modulus;
-      double xi[6];
-      for (int k = 0; k < 6; ++k)
-        xi[k] = s[k] - (st.back_stress ? st.back_stress[k] : 0.0);
-      const double q = std::sqrt(1.5 * contract(xi, xi));
-      const double sy = rf * (m.yield_stress + beta * hp * st.plastic_strain);
-      if (q > sy) {
-        const double dp = (q - sy) / (3.0 * m.shear_modulus + hp * (beta * rf + (1.0 - beta)));
-        const double shrink = 3.0 * m.shear_modulus * dp / q;
-        const double shift = (1.0 - beta) * hp * dp / q;
-        for (int k = 0; k < 6; ++k) {
-          s[k] -= shrink * xi[k];
-          if (st.back_stress) st.back_stress[k] += shift * xi[k];
-        }
-        st.plastic_strain += dp;
-        r.plastic_increment = dp;
-      }
-      break;
-    }
-    case MaterialModel::piecewise_linear: {
-      const double rf = detail::cowper_symonds(m, in.effective_strain_rate);
-      double sy0 = 0.0, slope = 0.0;
-      detail::table_yield(m, st.plastic_strain, sy0, slope);
-      const double q = std::sqrt(1.5 * contract(s, s));
-      r.plastic_increment =
-          detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, rf * sy0, rf * slope,
-                                   [&](double ep, double& sy, double& h) {
-                                     detail::table_yield(m, ep, sy, h);
-                                     sy *= rf;
-                                     h *= rf;
-                                   });
-      break;
-    }
-    case MaterialModel::johnson_cook: {
-      // sigma_y = (A + B ep^N)(1 + C ln rate*)(1 - T*^M); rate* clamped at 1 so slow rates do
-      // not soften below the quasi-static curve.
-      const double ts = detail::homologous_temperature(m, in.temperature);
-      if (ts >= 1.0) {  // molten: no deviatoric strength
-        for (int k = 0; k < 6; ++k)
-          s[k] = 0.0;
-        break;
-      }
-      // The flow stress is at least A times a lower bound of the rate and thermal factors
-      // (B >= 0, checked at compile): most elastic points are settled without log or pow.
-      const double q = std::sqrt(1.5 * contract(s, s));
-      const double rate_floor = m.jc_c >= 0.0 ? 1.0 : 0.0;
-      if (q <= rate_floor * detail::jc_thermal_floor(m, ts) * m.jc_a) break;
-      const double rate_star = std::max(in.effective_strain_rate / m.reference_rate, 1.0);
-      const double rate_factor = m.jc_c != 0.0 ? 1.0 + m.jc_c * std::log(rate_star) : 1.0;
-      if (rate_factor <= 0.0) {
-        for (int k = 0; k < 6; ++k)
-          s[k] = 0.0;
-        break;
-      }
-      const double rf = rate_factor * detail::jc_thermal_factor(m, ts);
-      if (q <= rf * m.jc_a) break;
-      auto yield = [&](double ep, double& sy, double& h) {
-        if (ep > 0.0) {
-          const double pw = std::pow(ep, m.jc_n);
-          sy = rf * (m.jc_a + m.jc_b * pw);
-          h = rf * m.jc_b * m.jc_n * pw / ep;
-        } else {
-          // Slope B N ep^(N-1) at ep = 0: 0 for N > 1, B for N = 1, unbounded for N < 1 (a stiff
-          // stand-in; the bracketed Newton iteration takes it from there).
-          sy = rf * m.jc_a;
-          if (m.jc_n > 1.0)
-            h = 0.0;
-          else if (m.jc_n == 1.0)
-            h = rf * m.jc_b;
-          else
-            h = 1.0e3 * m.shear_modulus;
-        }
-      };
-      double sy0 = 0.0, h0 = 0.0;
-      yield(st.plastic_strain, sy0, h0);
-      const double dp =
-          detail::isotropic_return(s, q, m.shear_modulus, st.plastic_strain, sy0, h0, yield);
-      r.plastic_increment = dp;
-      if (dp > 0.0 && m.damage_active) {
-        const double q_returned = std::sqrt(1.5 * contract(s, s));
-        const double triax = q_returned > 0.0 ? -in.pressure / q_returned : 0.0;
-        const auto& d = m.damage;
-        double ef = (d[0] + d[1] * std::exp(d[2] * triax)) * (1.0 + d[3] * std::log(rate_star)) *
-                    (1.0 + d[4] * ts);
-        ef = std::max(ef, m.min_failure_strain);
-        st.damage = std::min(1.0, st.damage + dp / ef);
-        if (st.damage >= 1.0) r.failed = true;
-      }
-      break;
-    }
-  }
+  if constexpr (std::is_same_v<Model, ElasticModel>) return r;
+  return_deviator(m, model, in, st, r);
   if ((m.failure_strain > 0.0 && st.plastic_strain >= m.failure_strain) ||
       (m.erosion_plastic_strain > 0.0 && st.plastic_strain >= m.erosion_plastic_strain)) {
     r.failed = true;
@@ -271,7 +285,7 @@ inline void update_pressure(const Material& m, const VolumeChange& v, double& pr
 /// Pressure cutoff PC of MAT_015 (PC = 0: none). Returns true when the deviator must be zeroed
 /// (SPALL 2 and 3: the element carries no tension once it has spalled).
 inline bool apply_pressure_cutoff(const Material& m, double& pressure) {
-  if (m.model != MaterialModel::johnson_cook || m.pressure_cutoff >= 0.0) return false;
+  if (m.pressure_cutoff >= 0.0) return false;  // set by MAT_015 only
   if (pressure >= m.pressure_cutoff) return false;
   if (m.spall == 1) {
     pressure = m.pressure_cutoff;

@@ -7,13 +7,13 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <variant>
 #include <vector>
 
 #include "model/entities.hpp"
 
 namespace mcdyna::solver {
 
-enum class MaterialModel { elastic, plastic_kinematic, piecewise_linear, johnson_cook };
 enum class EosModel { none, linear_polynomial, gruneisen };
 
 /// *EOS_LINEAR_POLYNOMIAL and *EOS_GRUNEISEN: p = a(mu) + b(mu) * E, affine in the internal
@@ -25,36 +25,64 @@ struct EosParams {
   double initial_energy = 0.0;  ///< E0, energy per initial volume
 };
 
+// The deviatoric models, one type each: a block visits its material's model once and runs its
+// points with that type (design.md §7), never switching per point.
+
+/// MAT_001: the deviator is 2 G times the deviatoric strain, nothing more.
+struct ElasticModel {};
+
+/// MAT_003: mixed hardening (BETA) with Cowper-Symonds scaling of the yield stress.
+struct PlasticKinematicModel {
+  double yield_stress = 0.0;
+  double hardening_modulus = 0.0;   ///< Ep = ETAN * E / (E - ETAN)
+  double isotropic_fraction = 1.0;  ///< BETA
+  double cowper_symonds_c = 0.0, cowper_symonds_p = 0.0;
+};
+
+/// MAT_024: isotropic hardening from a table of flow stress against plastic strain.
+struct PiecewiseLinearModel {
+  double cowper_symonds_c = 0.0, cowper_symonds_p = 0.0;
+  std::vector<double> curve_strain, curve_stress;  ///< hardening table (plastic strain)
+};
+
+/// MAT_015: (A + B ep^N)(1 + C ln rate*)(1 - T*^M), with the JC damage sum when active.
+struct JohnsonCookModel {
+  double a = 0.0, b = 0.0, n = 1.0, c = 0.0, m = 1.0;
+  double melt_temperature = 0.0;
+  double reference_rate = 1.0;
+  std::array<double, 5> damage{};      ///< D1..D5
+  bool damage_active = false;          ///< any Di != 0 and EROD == 0
+  double min_failure_strain = 1.0e-6;  ///< EFMIN
+};
+
+using DeviatoricModel =
+    std::variant<ElasticModel, PlasticKinematicModel, PiecewiseLinearModel, JohnsonCookModel>;
+
 struct Material {
   model::Id id = 0;
-  MaterialModel model = MaterialModel::elastic;
+  DeviatoricModel model = ElasticModel{};
   double density = 0.0;        ///< initial, mass/length^3
   double shear_modulus = 0.0;  ///< G, stress
   double bulk_modulus = 0.0;   ///< K for the wave speed (and hypoelastic pressure without EOS)
 
-  // MAT_003 / MAT_024
-  double yield_stress = 0.0;
-  double hardening_modulus = 0.0;   ///< Ep = ETAN * E / (E - ETAN)
-  double isotropic_fraction = 1.0;  ///< BETA (MAT_003); 1 for MAT_024
-  double cowper_symonds_c = 0.0, cowper_symonds_p = 0.0;
-  double failure_strain = 0.0;  ///< FS / FAIL: erode at this plastic strain (0 none)
-  std::vector<double> curve_strain, curve_stress;  ///< MAT_024 hardening table (plastic strain)
-
-  // MAT_015
-  double jc_a = 0.0, jc_b = 0.0, jc_n = 1.0, jc_c = 0.0, jc_m = 1.0;
-  double melt_temperature = 0.0, room_temperature = 0.0, reference_rate = 1.0;
-  double specific_heat = 0.0;    ///< CP; 0: no adiabatic heating
-  double pressure_cutoff = 0.0;  ///< PC (< 0); 0: none
+  // Adiabatic heating (MAT_015's CP and TR; CP = 0: none) and the pressure cutoff (MAT_015's PC
+  // and SPALL; PC = 0: none): the volumetric update of every point reads them.
+  double room_temperature = 0.0;
+  double specific_heat = 0.0;
+  double pressure_cutoff = 0.0;
   int spall = 2;
-  std::array<double, 5> damage{};      ///< D1..D5
-  bool damage_active = false;          ///< any Di != 0 and EROD == 0
-  double min_failure_strain = 1.0e-6;  ///< EFMIN
 
+  double failure_strain = 0.0;  ///< MAT_003 FS / MAT_024 FAIL: erode at this plastic strain
   EosParams eos;
   double erosion_plastic_strain = 0.0;  ///< *MAT_ADD_EROSION EPSP (0 none)
 
   [[nodiscard]] bool has_back_stress() const {
-    return model == MaterialModel::plastic_kinematic && isotropic_fraction < 1.0;
+    const auto* k = std::get_if<PlasticKinematicModel>(&model);
+    return k != nullptr && k->isotropic_fraction < 1.0;
+  }
+  /// The temperature points start at: TR for Johnson-Cook, else 0.
+  [[nodiscard]] double initial_temperature() const {
+    return std::holds_alternative<JohnsonCookModel>(model) ? room_temperature : 0.0;
   }
 };
 

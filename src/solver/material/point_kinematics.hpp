@@ -141,8 +141,9 @@ inline double element_step(const BulkViscosityParams& q, double length, double s
 /// `modified_shear`, when given, receives G-tilde of the paper's Eqs. 11-12,
 /// 2 G-tilde = (H_dtau / H_de)^(1/2), the ratio of this update's deviatoric stress and strain
 /// increments (G itself while elastic, less while plastic), for ITB 1's stabilisation stress.
-inline double deviatoric_point_update(const Material& m, const Kinematics& k, double dt,
-                                      double temperature, double pressure, PointState st,
+template <class Model>
+inline double deviatoric_point_update(const Material& m, const Model& model, const Kinematics& k,
+                                      double dt, double temperature, double pressure, PointState st,
                                       bool& failed, double* modified_shear = nullptr) {
   double* s = st.deviator;
   const double turn = k.objective ? 0.5 * dt : dt;
@@ -152,7 +153,7 @@ inline double deviatoric_point_update(const Material& m, const Kinematics& k, do
   std::copy(s, s + 6, s_old);
   double de[6];
   const double rate = deviatoric_increment(k, dt, de);
-  const PointResult r = update_deviator(m, PointInput{de, rate, temperature, pressure}, st);
+  const PointResult r = update_deviator(m, model, PointInput{de, rate, temperature, pressure}, st);
   failed = failed || r.failed;
   double mid[6];
   for (int j = 0; j < 6; ++j)

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include "solver/material/constitutive.hpp"
 #include "solver/spg/spg_solver.hpp"
@@ -119,7 +120,9 @@ double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic
 }
 
 // Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.stress_gradient.
-Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, double dt) {
+template <class Model>
+Outcome particle_update(State& s, Domain& d, const Material& mat, const Model& model, Index j,
+                        double dt) {
   const auto jj = static_cast<std::size_t>(j);
   Eigen::Map<Mat3> f_hat(d.deformation.col(j).data());
   Eigen::Map<Mat3> p_j(d.stress_gradient.col(j).data());
@@ -158,7 +161,7 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, Index j, doubl
   const double dev_work =
       work_volume(k.objective, d.volume[jj], volume) *
       deviatoric_point_update(
-          mat, k, dt, d.temperature[jj], d.pressure[jj],
+          mat, model, k, dt, d.temperature[jj], d.pressure[jj],
           PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]}, failed,
           gradient ? &modified_shear : nullptr);
   if (failed) d.failed[jj] = 1;
@@ -268,51 +271,56 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   int mass_added = 0;
   const bool control = d.settings.mode_control > 0.0;
   if (s.mass_scaling_dt > 0.0) mass_factors(d);
+  // The material's deviatoric model, visited once for the whole pass.
+  std::visit(
+      [&](const auto& model) {
 #pragma omp parallel if (n > 512) reduction(+ : released) reduction(max : mass_added)
-  {
-    double local_best = std::numeric_limits<double>::infinity();
-    Index local_controlling = -1;
-    double local_physical = std::numeric_limits<double>::infinity();
-    Index local_controlling_physical = -1;
-    Index local_inverted = std::numeric_limits<Index>::max();
-    Index local_non_finite = std::numeric_limits<Index>::max();
+        {
+          double local_best = std::numeric_limits<double>::infinity();
+          Index local_controlling = -1;
+          double local_physical = std::numeric_limits<double>::infinity();
+          Index local_controlling_physical = -1;
+          Index local_inverted = std::numeric_limits<Index>::max();
+          Index local_non_finite = std::numeric_limits<Index>::max();
 #pragma omp for schedule(static, 128) nowait
-    for (Index j = 0; j < n; ++j) {
-      const Outcome o = particle_update(s, d, mat, j, step);
-      d.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
-      if (control) mode_control_update(s, d, j);
-      released += o.released ? 1 : 0;
-      if (o.mass_added) mass_added = 1;
-      if (o.inverted) {
-        local_inverted = std::min(local_inverted, j);
-      } else if (std::isnan(o.step)) {
-        local_non_finite = std::min(local_non_finite, j);
-      } else if (o.step < local_best) {  // ascending j per thread: ties keep the lowest
-        local_best = o.step;
-        local_controlling = j;
-      }
-      if (o.physical_step < local_physical) {
-        local_physical = o.physical_step;
-        local_controlling_physical = j;
-      }
-    }
+          for (Index j = 0; j < n; ++j) {
+            const Outcome o = particle_update(s, d, mat, model, j, step);
+            d.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
+            if (control) mode_control_update(s, d, j);
+            released += o.released ? 1 : 0;
+            if (o.mass_added) mass_added = 1;
+            if (o.inverted) {
+              local_inverted = std::min(local_inverted, j);
+            } else if (std::isnan(o.step)) {
+              local_non_finite = std::min(local_non_finite, j);
+            } else if (o.step < local_best) {  // ascending j per thread: ties keep the lowest
+              local_best = o.step;
+              local_controlling = j;
+            }
+            if (o.physical_step < local_physical) {
+              local_physical = o.physical_step;
+              local_controlling_physical = j;
+            }
+          }
 #pragma omp critical
-    {
-      if (local_best < best || (local_best == best && local_controlling >= 0 &&
-                                (controlling < 0 || local_controlling < controlling))) {
-        best = local_best;
-        controlling = local_controlling;
-      }
-      if (local_physical < best_physical ||
-          (local_physical == best_physical && local_controlling_physical >= 0 &&
-           (controlling_physical < 0 || local_controlling_physical < controlling_physical))) {
-        best_physical = local_physical;
-        controlling_physical = local_controlling_physical;
-      }
-      inverted = std::min(inverted, local_inverted);
-      non_finite = std::min(non_finite, local_non_finite);
-    }
-  }
+          {
+            if (local_best < best || (local_best == best && local_controlling >= 0 &&
+                                      (controlling < 0 || local_controlling < controlling))) {
+              best = local_best;
+              controlling = local_controlling;
+            }
+            if (local_physical < best_physical ||
+                (local_physical == best_physical && local_controlling_physical >= 0 &&
+                 (controlling_physical < 0 || local_controlling_physical < controlling_physical))) {
+              best_physical = local_physical;
+              controlling_physical = local_controlling_physical;
+            }
+            inverted = std::min(inverted, local_inverted);
+            non_finite = std::min(non_finite, local_non_finite);
+          }
+        }
+      },
+      mat.model);
   d.released += released;
   if (mass_added) {
     grow_row_masses(d);
