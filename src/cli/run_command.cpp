@@ -136,26 +136,28 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
       shared += d.shared[i];
       surface += d.surface[i];
     }
-    fmt::print(log,
-               "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
-               "{}{}; kernel {}, {}, checked every {} steps{}; bond failure {}; {}\n",
-               s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
-               kModes[static_cast<int>(st.stabilization)],
-               st.mode_control > 0.0
-                   ? fmt::format(" with low-energy-mode control {:g} (MSC 1)", st.mode_control)
-                   : std::string(),
-               kShapes[static_cast<int>(st.shape)],
-               st.kernel_update == 1 ? "Eulerian" : "updated Lagrangian", st.renewal_interval,
-               st.kernel_update == 1 || !(st.renewal_strain > 0.0)
-                   ? std::string(" and renewed at each check")
-                   : fmt::format(" and renewed per particle at Green strain {:g} ({:g} under "
-                                 "compression) or broken bonds",
-                                 st.renewal_strain,
-                                 solver::spg::kCompressionRenewalShare * st.renewal_strain),
-               st.bond_failure
-                   ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
-                   : std::string("off"),
-               stress_update_name(st.objective));
+    fmt::print(
+        log,
+        "  SPG part {:>8}: {} particles ({} shared with FE/constraints, {} on the surface); "
+        "{}{}; kernel {}, {}, checked every {} steps{}; bond failure {}; {}\n",
+        s.parts[static_cast<std::size_t>(d.part)].id, d.count(), shared, surface,
+        kModes[static_cast<int>(st.stabilization)],
+        st.mode_control > 0.0
+            ? fmt::format(" with low-energy-mode control {:g} (MSC 1)", st.mode_control)
+            : std::string(),
+        kShapes[static_cast<int>(st.shape)],
+        st.kernel_update == solver::spg::KernelUpdate::eulerian ? "Eulerian" : "updated Lagrangian",
+        st.renewal_interval,
+        st.kernel_update == solver::spg::KernelUpdate::eulerian || !(st.renewal_strain > 0.0)
+            ? std::string(" and renewed at each check")
+            : fmt::format(" and renewed per particle at Green strain {:g} ({:g} under "
+                          "compression) or broken bonds",
+                          st.renewal_strain,
+                          solver::spg::kCompressionRenewalShare * st.renewal_strain),
+        st.bond_failure
+            ? fmt::format("FS {:g} and STRETCH {:g}", st.failure_strain, st.failure_stretch)
+            : std::string("off"),
+        stress_update_name(st.objective));
   }
 }
 

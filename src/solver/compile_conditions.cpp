@@ -181,8 +181,15 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
         d.error(pm.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: DOF = {} is not supported (1-8)", dof);
         continue;
       }
-      RigidMotion rm{dof, pm.kind, curve, pm.scale, Vec3::UnitX(), pm.birth, death};
-      if (dof == 4 || dof == 8) rm.direction = vector_direction(m, pm.vector, pm.vector_loc, d);
+      RigidMotion rm;
+      rm.rotation = dof >= 5;
+      rm.axis = dof == 4 || dof == 8 ? vector_direction(m, pm.vector, pm.vector_loc, d)
+                                     : Vec3::Unit((dof - 1) % 4);
+      rm.kind = static_cast<MotionKind>(pm.kind);  // VAD 0-2, checked above
+      rm.curve = curve;
+      rm.scale = pm.scale;
+      rm.birth = pm.birth;
+      rm.death = death;
       s.rigid_bodies[static_cast<std::size_t>(b)].motions.push_back(rm);
       continue;
     }
@@ -206,13 +213,12 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
                 s.nodes.ids[static_cast<std::size_t>(n)]);
       }
     }
-    nm.dof = dof;
-    nm.kind = pm.kind;
+    nm.axis = dof == 4 ? vector_direction(m, pm.vector, pm.vector_loc, d) : Vec3::Unit(dof - 1);
+    nm.kind = static_cast<MotionKind>(pm.kind);  // VAD 0-2, checked above
     nm.curve = curve;
     nm.scale = pm.scale;
     nm.birth = pm.birth;
     nm.death = death;
-    if (dof == 4) nm.direction = vector_direction(m, pm.vector, pm.vector_loc, d);
     nm.node_force.setZero(3, static_cast<Index>(nm.nodes.size()));
     nm.node_work.assign(nm.nodes.size(), 0.0);
     s.nodal_motions.push_back(std::move(nm));

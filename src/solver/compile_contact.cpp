@@ -317,7 +317,7 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
 
 // Slave nodes that start inside the master surface, said at the contact keyword: moved onto it
 // (IGNORE 0) or kept as tracked offsets (IGNORE 1/2, SPG particles, rigid nodes).
-void report_initial_penetrations(State& s, Interface& in, const model::Contact& c,
+void report_initial_penetrations(State& s, Interface& in, const model::Contact& c, int ignore,
                                  core::Diagnostics& d) {
   const contact::InitialPenetrations r = contact::resolve_initial_penetrations(s, in);
   if (r.count == 0) return;
@@ -327,8 +327,8 @@ void report_initial_penetrations(State& s, Interface& in, const model::Contact& 
   if (kept > 0)
     what += fmt::format("{}{} kept as an initial offset that contact pushes only beyond{}",
                         what.empty() ? "" : ", ", kept,
-                        in.ignore == 0 ? " (SPG particles and rigid-body nodes are not moved)"
-                                       : fmt::format(" (IGNORE {})", in.ignore));
+                        ignore == 0 ? " (SPG particles and rigid-body nodes are not moved)"
+                                    : fmt::format(" (IGNORE {})", ignore));
   d.warning(c.loc,
             "contact {}: {} slave node(s) start inside the master surface, deepest {:.4g} at "
             "node {}; {}",
@@ -385,24 +385,35 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     in.damping = c.viscous_damping / 100.0;
     in.birth = c.birth;
     in.death = c.death > 0.0 ? c.death : 1.0e20;
-    in.soft = c.soft;
+    in.soft_constraint = c.soft >= 1;
     in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
     in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
-    in.penalty_option = control.penalty_option;
-    in.ignore = c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
-    if (in.penalty_option < 1 || in.penalty_option > 3) {
-      d.warning(control.loc,
-                "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
-                "segment's stiffness); 2 and 3 are also available",
-                control.penalty_option);
-      in.penalty_option = 1;
+    const int ignore =
+        c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
+    in.initial_penetration =
+        ignore == 0 ? contact::InitialPenetration::move : contact::InitialPenetration::keep_offset;
+    switch (control.penalty_option) {
+      case 2:
+        in.penalty_scale = contact::PenaltyScale::segment;
+        break;
+      case 3:
+        in.penalty_scale = contact::PenaltyScale::node;
+        break;
+      case 1:
+        in.penalty_scale = contact::PenaltyScale::smaller;
+        break;
+      default:
+        d.warning(control.loc,
+                  "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
+                  "segment's stiffness); 2 and 3 are also available",
+                  control.penalty_option);
+        in.penalty_scale = contact::PenaltyScale::smaller;
     }
     if (c.soft == 2 || c.soft > 2) {
       d.warning(c.loc,
                 "contact {}: SOFT = {} (segment-based) runs as SOFT = 1, node-to-segment with the "
                 "soft-constraint stiffness",
                 number, c.soft);
-      in.soft = 1;
     }
     // One direction: the nodes of one side on the segments of the other.
     auto make_pass = [&](const Side& nodes, double node_scale, const Side& segments,
@@ -458,7 +469,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
     std::sort(in.tracked.begin(), in.tracked.end());
     in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());
-    report_initial_penetrations(s, in, c, d);
+    report_initial_penetrations(s, in, c, ignore, d);
     s.contacts.push_back(std::move(in));
   }
 }

@@ -44,7 +44,9 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
   const model::SpgSettings& in = sec.spg;
   spg::SpgSettings st;
   st.shape = static_cast<spg::KernelShape>(in.kernel_function);
-  st.kernel_update = in.kernel_update == 1 ? 1 : 0;  // KERNEL 2 runs as 0 (model check notes it)
+  // KERNEL 2 runs as 0 (the model check notes it).
+  st.kernel_update =
+      in.kernel_update == 1 ? spg::KernelUpdate::eulerian : spg::KernelUpdate::updated_lagrangian;
   st.renewal_interval = std::max(in.smoothing_interval, 1);
   // FS on MAT_003 / MAT_024 overrides the section's FS (keywords.md §2.6).
   st.failure_strain = mat.failure_strain > 0.0 ? mat.failure_strain : in.failure_strain;

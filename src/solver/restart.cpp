@@ -30,7 +30,7 @@ constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(ResumePoint)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 136, 240,
+static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 128, 240,
                                                           1392, 1952, 96, 112, 352, 328, 144, 184},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
@@ -72,7 +72,7 @@ void fields(Ar& ar, Solids& s) {
 
 template <class Ar>
 void fields(Ar& ar, RigidMotion& m) {
-  ar(m.dof, m.kind, m.curve, m.scale, m.direction, m.birth, m.death, m.rotated);
+  ar(m.rotation, m.axis, m.kind, m.curve, m.scale, m.birth, m.death, m.rotated);
 }
 
 template <class Ar>
@@ -90,8 +90,7 @@ void fields(Ar& ar, NodalConstraints& c) {
 
 template <class Ar>
 void fields(Ar& ar, NodalMotion& m) {
-  ar(m.id, m.nodes, m.dof, m.kind, m.curve, m.scale, m.direction, m.birth, m.death, m.node_force,
-     m.node_work);
+  ar(m.id, m.nodes, m.axis, m.kind, m.curve, m.scale, m.birth, m.death, m.node_force, m.node_work);
 }
 
 template <class Ar>
@@ -199,8 +198,8 @@ void fields(Ar& ar, AppliedForce& f) {
 template <class Ar>
 void fields(Ar& ar, Interface& c) {
   ar(c.id, c.heading, c.passes, c.static_friction, c.dynamic_friction, c.decay, c.viscous_friction,
-     c.damping, c.birth, c.death, c.soft, c.soft_scale, c.penalty_option, c.sort_interval,
-     c.initial_step, c.ignore);
+     c.damping, c.birth, c.death, c.soft_constraint, c.soft_scale, c.penalty_scale, c.sort_interval,
+     c.initial_step, c.initial_penetration);
   ar(c.last_sort, c.sorted_positions, c.tracked, c.capture, c.force_a, c.force_b, c.moment_a,
      c.moment_b, c.mass_in_contact, c.energy, c.applied);
 }

@@ -95,13 +95,16 @@ struct PartInfo {
   model::Id material_id = 0;
 };
 
+/// What a prescribed motion's curve gives (VAD 0, 1, 2).
+enum class MotionKind { velocity, acceleration, displacement };
+
 /// Prescribed motion of a rigid body: one *BOUNDARY_PRESCRIBED_MOTION_RIGID line.
 struct RigidMotion {
-  int dof = 0;   ///< 1-3 translation x/y/z, 5-7 rotation about x/y/z, 4/8 along/about `direction`
-  int kind = 0;  ///< VAD: 0 velocity, 1 acceleration, 2 displacement
+  bool rotation = false;      ///< DOF 5-8: about `axis`; DOF 1-4: along it
+  Vec3 axis = Vec3::UnitX();  ///< x, y, z (DOF 1-3, 5-7) or the VID direction (4, 8), unit
+  MotionKind kind = MotionKind::velocity;
   Index curve = -1;
   double scale = 1.0;
-  Vec3 direction = Vec3::UnitX();
   double birth = 0.0, death = 1.0e28;
   double rotated = 0.0;  ///< angle turned under this motion so far (VAD 2 rotations)
 };
@@ -142,11 +145,10 @@ struct NodalConstraints {
 struct NodalMotion {
   model::Id id = 0;
   std::vector<Index> nodes;
-  int dof = 1;
-  int kind = 0;
+  Vec3 axis = Vec3::UnitX();  ///< x, y, z (DOF 1-3) or the VID direction (DOF 4), unit
+  MotionKind kind = MotionKind::velocity;
   Index curve = -1;
   double scale = 1.0;
-  Vec3 direction = Vec3::UnitX();
   double birth = 0.0, death = 1.0e28;
   Eigen::Matrix3Xd node_force;    ///< per node of `nodes`, this cycle (bndout nd# lines)
   std::vector<double> node_work;  ///< per node of `nodes`, accumulated

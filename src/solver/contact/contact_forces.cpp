@@ -82,10 +82,10 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
 double penalty(const Interface& c, const Pass& p, std::size_t i, std::size_t k, double node_mass) {
   const double segment = p.surface.stiffness[k];
   const double node = p.stiffness[i] > 0.0 ? p.stiffness[i] : segment;  // a node on no element
-  double stiffness = c.penalty_option == 2   ? segment
-                     : c.penalty_option == 3 ? node
-                                             : std::min(node, segment);
-  if (c.soft == 1 && c.initial_step > 0.0) {
+  double stiffness = c.penalty_scale == PenaltyScale::segment ? segment
+                     : c.penalty_scale == PenaltyScale::node  ? node
+                                                              : std::min(node, segment);
+  if (c.soft_constraint && c.initial_step > 0.0) {
     // Soft constraint: a spring whose period matches the initial step for the smaller mass.
     const double m = std::min(node_mass, p.surface.smallest_node_mass[k]);
     stiffness = std::max(stiffness, 0.5 * c.soft_scale * m / (c.initial_step * c.initial_step));
@@ -175,7 +175,7 @@ InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
         r.deepest = t.depth;
         r.node = node;
       }
-      if (c.ignore == 0 && movable(s, node)) {
+      if (c.initial_penetration == InitialPenetration::move && movable(s, node)) {
         s.nodes.position.col(node) += t.depth * t.push;
         s.nodes.initial.col(node) = s.nodes.position.col(node);
         ++r.moved;

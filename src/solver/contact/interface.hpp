@@ -59,6 +59,12 @@ struct AppliedForce {
   Vec3 force = Vec3::Zero();
 };
 
+/// The penalty stiffness of a node on a segment (PENOPT 1, 2, 3).
+enum class PenaltyScale { smaller, segment, node };
+/// Slave nodes that start inside a master surface (IGNORE): moved onto it (0), or their depth
+/// kept as an offset that contact pushes only beyond (1, 2).
+enum class InitialPenetration { move, keep_offset };
+
 struct Interface {
   model::Id id = 0;
   std::string heading;
@@ -67,12 +73,14 @@ struct Interface {
   double viscous_friction = 0.0;  ///< VC (x VSF): limit of the friction stress
   double damping = 0.0;           ///< VDC / 100: share of critical damping on the normal force
   double birth = 0.0, death = 1.0e20;
-  int soft = 0;
-  double soft_scale = 0.1;    ///< SOFSCL
-  int penalty_option = 1;     ///< PENOPT: 1 min(node, segment), 2 segment, 3 node
+  /// SOFT 1 (and 2, which runs as 1): the stiffness is at least that of a spring whose period
+  /// matches the initial step for the smaller mass.
+  bool soft_constraint = false;
+  double soft_scale = 0.1;  ///< SOFSCL
+  PenaltyScale penalty_scale = PenaltyScale::smaller;
   int sort_interval = 10;     ///< cycles between bucket sorts (NSBCS; sooner if nodes moved far)
   double initial_step = 0.0;  ///< the first solution step, for SOFT 1 (0 until known)
-  int ignore = 0;             ///< IGNORE: 0 move nodes out of initial penetrations, 1/2 track
+  InitialPenetration initial_penetration = InitialPenetration::move;
 
   // Search state.
   long last_sort = -1;

@@ -57,17 +57,17 @@ void apply_nodal_motions(State& state, const StepTimes& t) {
   for (NodalMotion& nm : state.nodal_motions) {
     nm.node_force.setZero();
     if (t.time < nm.birth || t.time > nm.death) continue;
-    const Vec3 axis = nm.dof == 4 ? nm.direction : Vec3::Unit(nm.dof - 1);
+    const Vec3& axis = nm.axis;
     for (std::size_t k = 0; k < nm.nodes.size(); ++k) {
       const Index n = nm.nodes[k];
       const Vec3 v = nd.velocity.col(n);
       const double now = axis.dot(v);
       double target = 0.0;
-      if (nm.kind == 1) {
+      if (nm.kind == MotionKind::acceleration) {
         // `now` includes this cycle's free acceleration; the prescribed one replaces it.
         const double before = now - t.mean * axis.dot(Vec3(nd.acceleration.col(n)));
         target = before + t.mean * motion_value(state, nm.curve, nm.scale, nm.birth, t.time);
-      } else if (nm.kind == 2) {
+      } else if (nm.kind == MotionKind::displacement) {
         const double u = axis.dot(Vec3(nd.position.col(n)) - Vec3(nd.initial.col(n)));
         target = displacement_velocity(state, nm.curve, nm.scale, nm.birth, u, t.time, t.step);
       } else {

@@ -50,29 +50,21 @@ bool active(const RigidMotion& m, double t) {
   return t >= m.birth && t <= m.death;
 }
 
-Vec3 axis_of(const RigidMotion& m) {
-  const int d = m.dof;
-  if (d == 1 || d == 5) return Vec3::UnitX();
-  if (d == 2 || d == 6) return Vec3::UnitY();
-  if (d == 3 || d == 7) return Vec3::UnitZ();
-  return m.direction;
-}
-
 // Target velocity component of a prescribed motion over the step starting at t.
 double target(const State& s, const RigidBody& b, const RigidMotion& m, double previous,
               double rotated, const StepTimes& t) {
   const double t_half = t.time + 0.5 * t.step;
   switch (m.kind) {
-    case 1:
+    case MotionKind::acceleration:
       return previous + t.mean * motion_value(s, m.curve, m.scale, m.birth, t.time);
-    case 2: {
-      const bool rotation = m.dof >= 5;
-      const double now = rotation ? rotated : axis_of(m).dot(b.center - b.initial_center);
+    case MotionKind::displacement: {
+      const double now = m.rotation ? rotated : m.axis.dot(b.center - b.initial_center);
       return displacement_velocity(s, m.curve, m.scale, m.birth, now, t.time, t.step);
     }
-    default:
-      return motion_value(s, m.curve, m.scale, m.birth, t_half);
+    case MotionKind::velocity:
+      break;
   }
+  return motion_value(s, m.curve, m.scale, m.birth, t_half);
 }
 
 Mat3 rotation_increment(const Vec3& omega, double dt) {
@@ -104,8 +96,8 @@ void advance_rigid_bodies(State& state, const StepTimes& t) {
     }
     for (RigidMotion& m : b.motions) {
       if (!active(m, t.time)) continue;
-      const bool rotation = m.dof >= 5;
-      const Vec3 axis = axis_of(m);
+      const bool rotation = m.rotation;
+      const Vec3& axis = m.axis;
       const double previous = axis.dot(rotation ? b.omega : b.velocity);
       const double value = target(state, b, m, previous, m.rotated, t);
       (rotation ? ang : lin).add(axis, value);

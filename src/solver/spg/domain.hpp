@@ -145,9 +145,13 @@ struct StepBound {
   Index physical_particle = -1;
 };
 
+/// KERNEL 0: each row's kernel follows its particles and is renewed when they have strained
+/// (updated Lagrangian); KERNEL 1: every row renewed at every check (Eulerian).
+enum class KernelUpdate { updated_lagrangian, eulerian };
+
 struct SpgSettings {
   KernelShape shape = KernelShape::cubic_box;
-  int kernel_update = 0;      ///< KERNEL: 0 updated Lagrangian, 1 Eulerian
+  KernelUpdate kernel_update = KernelUpdate::updated_lagrangian;
   int renewal_interval = 15;  ///< SMSTEP: steps between kernel checks (bonds, distortion)
   /// KERNEL 0: at a check, the rows of the particles whose Green strain relative to their
   /// reference (norm of 1/2 (F-hat^T F-hat - I)) exceeds this (a fifth of it under compression)

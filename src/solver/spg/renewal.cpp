@@ -36,7 +36,8 @@ Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
 // shrinks it there (a support fixed in size would span many compressed layers and let them collapse
 // unseen), and it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
 Supports current_supports(const Domain& d) {
-  if (d.settings.kernel_update == 1) return deformed(d.settings.shape, d.initial_support);
+  if (d.settings.kernel_update == KernelUpdate::eulerian)
+    return deformed(d.settings.shape, d.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
 #pragma omp parallel for schedule(static) if (d.count() > 4096)
   for (Index i = 0; i < d.count(); ++i) {
@@ -362,7 +363,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
 Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
   rows.assign(static_cast<std::size_t>(n), 0);
-  if (d.settings.kernel_update == 1 || !(d.settings.renewal_strain > 0.0)) {
+  if (d.settings.kernel_update == KernelUpdate::eulerian || !(d.settings.renewal_strain > 0.0)) {
     std::fill(rows.begin(), rows.end(), 1);
     return n;
   }
