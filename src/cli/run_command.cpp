@@ -132,9 +132,9 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
   for (const solver::spg::Domain& d : s.spg) {
     const auto& st = d.settings;
     long shared = 0, surface = 0;
-    for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-      shared += d.shared[i];
-      surface += d.surface[i];
+    for (std::size_t i = 0; i < d.particles.nodes.size(); ++i) {
+      shared += d.particles.shared[i];
+      surface += d.particles.surface[i];
     }
     fmt::print(
         log,
@@ -188,64 +188,66 @@ void print_angular_budgets(std::ostream& out, const solver::State& s,
 // After the run: what the particle kernels did (neighbours, renewals, bonds, degeneracy).
 void print_spg_summary(std::ostream& out, const solver::State& s) {
   for (const solver::spg::Domain& d : s.spg) {
-    if (d.step_bound.initial_critical > 0.0) {
+    if (d.kernel.step_bound.initial_critical > 0.0) {
       fmt::print(out,
                  "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
                  "eigenvalue by power iteration)",
-                 s.parts[static_cast<std::size_t>(d.part)].id, d.step_bound.initial_critical);
-      const solver::Index at = d.step_bound.smallest_critical_particle;
+                 s.parts[static_cast<std::size_t>(d.part)].id,
+                 d.kernel.step_bound.initial_critical);
+      const solver::Index at = d.kernel.step_bound.smallest_critical_particle;
       if (d.settings.step_estimate == solver::spg::StepEstimate::eigenvalue)
-        fmt::print(
-            out,
-            ", the smallest {:.4e} s at t = {:.6e} (mode largest at node {}); particle "
-            "steps scaled to it every second cycle",
-            d.step_bound.smallest_critical, d.step_bound.smallest_critical_time,
-            at >= 0 ? s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(at)])]
-                    : 0);
+        fmt::print(out,
+                   ", the smallest {:.4e} s at t = {:.6e} (mode largest at node {}); particle "
+                   "steps scaled to it every second cycle",
+                   d.kernel.step_bound.smallest_critical,
+                   d.kernel.step_bound.smallest_critical_time,
+                   at >= 0 ? s.nodes.ids[static_cast<std::size_t>(
+                                 d.particles.nodes[static_cast<std::size_t>(at)])]
+                           : 0);
       fmt::print(out, "\n");
     }
-    const double pairs = static_cast<double>(d.list.neighbours.size());
+    const double pairs = static_cast<double>(d.kernel.list.neighbours.size());
     fmt::print(out,
                "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals "
                "({:.1f} % of the rows per renewal), {} bonds broken\n",
                s.parts[static_cast<std::size_t>(d.part)].id, d.count(),
-               d.count() > 0 ? pairs / d.count() : 0.0, d.renewals,
-               d.renewals > 0 && d.count() > 0 ? 100.0 * static_cast<double>(d.renewed_rows) /
-                                                     (static_cast<double>(d.renewals) * d.count())
-                                               : 0.0,
-               d.broken_bonds);
-    if (d.broken_bonds > 0) {
+               d.count() > 0 ? pairs / d.count() : 0.0, d.diagnostics.renewals,
+               d.diagnostics.renewals > 0 && d.count() > 0
+                   ? 100.0 * static_cast<double>(d.diagnostics.renewed_rows) /
+                         (static_cast<double>(d.diagnostics.renewals) * d.count())
+                   : 0.0,
+               d.diagnostics.broken_bonds);
+    if (d.diagnostics.broken_bonds > 0) {
       const solver::spg::Pieces p = solver::spg::count_pieces(d);
       fmt::print(out,
                  "  SPG part {}: {} separate piece(s) with no neighbours across ({} of them "
                  "single particles; the largest has {} particles)\n",
                  s.parts[static_cast<std::size_t>(d.part)].id, p.pieces, p.single, p.largest);
     }
-    if (d.released > 0)
+    if (d.diagnostics.released > 0)
       fmt::print(out,
                  "  SPG part {}: {} time(s) a particle with broken bonds had its neighbourhood "
                  "invert and was left without stress until its next kernel renewal (debris of "
                  "the failed material)\n",
-                 s.parts[static_cast<std::size_t>(d.part)].id, d.released);
-    if (d.largest_mobility_particle >= 0)
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.diagnostics.released);
+    if (d.diagnostics.largest_mobility_particle >= 0)
       fmt::print(out,
                  "  SPG part {}: steps shortened where smoothed masses (Eq. 20) fell below the "
                  "particle masses: largest factor {:.3g} on the frequency squared, at the row of "
                  "node {} at t = {:.6e}\n",
-                 s.parts[static_cast<std::size_t>(d.part)].id, d.largest_mobility,
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.diagnostics.largest_mobility,
+                 s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(
+                     d.diagnostics.largest_mobility_particle)])],
+                 d.diagnostics.largest_mobility_time);
+    if (d.diagnostics.first_degenerate >= 0) {
+      fmt::print(out,
+                 "  warning: SPG part {}: degenerate neighbourhoods (moment matrix singular: "
+                 "neighbours on a plane or line) at {} renewals, first at node {} at t = {:.6e}; "
+                 "such particles carry no stress until their neighbourhood is 3-D again\n",
+                 s.parts[static_cast<std::size_t>(d.part)].id, d.diagnostics.degenerate_events,
                  s.nodes.ids[static_cast<std::size_t>(
-                     d.nodes[static_cast<std::size_t>(d.largest_mobility_particle)])],
-                 d.largest_mobility_time);
-    if (d.first_degenerate >= 0) {
-      fmt::print(
-          out,
-          "  warning: SPG part {}: degenerate neighbourhoods (moment matrix singular: "
-          "neighbours on a plane or line) at {} renewals, first at node {} at t = {:.6e}; "
-          "such particles carry no stress until their neighbourhood is 3-D again\n",
-          s.parts[static_cast<std::size_t>(d.part)].id, d.degenerate_events,
-          s.nodes
-              .ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(d.first_degenerate)])],
-          d.first_degenerate_time);
+                     d.particles.nodes[static_cast<std::size_t>(d.diagnostics.first_degenerate)])],
+                 d.diagnostics.first_degenerate_time);
     }
   }
 }

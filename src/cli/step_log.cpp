@@ -24,23 +24,24 @@ struct ParticleFacts {
 ParticleFacts facts(const solver::State& s, const solver::spg::Domain& d, solver::Index j) {
   ParticleFacts f;
   const auto jj = static_cast<std::size_t>(j);
-  const Eigen::Vector3d x = s.nodes.position.col(d.nodes[jj]);
+  const Eigen::Vector3d x = s.nodes.position.col(d.particles.nodes[jj]);
   double now = std::numeric_limits<double>::infinity();
   double factor = std::numeric_limits<double>::infinity();
-  for (solver::Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
-    const auto k = static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)]);
-    factor = std::min(factor, d.mass[k] / (d.mass[k] - d.added_mass[k]));
-    if (k != jj) now = std::min(now, (s.nodes.position.col(d.nodes[k]) - x).norm());
+  for (solver::Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
+    const auto k = static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+    factor =
+        std::min(factor, d.particles.mass[k] / (d.particles.mass[k] - d.particles.added_mass[k]));
+    if (k != jj) now = std::min(now, (s.nodes.position.col(d.particles.nodes[k]) - x).norm());
   }
   double initial = std::numeric_limits<double>::infinity();
-  for (solver::Index b = d.bonds.offsets[jj]; b < d.bonds.offsets[jj + 1]; ++b)
-    initial = std::min(initial, d.bonds.length[static_cast<std::size_t>(b)]);
+  for (solver::Index b = d.kernel.bonds.offsets[jj]; b < d.kernel.bonds.offsets[jj + 1]; ++b)
+    initial = std::min(initial, d.kernel.bonds.length[static_cast<std::size_t>(b)]);
   f.nearest_now = std::isfinite(now) ? now : 0.0;
   f.nearest_initial = std::isfinite(initial) ? initial : 0.0;
   f.row_mass_factor = std::isfinite(factor) ? factor : 1.0;
   for (const auto& c : s.contacts)
     for (const auto& a : c.applied)
-      if (a.node == d.nodes[jj]) f.in_contact = true;
+      if (a.node == d.particles.nodes[jj]) f.in_contact = true;
   return f;
 }
 
@@ -63,28 +64,29 @@ void StepLog::add(const solver::State& s) {
     kind = "particle";
     const auto& d = s.spg[s.controlling_domain];
     id = s.nodes.ids[static_cast<std::size_t>(
-        d.nodes[static_cast<std::size_t>(s.controlling_particle)])];
+        d.particles.nodes[static_cast<std::size_t>(s.controlling_particle)])];
   }
   // The particle with the smallest step at its physical mass, over all SPG parts.
   const solver::spg::Domain* worst = nullptr;
   for (const auto& d : s.spg)
-    if (d.step_bound.physical_particle >= 0 &&
-        (!worst || d.step_bound.physical < worst->step_bound.physical))
+    if (d.kernel.step_bound.physical_particle >= 0 &&
+        (!worst || d.kernel.step_bound.physical < worst->kernel.step_bound.physical))
       worst = &d;
   const double added = solver::total_added_mass(s);
   std::string& out = file_.pending();
   fmt::format_to(std::back_inserter(out), "{},{:.9e},{:.6e},{:.6e},{},{},", s.cycle, s.time, s.step,
                  s.critical_step, kind, id);
   if (worst) {
-    const solver::Index j = worst->step_bound.physical_particle;
+    const solver::Index j = worst->kernel.step_bound.physical_particle;
     const ParticleFacts f = facts(s, *worst, j);
-    fmt::format_to(std::back_inserter(out), "{:.6e},{},{:.6e},{:.6e},{:.4f},{:.4f},{},{:.6e}\n",
-                   worst->step_bound.physical,
-                   s.nodes.ids[static_cast<std::size_t>(worst->nodes[static_cast<std::size_t>(j)])],
-                   f.nearest_now, f.nearest_initial, f.row_mass_factor,
-                   worst->mobility[static_cast<std::size_t>(j)], f.in_contact ? 1 : 0, added);
+    fmt::format_to(
+        std::back_inserter(out), "{:.6e},{},{:.6e},{:.6e},{:.4f},{:.4f},{},{:.6e}\n",
+        worst->kernel.step_bound.physical,
+        s.nodes.ids[static_cast<std::size_t>(worst->particles.nodes[static_cast<std::size_t>(j)])],
+        f.nearest_now, f.nearest_initial, f.row_mass_factor,
+        worst->kernel.mobility[static_cast<std::size_t>(j)], f.in_contact ? 1 : 0, added);
     out.pop_back();  // the newline: the power iteration's critical step follows
-    fmt::format_to(std::back_inserter(out), ",{:.6e}\n", worst->step_bound.critical);
+    fmt::format_to(std::back_inserter(out), ",{:.6e}\n", worst->kernel.step_bound.critical);
   } else {
     fmt::format_to(std::back_inserter(out), "0,0,0,0,1,1,0,{:.6e},0\n", added);
   }

@@ -45,7 +45,8 @@ class Glstat final : public HistoryFile {
       c_part = s.parts[static_cast<std::size_t>(s.solids.part[static_cast<std::size_t>(ce)])].id;
     } else if (cp >= 0 && s.controlling_domain < s.spg.size()) {
       const solver::spg::Domain& d = s.spg[s.controlling_domain];
-      cp_node = s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(cp)])];
+      cp_node =
+          s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(cp)])];
       c_part = s.parts[static_cast<std::size_t>(d.part)].id;
     }
     if (cp_node != 0)

@@ -129,9 +129,9 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
     added->SetValue(n, static_cast<float>(nd.added_mass[nn]));
   }
   for (const solver::spg::Domain& d : s.spg)
-    for (std::size_t i = 0; i < d.nodes.size(); ++i)
-      added->SetValue(d.nodes[i],
-                      added->GetValue(d.nodes[i]) + static_cast<float>(d.added_mass[i]));
+    for (std::size_t i = 0; i < d.particles.nodes.size(); ++i)
+      added->SetValue(d.particles.nodes[i], added->GetValue(d.particles.nodes[i]) +
+                                                static_cast<float>(d.particles.added_mass[i]));
   grid->GetPointData()->AddArray(mass);
   grid->GetPointData()->AddArray(added);
 
@@ -153,12 +153,15 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   for (const solver::spg::Domain& d : s.spg) {
     const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(d.part)].id);
     for (Index i = 0; i < d.count(); ++i) {
-      const vtkIdType vertex = d.nodes[static_cast<std::size_t>(i)];
+      const vtkIdType vertex = d.particles.nodes[static_cast<std::size_t>(i)];
       grid->InsertNextCell(VTK_VERTEX, 1, &vertex);
       const auto ii = static_cast<std::size_t>(i);
-      const int state = d.debris[ii] ? 3 : d.isolated[ii] ? 2 : d.pinned[ii] ? 1 : 0;
-      fields.add(solver::particle_result(d, i), d.pressure[ii], d.temperature[ii], part_id,
-                 d.bonds.damage(i), state, d.step[ii]);
+      const int state = d.fields.debris[ii]     ? 3
+                        : d.kernel.isolated[ii] ? 2
+                        : d.kernel.pinned[ii]   ? 1
+                                                : 0;
+      fields.add(solver::particle_result(d, i), d.fields.pressure[ii], d.fields.temperature[ii],
+                 part_id, d.kernel.bonds.damage(i), state, d.fields.step[ii]);
     }
   }
   const solver::DisplayCells& rc = s.rigid_cells;

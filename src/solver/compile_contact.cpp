@@ -164,7 +164,7 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
     out[p].shell_thickness.push_back(t);
   }
   for (const spg::Domain& d : s.spg)
-    out[static_cast<std::size_t>(d.part)].particles = d.nodes;
+    out[static_cast<std::size_t>(d.part)].particles = d.particles.nodes;
   for (Index e = 0; e < s.solids.count(); ++e) {
     const auto ee = static_cast<std::size_t>(e);
     std::vector<Index>& nodes = out[static_cast<std::size_t>(s.solids.part[ee])].solid_nodes;
@@ -193,8 +193,9 @@ std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface
   for (const spg::Domain& d : s.spg) {
     const double bulk = reference_bulk_modulus(
         s.materials[static_cast<std::size_t>(s.parts[static_cast<std::size_t>(d.part)].material)]);
-    for (std::size_t i = 0; i < d.nodes.size(); ++i)
-      k[static_cast<std::size_t>(d.nodes[i])] = bulk * std::cbrt(d.initial_volume[i]);
+    for (std::size_t i = 0; i < d.particles.nodes.size(); ++i)
+      k[static_cast<std::size_t>(d.particles.nodes[i])] =
+          bulk * std::cbrt(d.particles.initial_volume[i]);
   }
   std::vector<double> interior(k.size(), 0.0);
   for (std::size_t e = 0; e < s.solids.ids.size(); ++e) {

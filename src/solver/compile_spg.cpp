@@ -136,51 +136,54 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
                 "control); runs as 0",
                 sec->id, sec->spg.smoothing_scheme);
     }
-    dom.nodes = gen.nodes;
-    const auto n = dom.nodes.size();
-    dom.initial_volume = gen.volume;
-    dom.volume = gen.volume;
-    dom.initial_support = spg::support_matrices(
+    dom.particles.nodes = gen.nodes;
+    const auto n = dom.particles.nodes.size();
+    dom.particles.initial_volume = gen.volume;
+    dom.fields.volume = gen.volume;
+    dom.particles.initial_support = spg::support_matrices(
         gen, Vec3(sec->spg.support_scale[0], sec->spg.support_scale[1], sec->spg.support_scale[2]));
-    dom.surface = surface_flags(elements, dom.nodes);
-    dom.initial_position.resize(3, static_cast<Eigen::Index>(n));
-    dom.mass.resize(n);
-    dom.shared.resize(n);
+    dom.particles.surface = surface_flags(elements, dom.particles.nodes);
+    dom.particles.initial_position.resize(3, static_cast<Eigen::Index>(n));
+    dom.particles.mass.resize(n);
+    dom.particles.shared.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const auto node = static_cast<std::size_t>(dom.nodes[i]);
-      dom.initial_position.col(static_cast<Eigen::Index>(i)) = nd.initial.col(dom.nodes[i]);
-      dom.mass[i] = mat.density * gen.volume[i];
-      nd.mass[node] += dom.mass[i];
-      dom.shared[i] = shared[node] || in_spg[node];
+      const auto node = static_cast<std::size_t>(dom.particles.nodes[i]);
+      dom.particles.initial_position.col(static_cast<Eigen::Index>(i)) =
+          nd.initial.col(dom.particles.nodes[i]);
+      dom.particles.mass[i] = mat.density * gen.volume[i];
+      nd.mass[node] += dom.particles.mass[i];
+      dom.particles.shared[i] = shared[node] || in_spg[node];
       in_spg[node] = 1;
     }
-    dom.pressure.assign(n, 0.0);
-    dom.eos_energy.assign(n, mat.eos.initial_energy);
-    dom.temperature.assign(n, mat.initial_temperature());
-    dom.viscosity.assign(n, 0.0);
-    dom.internal_energy.assign(n, 0.0);
-    dom.failed.assign(n, 0);
-    dom.points.deviator.setZero(6, static_cast<Eigen::Index>(n));
-    if (mat.has_back_stress()) dom.points.back_stress.setZero(6, static_cast<Eigen::Index>(n));
-    dom.points.plastic_strain.assign(n, 0.0);
-    dom.points.damage.assign(n, 0.0);
+    dom.fields.pressure.assign(n, 0.0);
+    dom.fields.eos_energy.assign(n, mat.eos.initial_energy);
+    dom.fields.temperature.assign(n, mat.initial_temperature());
+    dom.fields.viscosity.assign(n, 0.0);
+    dom.fields.internal_energy.assign(n, 0.0);
+    dom.fields.failed.assign(n, 0);
+    dom.fields.points.deviator.setZero(6, static_cast<Eigen::Index>(n));
+    if (mat.has_back_stress())
+      dom.fields.points.back_stress.setZero(6, static_cast<Eigen::Index>(n));
+    dom.fields.points.plastic_strain.assign(n, 0.0);
+    dom.fields.points.damage.assign(n, 0.0);
     s.spg.push_back(std::move(dom));
   }
   // A node shared by two SPG parts is pinned in both (marked in the first only above).
   for (spg::Domain& dom : s.spg)
-    for (std::size_t i = 0; i < dom.nodes.size(); ++i) {
+    for (std::size_t i = 0; i < dom.particles.nodes.size(); ++i) {
       int owners = 0;
       for (const spg::Domain& other : s.spg)
-        owners += std::binary_search(other.nodes.begin(), other.nodes.end(), dom.nodes[i]);
-      if (owners > 1) dom.shared[i] = 1;
+        owners += std::binary_search(other.particles.nodes.begin(), other.particles.nodes.end(),
+                                     dom.particles.nodes[i]);
+      if (owners > 1) dom.particles.shared[i] = 1;
     }
   // Base mass after all parts have added theirs (FE corners, particles of every SPG part).
   for (spg::Domain& dom : s.spg) {
-    dom.base_mass.resize(dom.nodes.size());
-    dom.added_mass.assign(dom.nodes.size(), 0.0);
-    dom.mass_request.assign(dom.nodes.size(), 0.0);
-    for (std::size_t i = 0; i < dom.nodes.size(); ++i)
-      dom.base_mass[i] = nd.mass[static_cast<std::size_t>(dom.nodes[i])];
+    dom.particles.base_mass.resize(dom.particles.nodes.size());
+    dom.particles.added_mass.assign(dom.particles.nodes.size(), 0.0);
+    dom.particles.mass_request.assign(dom.particles.nodes.size(), 0.0);
+    for (std::size_t i = 0; i < dom.particles.nodes.size(); ++i)
+      dom.particles.base_mass[i] = nd.mass[static_cast<std::size_t>(dom.particles.nodes[i])];
   }
 }
 

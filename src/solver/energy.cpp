@@ -32,10 +32,10 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.mass += b.mass;
   }
   for (const spg::Domain& d : s.spg) {
-    for (std::size_t i = 0; i < d.internal_energy.size(); ++i)
-      e.internal += d.internal_energy[i];
-    e.damping += d.damping_energy;
-    for (const double w : d.mode_energy)
+    for (std::size_t i = 0; i < d.fields.internal_energy.size(); ++i)
+      e.internal += d.fields.internal_energy[i];
+    e.damping += d.fields.damping_energy;
+    for (const double w : d.fields.mode_energy)
       e.hourglass += w;
     const spg::SmoothedKinetic k = spg::smoothed_kinetic(s, d);
     e.kinetic += k.kinetic;
@@ -62,7 +62,7 @@ double total_added_mass(const State& s) {
   for (const double a : s.nodes.added_mass)
     added += a;
   for (const spg::Domain& d : s.spg)
-    for (const double a : d.added_mass)
+    for (const double a : d.particles.added_mass)
       added += a;
   return added;
 }
@@ -88,17 +88,17 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
     PartSummary& ps = out[static_cast<std::size_t>(d.part)];
     for (Index i = 0; i < d.count(); ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      ps.internal += d.internal_energy[ii];
-      ps.added_mass += d.added_mass[ii];
-      const Index n = d.nodes[ii];
+      ps.internal += d.fields.internal_energy[ii];
+      ps.added_mass += d.particles.added_mass[ii];
+      const Index n = d.particles.nodes[ii];
       const bool mc = s.nodes.smoothed[static_cast<std::size_t>(n)] == 1;
-      const Vec3 before = mc ? Vec3(d.unsmoothed_previous.col(i)) : Vec3(previous.col(n));
-      const Vec3 after = mc ? Vec3(d.unsmoothed.col(i)) : Vec3(velocity.col(n));
-      ps.kinetic += 0.5 * d.mass[ii] * before.dot(after);
-      ps.momentum += 0.5 * d.mass[ii] * (before + after);
+      const Vec3 before = mc ? Vec3(d.fields.unsmoothed_previous.col(i)) : Vec3(previous.col(n));
+      const Vec3 after = mc ? Vec3(d.fields.unsmoothed.col(i)) : Vec3(velocity.col(n));
+      ps.kinetic += 0.5 * d.particles.mass[ii] * before.dot(after);
+      ps.momentum += 0.5 * d.particles.mass[ii] * (before + after);
     }
-    ps.internal += d.damping_energy;
-    for (const double w : d.mode_energy)
+    ps.internal += d.fields.damping_energy;
+    for (const double w : d.fields.mode_energy)
       ps.hourglass += w;
   }
   for (std::size_t p = 0; p < s.parts.size(); ++p) {

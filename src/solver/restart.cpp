@@ -158,20 +158,27 @@ void fields(Ar& ar, StepBound& b) {
 
 template <class Ar>
 void fields(Ar& ar, Domain& d) {
-  ar(d.part, d.material, d.settings, d.nodes, d.mass, d.base_mass, d.shared, d.surface,
-     d.initial_volume, d.volume, d.initial_position, d.initial_support);
-  ar(d.support, d.reference_deformation, d.list, d.shape, d.transpose, d.smoothed_mass,
-     d.added_mass, d.mass_request, d.pinned, d.length, d.mobility, d.mobility_scale,
-     d.largest_mobility, d.largest_mobility_particle, d.largest_mobility_time, d.step,
-     d.renewal_volume, d.step_bound, d.gradient_length_scale, d.steps_since_renewal, d.renewals,
-     d.renewed_rows, d.isolated, d.degenerate_events, d.first_degenerate, d.first_degenerate_time);
-  ar(d.unsmoothed, d.unsmoothed_previous, d.smoothed);
-  ar(d.points, d.pressure, d.eos_energy, d.temperature, d.viscosity, d.internal_energy, d.failed,
-     d.deformation, d.stress_gradient, d.damping_energy);
-  ar(d.mode_stiffness, d.mode_residual, d.mode_force, d.mode_energy);
-  ar(d.gradient.moment, d.gradient.strain, d.gradient.stress, d.gradient.step_scale,
-     d.gradient.bulk, d.gradient.shear, d.gradient.applied_bulk, d.gradient.applied_shear);
-  ar(d.bonds, d.broken_bonds, d.released, d.debris, d.times);
+  ar(d.part, d.material, d.settings, d.particles.nodes, d.particles.mass, d.particles.base_mass,
+     d.particles.shared, d.particles.surface, d.particles.initial_volume, d.fields.volume,
+     d.particles.initial_position, d.particles.initial_support);
+  ar(d.kernel.support, d.kernel.reference_deformation, d.kernel.list, d.kernel.shape,
+     d.kernel.transpose, d.kernel.smoothed_mass, d.particles.added_mass, d.particles.mass_request,
+     d.kernel.pinned, d.kernel.length, d.kernel.mobility, d.kernel.mobility_scale,
+     d.diagnostics.largest_mobility, d.diagnostics.largest_mobility_particle,
+     d.diagnostics.largest_mobility_time, d.fields.step, d.kernel.renewal_volume,
+     d.kernel.step_bound, d.kernel.gradient_length_scale, d.kernel.steps_since_renewal,
+     d.diagnostics.renewals, d.diagnostics.renewed_rows, d.kernel.isolated,
+     d.diagnostics.degenerate_events, d.diagnostics.first_degenerate,
+     d.diagnostics.first_degenerate_time);
+  ar(d.fields.unsmoothed, d.fields.unsmoothed_previous, d.fields.smoothed);
+  ar(d.fields.points, d.fields.pressure, d.fields.eos_energy, d.fields.temperature,
+     d.fields.viscosity, d.fields.internal_energy, d.fields.failed, d.fields.deformation,
+     d.fields.stress_gradient, d.fields.damping_energy);
+  ar(d.fields.mode_stiffness, d.fields.mode_residual, d.fields.mode_force, d.fields.mode_energy);
+  ar(d.fields.gradient.moment, d.fields.gradient.strain, d.fields.gradient.stress,
+     d.fields.gradient.step_scale, d.fields.gradient.bulk, d.fields.gradient.shear,
+     d.fields.gradient.applied_bulk, d.fields.gradient.applied_shear);
+  ar(d.kernel.bonds, d.diagnostics.broken_bonds, d.diagnostics.released, d.fields.debris, d.times);
   // d.scratch is left out: a workspace every call refills before reading it.
 }
 

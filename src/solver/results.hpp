@@ -32,10 +32,10 @@ inline ElementResult particle_result(const spg::Domain& d, Index i) {
   const auto ii = static_cast<std::size_t>(i);
   std::array<double, 6> dev{};
   for (int k = 0; k < 6; ++k)
-    dev[static_cast<std::size_t>(k)] = d.points.deviator(k, i);
-  set_stress(r, dev, d.pressure[ii]);
-  r.plastic_strain = d.points.plastic_strain[ii];
-  r.damage = d.points.damage[ii];
+    dev[static_cast<std::size_t>(k)] = d.fields.points.deviator(k, i);
+  set_stress(r, dev, d.fields.pressure[ii]);
+  r.plastic_strain = d.fields.points.plastic_strain[ii];
+  r.damage = d.fields.points.damage[ii];
   return r;
 }
 

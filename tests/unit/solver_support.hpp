@@ -116,7 +116,7 @@ double check_blow_up_at_critical_step(const std::string& deck, Setup setup) {
     setup(*sim.state);
     solver::spg::Domain& d = sim.state->spg.front();
     solver::spg::initialise(*sim.state, d);
-    critical = d.step_bound.initial_critical;
+    critical = d.kernel.step_bound.initial_critical;
     sim.state->time_control.fixed_step = factor * critical;
     const double v0 = largest_speed(*sim.state);
     run(sim);
@@ -157,8 +157,8 @@ std::vector<double> layer_gaps(const solver::State& s, Keep keep) {
   std::map<long, std::pair<double, int>> layers;  // initial z in micrometres -> (sum z, count)
   for (solver::Index i = 0; i < d.count(); ++i) {
     if (!keep(i)) continue;
-    auto& l = layers[std::lround(1000.0 * d.initial_position(2, i))];
-    l.first += s.nodes.position(2, d.nodes[static_cast<std::size_t>(i)]);
+    auto& l = layers[std::lround(1000.0 * d.particles.initial_position(2, i))];
+    l.first += s.nodes.position(2, d.particles.nodes[static_cast<std::size_t>(i)]);
     ++l.second;
   }
   std::vector<double> mean, gaps;
@@ -193,11 +193,12 @@ inline double oscillation_norm(const solver::State& s, double scale) {
   for (solver::Index i = 0; i < d.count(); ++i) {
     const auto ii = static_cast<std::size_t>(i);
     solver::Vec3 interp = solver::Vec3::Zero();
-    for (solver::Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+    for (solver::Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
       const auto pp = static_cast<std::size_t>(p);
-      interp += d.shape.value[pp] * v.col(d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])]);
+      interp += d.kernel.shape.value[pp] *
+                v.col(d.particles.nodes[static_cast<std::size_t>(d.kernel.list.neighbours[pp])]);
     }
-    r2 += (v.col(d.nodes[ii]) - interp).squaredNorm();
+    r2 += (v.col(d.particles.nodes[ii]) - interp).squaredNorm();
   }
   return std::sqrt(r2 / static_cast<double>(d.count())) / scale;
 }

@@ -51,7 +51,7 @@ void set_noisy_velocity(solver::State& s, double noise_amplitude) {
 }
 
 double largest_stabilisation_stress(const spg::Domain& d) {
-  return d.gradient.stress.cwiseAbs().maxCoeff();
+  return d.fields.gradient.stress.cwiseAbs().maxCoeff();
 }
 
 }  // namespace
@@ -81,7 +81,8 @@ TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic 
   solver::State& s = *sim.state;
   spg::Domain& d = s.spg.front();
   spg::initialise(s, d);
-  REQUIRE(d.shape.hessian.cols() == static_cast<Eigen::Index>(d.list.neighbours.size()));
+  REQUIRE(d.kernel.shape.hessian.cols() ==
+          static_cast<Eigen::Index>(d.kernel.list.neighbours.size()));
   // g(X) = 1/2 X^T A X + b . X + c: Hessian A everywhere, on every row with a full basis.
   Eigen::Matrix3d a;
   a << 2.0, 0.5, -0.3, 0.5, -1.0, 0.7, -0.3, 0.7, 1.5;
@@ -92,7 +93,7 @@ TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic 
   int full = 0, interior = 0, partial = 0;
   for (Index j = 0; j < d.count(); ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    const Vec3 xj = d.initial_position.col(j);
+    const Vec3 xj = d.particles.initial_position.col(j);
     const bool inside =
         (xj.array() > 0.5).all() && (xj.array() < Eigen::Array3d(5.5, 4.5, 3.5)).all();
     interior += inside ? 1 : 0;
@@ -100,10 +101,11 @@ TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic 
     // against the resolved ones' and reproduces zero.
     double h[6] = {}, weight[6] = {}, largest = 0.0;
     for (int q = 0; q < 6; ++q) {
-      for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
-        const Vec3 x = d.initial_position.col(d.list.neighbours[static_cast<std::size_t>(p)]);
-        h[q] += d.shape.hessian(q, p) * g(x);
-        weight[q] += std::abs(d.shape.hessian(q, p));
+      for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
+        const Vec3 x =
+            d.particles.initial_position.col(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+        h[q] += d.kernel.shape.hessian(q, p) * g(x);
+        weight[q] += std::abs(d.kernel.shape.hessian(q, p));
       }
       largest = std::max(largest, weight[q]);
     }
@@ -140,8 +142,8 @@ TEST_CASE("ITB 1: a uniform strain rate gives no stabilisation stress") {
   // 0.01 = 6e-3 per unit of relative error in D; round-off leaves ~1e-16 of D.
   const double largest = largest_stabilisation_stress(d);
   MESSAGE("largest |sigma-tilde| ", largest, "; largest |sigma| ",
-          d.points.deviator.cwiseAbs().maxCoeff());
-  CHECK(d.points.deviator.cwiseAbs().maxCoeff() > 1e-3);  // the block does strain
+          d.fields.points.deviator.cwiseAbs().maxCoeff());
+  CHECK(d.fields.points.deviator.cwiseAbs().maxCoeff() > 1e-3);  // the block does strain
   CHECK(largest <= 1e-12);
 }
 
@@ -223,7 +225,7 @@ TEST_CASE("ITB 1 critical step: 2 / omega with the stabilisation is where a free
   Simulation sim = prepare(dir, itb_deck(7, 6, 5, 1, 1));
   sim.state->spg.front().settings.step_estimate = spg::StepEstimate::eigenvalue;
   run(sim);
-  CHECK(sim.state->spg.front().gradient.step_scale == 1.0);
+  CHECK(sim.state->spg.front().fields.gradient.step_scale == 1.0);
   const double damped =
       solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0, 1.0, 0.0);
   CHECK(sim.state->step == doctest::Approx(0.9 * damped * critical).epsilon(1e-6));
@@ -257,14 +259,14 @@ struct DeformedBlock {
     spg::Domain& d = s.spg.front();
     for (Index j = 0; j < d.count(); ++j) {
       const auto jj = static_cast<std::size_t>(j);
-      Eigen::Map<solver::Mat3>(d.deformation.col(j).data()) =
+      Eigen::Map<solver::Mat3>(d.fields.deformation.col(j).data()) =
           spg::particle_kinematics(s, d, j, 0.0).deformation;
-      d.gradient.shear[jj] = d.gradient.applied_shear[jj] = 38.5;  // E 100, nu 0.3
-      d.gradient.bulk[jj] = d.gradient.applied_bulk[jj] = 83.3;
+      d.fields.gradient.shear[jj] = d.fields.gradient.applied_shear[jj] = 38.5;  // E 100, nu 0.3
+      d.fields.gradient.bulk[jj] = d.fields.gradient.applied_bulk[jj] = 83.3;
     }
     if (fresh) {
-      d.gradient.stress.setZero();
-      d.gradient.strain.setZero();
+      d.fields.gradient.stress.setZero();
+      d.fields.gradient.strain.setZero();
     }
     s.nodes.force.setZero();
     spg::strain_gradient_stabilization(s, d);
@@ -276,8 +278,9 @@ struct DeformedBlock {
     double w = 0.0;
     for (Index j = 0; j < d.count(); ++j)
       for (int c = 0; c < 18; ++c)
-        w += 0.5 * d.renewal_volume[static_cast<std::size_t>(j)] * d.gradient.stress(c, j) *
-             d.gradient.strain(c, j) * (c % 6 < 3 ? 1.0 : 2.0);
+        w += 0.5 * d.kernel.renewal_volume[static_cast<std::size_t>(j)] *
+             d.fields.gradient.stress(c, j) * d.fields.gradient.strain(c, j) *
+             (c % 6 < 3 ? 1.0 : 2.0);
     return w;
   }
 };
@@ -340,13 +343,13 @@ TEST_CASE("ITB 1 rows with an isolated neighbour see no curvature in an affine m
   for (Index n = 0; n < s.nodes.count(); ++n)
     s.nodes.position.col(n) = s.nodes.initial.col(n) + a * s.nodes.initial.col(n);
   const Index middle = d.count() / 2;
-  d.isolated[static_cast<std::size_t>(middle)] = 1;
-  d.debris[static_cast<std::size_t>(middle + 1)] = 1;
+  d.kernel.isolated[static_cast<std::size_t>(middle)] = 1;
+  d.fields.debris[static_cast<std::size_t>(middle + 1)] = 1;
   Index rows_holding = 0;
   for (Index j = 0; j < d.count(); ++j)
-    for (Index p = d.list.offsets[static_cast<std::size_t>(j)];
-         p < d.list.offsets[static_cast<std::size_t>(j) + 1]; ++p)
-      if (const Index k = d.list.neighbours[static_cast<std::size_t>(p)];
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(j)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(j) + 1]; ++p)
+      if (const Index k = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
           k != j && (k == middle || k == middle + 1)) {
         ++rows_holding;
         break;
@@ -392,27 +395,27 @@ TEST_CASE("ITB 1 stiffness lengths bound the frequencies with the stabilisation"
     spg::Domain& d = s.spg.front();
     REQUIRE(d.settings.step_estimate == spg::StepEstimate::eigenvalue);
     spg::initialise(s, d);
-    MESSAGE("eigenvalue scale of the Gershgorin lengths ", d.step_bound.scale);
-    CHECK(d.step_bound.scale >= 2.0);
-    CHECK(d.step_bound.scale < 8.0);  // loose by a bounded factor (measured 5.3-5.4)
+    MESSAGE("eigenvalue scale of the Gershgorin lengths ", d.kernel.step_bound.scale);
+    CHECK(d.kernel.step_bound.scale >= 2.0);
+    CHECK(d.kernel.step_bound.scale < 8.0);  // loose by a bounded factor (measured 5.3-5.4)
 
     const Index stiff = 3 + 7 * (3 + 6 * 2);  // an interior particle
     const auto ss = static_cast<std::size_t>(stiff);
-    for (Index p = d.list.offsets[ss]; p < d.list.offsets[ss + 1]; ++p)
-      d.shape.hessian.col(p) *= 8.0;
-    d.step_bound.scale = 1.0;
+    for (Index p = d.kernel.list.offsets[ss]; p < d.kernel.list.offsets[ss + 1]; ++p)
+      d.kernel.shape.hessian.col(p) *= 8.0;
+    d.kernel.step_bound.scale = 1.0;
     spg::update_stiffness_length(d);
     spg::calibrate_stiffness_length(s, d);
-    MESSAGE("with one stiff row ", d.step_bound.scale);
-    CHECK(d.step_bound.scale >= 2.0);
+    MESSAGE("with one stiff row ", d.kernel.step_bound.scale);
+    CHECK(d.kernel.step_bound.scale >= 2.0);
     Index shortest = 0;
     for (Index i = 1; i < d.count(); ++i)
-      if (d.step_bound.lengths[static_cast<std::size_t>(i)] <
-          d.step_bound.lengths[static_cast<std::size_t>(shortest)])
+      if (d.kernel.step_bound.lengths[static_cast<std::size_t>(i)] <
+          d.kernel.step_bound.lengths[static_cast<std::size_t>(shortest)])
         shortest = i;
     bool in_row = false;
-    for (Index p = d.list.offsets[ss]; p < d.list.offsets[ss + 1]; ++p)
-      in_row = in_row || d.list.neighbours[static_cast<std::size_t>(p)] == shortest;
+    for (Index p = d.kernel.list.offsets[ss]; p < d.kernel.list.offsets[ss + 1]; ++p)
+      in_row = in_row || d.kernel.list.neighbours[static_cast<std::size_t>(p)] == shortest;
     CHECK(in_row);
   }
 }
@@ -438,7 +441,7 @@ TEST_CASE("ITB 1 frequency estimate stays below omega_max where masses differ") 
   spg::Domain& d = s.spg.front();
   spg::initialise(s, d);
   for (Index i = 0; i < d.count(); ++i) {  // DT2MS-like masses: all but every fourth 30 x
-    const auto node = static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(i)]);
+    const auto node = static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(i)]);
     if (i % 4 != 0) s.nodes.added_mass[node] = 29.0 * s.nodes.mass[node];
   }
   Eigen::Matrix3Xd converged;
@@ -447,9 +450,9 @@ TEST_CASE("ITB 1 frequency estimate stays below omega_max where masses differ") 
   for (Index row = 0; row < d.count(); row += 7) {
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(d.count()), 0);
     rows[static_cast<std::size_t>(row)] = 1;
-    for (Index p = d.list.offsets[static_cast<std::size_t>(row)];
-         p < d.list.offsets[static_cast<std::size_t>(row) + 1]; ++p)
-      rows[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])] = 1;
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(row)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(row) + 1]; ++p)
+      rows[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])] = 1;
     for (const int iterations : {1, 2, 4}) {
       Eigen::Matrix3Xd start = spg::frequency_start(d.count(), rows);
       worst =

@@ -75,12 +75,12 @@ Vec3 angular(const solver::State& s, bool smoothed_form) {
   Vec3 l = Vec3::Zero();
   const spg::Domain& d = s.spg.front();
   for (Index i = 0; i < d.count(); ++i) {
-    const Index n = d.nodes[static_cast<std::size_t>(i)];
+    const Index n = d.particles.nodes[static_cast<std::size_t>(i)];
     const Vec3 x = s.nodes.position.col(n);
     if (smoothed_form)
-      l += d.smoothed_mass[static_cast<std::size_t>(i)] * x.cross(s.nodes.velocity.col(n));
+      l += d.kernel.smoothed_mass[static_cast<std::size_t>(i)] * x.cross(s.nodes.velocity.col(n));
     else
-      l += d.mass[static_cast<std::size_t>(i)] * x.cross(d.unsmoothed.col(i));
+      l += d.particles.mass[static_cast<std::size_t>(i)] * x.cross(d.fields.unsmoothed.col(i));
   }
   return l;
 }
@@ -95,10 +95,11 @@ Vec3 conserved_momentum(const solver::State& s, double& scale) {
   }
   for (const spg::Domain& d : s.spg)
     for (Index i = 0; i < d.count(); ++i) {
-      if (!s.nodes.smoothed[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(i)])])
+      if (!s.nodes
+               .smoothed[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(i)])])
         continue;
-      p += d.mass[static_cast<std::size_t>(i)] * d.unsmoothed.col(i);
-      scale += d.mass[static_cast<std::size_t>(i)] * d.unsmoothed.col(i).norm();
+      p += d.particles.mass[static_cast<std::size_t>(i)] * d.fields.unsmoothed.col(i);
+      scale += d.particles.mass[static_cast<std::size_t>(i)] * d.fields.unsmoothed.col(i).norm();
     }
   return p;
 }
@@ -120,7 +121,8 @@ TEST_CASE("MC-SPG free body: linear momentum kept to round-off over 1000 steps")
   run(sim);
   CHECK(sim.result.reason == solver::StopReason::end_cycle);
   CHECK(sim.state->cycle == 1000);
-  CHECK(sim.state->spg.front().renewals > 60);  // SMSTEP 15: the kernel was renewed throughout
+  CHECK(sim.state->spg.front().diagnostics.renewals >
+        60);  // SMSTEP 15: the kernel was renewed throughout
   double unused = 0.0;
   const Vec3 p1 = conserved_momentum(*sim.state, unused);
   MESSAGE("momentum drift ", (p1 - p0).norm() / scale);
@@ -158,7 +160,7 @@ TEST_CASE("MC-SPG angular momentum: the drift is the gather's first-moment defec
   spg::initialise(*sim.state, sim.state->spg.front());
   BudgetHooks recorder;
   const spg::AngularBudget& budget = recorder.budget;
-  double dt = 0.4 * sim.state->spg.front().step_bound.initial_critical;
+  double dt = 0.4 * sim.state->spg.front().kernel.step_bound.initial_critical;
   if (!(dt > 0.0)) dt = 0.02;
   sim.state->time_control.fixed_step = dt;
   run(sim, recorder.hooks());
@@ -190,19 +192,19 @@ TEST_CASE("MC-SPG partial kernel renewal: only strained rows renewed, momentum a
   const Vec3 p0 = conserved_momentum(*sim.state, scale);
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
-  const double share = static_cast<double>(d.renewed_rows - d.count()) /
-                       (static_cast<double>(d.renewals - 1) * d.count());
-  MESSAGE("renewals ", d.renewals, ", share of rows per renewal ", share);
+  const double share = static_cast<double>(d.diagnostics.renewed_rows - d.count()) /
+                       (static_cast<double>(d.diagnostics.renewals - 1) * d.count());
+  MESSAGE("renewals ", d.diagnostics.renewals, ", share of rows per renewal ", share);
   // Measured: 67 renewals, 46 % of the rows each after the first (each row in its own reference).
-  CHECK(d.renewals > 10);
+  CHECK(d.diagnostics.renewals > 10);
   CHECK(share > 0.05);
   CHECK(share < 0.95);
   double unused = 0.0;
   const Vec3 p1 = conserved_momentum(*sim.state, unused);
   MESSAGE("momentum drift ", (p1 - p0).norm() / scale);
   CHECK((p1 - p0).norm() <= 1e-12 * scale);
-  const double mass = std::accumulate(d.mass.begin(), d.mass.end(), 0.0);
-  CHECK(std::accumulate(d.smoothed_mass.begin(), d.smoothed_mass.end(), 0.0) ==
+  const double mass = std::accumulate(d.particles.mass.begin(), d.particles.mass.end(), 0.0);
+  CHECK(std::accumulate(d.kernel.smoothed_mass.begin(), d.kernel.smoothed_mass.end(), 0.0) ==
         doctest::Approx(mass).epsilon(1e-12).scale(0.0));
 }
 
@@ -228,13 +230,14 @@ void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   double expected = 0.0;
   for (spg::Index k = 0; k < pd.count(); ++k) {
     double factor = 1.0;
-    for (spg::Index t = pd.transpose.offsets[static_cast<std::size_t>(k)];
-         t < pd.transpose.offsets[static_cast<std::size_t>(k) + 1]; ++t) {
-      const auto j = static_cast<std::size_t>(pd.transpose.rows[static_cast<std::size_t>(t)]);
-      const double ratio = 3.0 * natural / (tssfac * pd.step[j]);
+    for (spg::Index t = pd.kernel.transpose.offsets[static_cast<std::size_t>(k)];
+         t < pd.kernel.transpose.offsets[static_cast<std::size_t>(k) + 1]; ++t) {
+      const auto j =
+          static_cast<std::size_t>(pd.kernel.transpose.rows[static_cast<std::size_t>(t)]);
+      const double ratio = 3.0 * natural / (tssfac * pd.fields.step[j]);
       if (ratio > 1.0) factor = std::max(factor, ratio * ratio);
     }
-    expected += (factor - 1.0) * pd.mass[static_cast<std::size_t>(k)];
+    expected += (factor - 1.0) * pd.particles.mass[static_cast<std::size_t>(k)];
   }
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 2));
   configure(sim);
@@ -242,7 +245,7 @@ void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   sim.state->mass_scaling_dt = 3.0 * natural;
   spg::Domain& d = sim.state->spg.front();
   spg::initialise(*sim.state, d);
-  const double physical = std::accumulate(d.mass.begin(), d.mass.end(), 0.0);
+  const double physical = std::accumulate(d.particles.mass.begin(), d.particles.mass.end(), 0.0);
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
   const double added = solver::total_added_mass(*sim.state);
@@ -254,7 +257,7 @@ void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   CHECK(added >= 0.98 * expected);
   CHECK(added / physical < 9.0);
   // The smoothed masses (Eq. 20) were rebuilt from the scaled particle masses.
-  CHECK(std::accumulate(d.smoothed_mass.begin(), d.smoothed_mass.end(), 0.0) ==
+  CHECK(std::accumulate(d.kernel.smoothed_mass.begin(), d.kernel.smoothed_mass.end(), 0.0) ==
         doctest::Approx(physical + added).epsilon(1e-12).scale(0.0));
   // The body rings stably at the target step for 1000 cycles, asking for a little more mass now
   // and then (added at the velocity a particle has, as LS-DYNA does, which changes momentum).
@@ -321,16 +324,16 @@ Index tear_shape_function(solver::State& s, spg::Domain& d) {
   const auto cc = static_cast<std::size_t>(centre);
   double others = 0.0;
   std::size_t self = 0;
-  for (Index t = d.transpose.offsets[cc]; t < d.transpose.offsets[cc + 1]; ++t) {
+  for (Index t = d.kernel.transpose.offsets[cc]; t < d.kernel.transpose.offsets[cc + 1]; ++t) {
     const auto tt = static_cast<std::size_t>(t);
-    const auto k = static_cast<std::size_t>(d.transpose.rows[tt]);
-    const auto pair = static_cast<std::size_t>(d.transpose.pairs[tt]);
+    const auto k = static_cast<std::size_t>(d.kernel.transpose.rows[tt]);
+    const auto pair = static_cast<std::size_t>(d.kernel.transpose.pairs[tt]);
     if (k == cc)
       self = pair;
     else
-      others += d.mass[k] * d.shape.value[pair];
+      others += d.particles.mass[k] * d.kernel.shape.value[pair];
   }
-  d.shape.value[self] = (0.11 * d.mass[cc] - others) / d.mass[cc];
+  d.kernel.shape.value[self] = (0.11 * d.particles.mass[cc] - others) / d.particles.mass[cc];
   spg::smooth_masses(s, d);
   return centre;
 }
@@ -342,27 +345,27 @@ TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and s
   spg::Domain& d = sim.state->spg.front();
   spg::initialise(*sim.state, d);
   // The initial arrangement is the reference of the bound: no row is shortened.
-  for (const double m : d.mobility)
+  for (const double m : d.kernel.mobility)
     CHECK(m == 1.0);
   const double natural = spg::particle_pass(*sim.state, d, 0.0).critical_step;
   const Index centre = tear_shape_function(*sim.state, d);
   const auto cc = static_cast<std::size_t>(centre);
-  REQUIRE(d.pinned[cc] == 0);
-  REQUIRE(d.mass[cc] / d.smoothed_mass[cc] == doctest::Approx(1.0 / 0.11));
+  REQUIRE(d.kernel.pinned[cc] == 0);
+  REQUIRE(d.particles.mass[cc] / d.kernel.smoothed_mass[cc] == doctest::Approx(1.0 / 0.11));
   // Every row that holds I is shortened, and only rows near it.
   double largest = 1.0;
   for (Index i = 0; i < d.count(); ++i) {
     const auto ii = static_cast<std::size_t>(i);
     bool holds = false;
-    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
-      holds = holds || d.list.neighbours[static_cast<std::size_t>(p)] == centre;
-    if (holds) CHECK(d.mobility[ii] > 2.0);
+    for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p)
+      holds = holds || d.kernel.list.neighbours[static_cast<std::size_t>(p)] == centre;
+    if (holds) CHECK(d.kernel.mobility[ii] > 2.0);
     // Three spacings away (a row's neighbours, theirs, and the rows holding those) in any
     // axis, nothing changed: the x = 0 face.
-    const Vec3 apart =
-        sim.state->nodes.position.col(d.nodes[ii]) - sim.state->nodes.position.col(d.nodes[cc]);
-    if (apart.cwiseAbs().maxCoeff() > 3.5) CHECK(d.mobility[ii] == 1.0);
-    largest = std::max(largest, d.mobility[ii]);
+    const Vec3 apart = sim.state->nodes.position.col(d.particles.nodes[ii]) -
+                       sim.state->nodes.position.col(d.particles.nodes[cc]);
+    if (apart.cwiseAbs().maxCoeff() > 3.5) CHECK(d.kernel.mobility[ii] == 1.0);
+    largest = std::max(largest, d.kernel.mobility[ii]);
   }
   const double shortened = spg::particle_pass(*sim.state, d, 0.0).critical_step;
   MESSAGE("largest mobility ", largest, ", critical step before / after ", natural, " / ",
@@ -387,7 +390,7 @@ TEST_CASE("MC-SPG coupled to FE by common nodes: total momentum kept to round-of
   set_velocity_field(*sim.state);
   spg::initialise(*sim.state, sim.state->spg.front());
   long shared = 0;
-  for (const auto f : sim.state->spg.front().shared)
+  for (const auto f : sim.state->spg.front().particles.shared)
     shared += f;
   CHECK(shared == 7 * 6);  // the common plane
   double scale = 0.0;
@@ -417,7 +420,7 @@ TEST_CASE("MC-SPG smoothing: an affine velocity field gives the exact strain rat
   int checked = 0;
   double worst = 0.0, boundary_worst = 0.0;
   for (Index i = 0; i < d.count(); ++i) {
-    const Vec3 x = d.initial_position.col(i);
+    const Vec3 x = d.particles.initial_position.col(i);
     // Complete support: the particle, its neighbours and theirs (the gather of Eq. 13 reaches
     // two kernel radii) all have full, symmetric neighbourhoods: 3 layers in from every face.
     const bool inside = (x.array() >= 3.0 - 1e-9).all() && (x.array() <= 6.0 + 1e-9).all();
@@ -460,27 +463,29 @@ TEST_CASE("MC-SPG bond failure: a notched bar pulled apart breaks into pieces, m
   TempDir dir;
   Simulation sim = prepare(dir, source_text("decks/fracture/tension_spg_h1.k"));
   solver::State& s = *sim.state;
-  const double mass0 = std::accumulate(s.spg.front().mass.begin(), s.spg.front().mass.end(), 0.0);
+  const double mass0 = std::accumulate(s.spg.front().particles.mass.begin(),
+                                       s.spg.front().particles.mass.end(), 0.0);
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
   const spg::Domain& d = s.spg.front();
   const spg::Pieces pieces = spg::count_pieces(d);
-  MESSAGE("broken bonds ", d.broken_bonds, ", pieces ", pieces.pieces, ", largest ",
+  MESSAGE("broken bonds ", d.diagnostics.broken_bonds, ", pieces ", pieces.pieces, ", largest ",
           pieces.largest);
   // Measured: 118 bonds broken, 11 pieces (the two halves, the largest of 250 particles, and
   // fragments of the notch's middle layer); the largest piece is a half of the bar.
-  CHECK(d.broken_bonds > 0);
+  CHECK(d.diagnostics.broken_bonds > 0);
   CHECK(pieces.pieces >= 2);
   CHECK(pieces.largest < d.count() * 3 / 5);
   // Particles are never deleted, and the smoothed masses of the last kernel, built without the
   // broken pairs, still sum to the particle masses (Eq. 21).
-  CHECK(std::accumulate(d.mass.begin(), d.mass.end(), 0.0) == mass0);
+  CHECK(std::accumulate(d.particles.mass.begin(), d.particles.mass.end(), 0.0) == mass0);
   // Rows of degenerate (isolated) particles are zero, so their mass enters no m_I.
-  double smoothed = std::accumulate(d.smoothed_mass.begin(), d.smoothed_mass.end(), 0.0);
+  double smoothed =
+      std::accumulate(d.kernel.smoothed_mass.begin(), d.kernel.smoothed_mass.end(), 0.0);
   int isolated = 0;
   for (Index j = 0; j < d.count(); ++j)
-    if (d.isolated[static_cast<std::size_t>(j)]) {
-      smoothed += d.mass[static_cast<std::size_t>(j)];
+    if (d.kernel.isolated[static_cast<std::size_t>(j)]) {
+      smoothed += d.particles.mass[static_cast<std::size_t>(j)];
       ++isolated;
     }
   MESSAGE("isolated particles ", isolated);
@@ -488,10 +493,10 @@ TEST_CASE("MC-SPG bond failure: a notched bar pulled apart breaks into pieces, m
   // Broken bonds are out of every neighbour list (no healing).
   long stale = 0;
   for (Index i = 0; i < d.count(); ++i)
-    for (Index p = d.list.offsets[static_cast<std::size_t>(i)];
-         p < d.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
-      if (j != i && d.bonds.is_broken(i, j)) ++stale;
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
+      if (j != i && d.kernel.bonds.is_broken(i, j)) ++stale;
     }
   CHECK(stale == 0);
 }
@@ -552,13 +557,13 @@ TEST_CASE("MSC 1: mode-control forces vanish for affine motion and keep both mom
   double scale = 0.0;
   for (Index i = 0; i < d.count(); ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    Vec3 f_i = -d.mode_force.col(i);
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    Vec3 f_i = -d.fields.mode_force.col(i);
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
-      f_i += d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] *
-             d.mode_force.col(d.transpose.rows[tt]);
+      f_i += d.kernel.shape.value[static_cast<std::size_t>(d.kernel.transpose.pairs[tt])] *
+             d.fields.mode_force.col(d.kernel.transpose.rows[tt]);
     }
-    const Vec3 x = s.nodes.position.col(d.nodes[ii]);
+    const Vec3 x = s.nodes.position.col(d.particles.nodes[ii]);
     total += f_i;
     moment += x.cross(f_i);
     scale += f_i.norm() * (1.0 + x.norm());
@@ -600,10 +605,11 @@ namespace {
 // has a negative determinant.
 void invert_neighbourhood(solver::State& s, const spg::Domain& d, Index centre) {
   const auto cc = static_cast<std::size_t>(centre);
-  const Vec3 x = s.nodes.position.col(d.nodes[cc]);
-  for (Index p = d.list.offsets[cc]; p < d.list.offsets[cc + 1]; ++p) {
+  const Vec3 x = s.nodes.position.col(d.particles.nodes[cc]);
+  for (Index p = d.kernel.list.offsets[cc]; p < d.kernel.list.offsets[cc + 1]; ++p) {
     const Index node =
-        d.nodes[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])];
+        d.particles
+            .nodes[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])];
     s.nodes.position.col(node) = 2.0 * x - s.nodes.position.col(node);
   }
 }
@@ -620,7 +626,7 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
     const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
     CHECK(r.inverted >= 0);
     CHECK(r.critical_step > 0.0);  // the particles that did not invert still give a step
-    CHECK(d.released == 0);
+    CHECK(d.diagnostics.released == 0);
     run(sim);
     CHECK(sim.result.reason == solver::StopReason::inverted_element);
     MESSAGE(sim.result.message);
@@ -633,12 +639,14 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
     d.settings.bond_failure = true;
     spg::initialise(*sim.state, d);
     for (Index i = 0; i < d.count(); ++i)  // one broken bond each: damage > 0 everywhere
-      d.bonds.broken[static_cast<std::size_t>(d.bonds.offsets[static_cast<std::size_t>(i)])] = 1;
+      d.kernel.bonds
+          .broken[static_cast<std::size_t>(d.kernel.bonds.offsets[static_cast<std::size_t>(i)])] =
+          1;
     invert_neighbourhood(*sim.state, d, centre);
     const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
     CHECK(r.inverted == -1);
-    CHECK(d.debris[static_cast<std::size_t>(centre)] == 1);
-    CHECK(d.released > 0);
+    CHECK(d.fields.debris[static_cast<std::size_t>(centre)] == 1);
+    CHECK(d.diagnostics.released > 0);
     CHECK(std::isfinite(r.critical_step));
     CHECK(r.critical_step > 0.0);
   }

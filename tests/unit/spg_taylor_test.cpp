@@ -52,7 +52,8 @@ SpgRun run_spg(double mode_control) {
   const spg::Domain& d = s.spg.front();
   // The particles on the axis, by layer from the wall: the first 16 gaps (to 7.8 mm).
   std::vector<double> g = layer_gaps(s, [&](Index i) {
-    return std::hypot(d.initial_position(0, i), d.initial_position(1, i)) < 1e-6;
+    return std::hypot(d.particles.initial_position(0, i), d.particles.initial_position(1, i)) <
+           1e-6;
   });
   REQUIRE(g.size() > 16);
   g.resize(16);

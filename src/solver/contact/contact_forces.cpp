@@ -154,7 +154,7 @@ Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t
 bool movable(const State& s, Index node) {
   if (s.nodes.rigid_body[static_cast<std::size_t>(node)] >= 0) return false;
   for (const spg::Domain& d : s.spg)
-    if (std::binary_search(d.nodes.begin(), d.nodes.end(), node)) return false;
+    if (std::binary_search(d.particles.nodes.begin(), d.particles.nodes.end(), node)) return false;
   return true;
 }
 

@@ -12,19 +12,20 @@ void AngularBudget::record(const State& s, const Domain& d, double position_step
   const Eigen::Matrix3Xd positions = particle_positions(s, d);
   for (Index j = 0; j < d.count(); ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    if (d.pinned[jj]) pinned = true;
-    const Index node = d.nodes[jj];
+    if (d.kernel.pinned[jj]) pinned = true;
+    const Index node = d.particles.nodes[jj];
     const Vec3 x = positions.col(j);
     const Vec3 f = s.nodes.force.col(node);
     // A pinned particle keeps a plain velocity: its force is taken at its own position (its
     // gather may be 0/0 where it reaches no smoothed row, as on the FDS plate's FE coupling).
-    const Vec3 xbar = d.pinned[jj] ? x : gathered(d, j, positions);
-    l += d.mass[jj] * x.cross(d.unsmoothed.col(j));
-    a += position_step * d.mass[jj] * s.nodes.velocity.col(node).cross(d.unsmoothed.col(j));
+    const Vec3 xbar = d.kernel.pinned[jj] ? x : gathered(d, j, positions);
+    l += d.particles.mass[jj] * x.cross(d.fields.unsmoothed.col(j));
+    a += position_step * d.particles.mass[jj] *
+         s.nodes.velocity.col(node).cross(d.fields.unsmoothed.col(j));
     b += velocity_step * xbar.cross(f);
     c += velocity_step * x.cross(f);
-    centre += d.mass[jj] * x;
-    mass += d.mass[jj];
+    centre += d.particles.mass[jj] * x;
+    mass += d.particles.mass[jj];
   }
   if (started) {
     sum_a += pending_a;
@@ -35,7 +36,8 @@ void AngularBudget::record(const State& s, const Domain& d, double position_step
     centre /= mass;
     for (Index j = 0; j < d.count(); ++j) {
       const auto jj = static_cast<std::size_t>(j);
-      scale += d.mass[jj] * (positions.col(j) - centre).norm() * d.unsmoothed.col(j).norm();
+      scale += d.particles.mass[jj] * (positions.col(j) - centre).norm() *
+               d.fields.unsmoothed.col(j).norm();
     }
     started = true;
   }

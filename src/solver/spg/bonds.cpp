@@ -28,9 +28,9 @@ Bonds initial_bonds(const Domain& d) {
   const Index n = d.count();
   std::vector<std::vector<Index>> partners(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i)
-    for (Index p = d.list.offsets[static_cast<std::size_t>(i)];
-         p < d.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
       if (j == i) continue;
       partners[static_cast<std::size_t>(i)].push_back(j);
       partners[static_cast<std::size_t>(j)].push_back(i);
@@ -45,7 +45,8 @@ Bonds initial_bonds(const Domain& d) {
         b.offsets[static_cast<std::size_t>(i)] + static_cast<Index>(v.size());
     for (const Index j : v) {
       b.partners.push_back(j);
-      b.length.push_back((d.initial_position.col(j) - d.initial_position.col(i)).norm());
+      b.length.push_back(
+          (d.particles.initial_position.col(j) - d.particles.initial_position.col(i)).norm());
     }
   }
   b.broken.assign(b.partners.size(), 0);
@@ -55,8 +56,8 @@ Bonds initial_bonds(const Domain& d) {
 long break_bonds(const State& s, Domain& d) {
   const SpgSettings& st = d.settings;
   if (!st.bond_failure) return 0;
-  Bonds& b = d.bonds;
-  const auto& ep = d.points.plastic_strain;
+  Bonds& b = d.kernel.bonds;
+  const auto& ep = d.fields.points.plastic_strain;
   const Eigen::Matrix3Xd& x = s.nodes.position;
   long broken = 0;
   // Each bond is stored at both ends; decide it once (i < j) and mark both entries, so the
@@ -71,8 +72,8 @@ long break_bonds(const State& s, Domain& d) {
       const double mean_strain =
           0.5 * (ep[static_cast<std::size_t>(i)] + ep[static_cast<std::size_t>(j)]);
       if (!(mean_strain > st.failure_strain)) continue;
-      const double stretch = (x.col(d.nodes[static_cast<std::size_t>(j)]) -
-                              x.col(d.nodes[static_cast<std::size_t>(i)]))
+      const double stretch = (x.col(d.particles.nodes[static_cast<std::size_t>(j)]) -
+                              x.col(d.particles.nodes[static_cast<std::size_t>(i)]))
                                  .norm() /
                              b.length[kk];
       if (!(stretch > st.failure_stretch)) continue;
@@ -84,7 +85,7 @@ long break_bonds(const State& s, Domain& d) {
       ++broken;
     }
   }
-  d.broken_bonds += broken;
+  d.diagnostics.broken_bonds += broken;
   return broken;
 }
 
@@ -101,9 +102,9 @@ Pieces count_pieces(const Domain& d) {
     return i;
   };
   for (Index i = 0; i < d.count(); ++i)
-    for (Index p = d.list.offsets[static_cast<std::size_t>(i)];
-         p < d.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-      const Index a = find(i), c = find(d.list.neighbours[static_cast<std::size_t>(p)]);
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index a = find(i), c = find(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
       if (a != c) root[static_cast<std::size_t>(std::max(a, c))] = std::min(a, c);
     }
   std::vector<Index> size(static_cast<std::size_t>(d.count()), 0);

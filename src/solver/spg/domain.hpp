@@ -199,31 +199,31 @@ struct Workspace {
   Eigen::Matrix3Xd force, hat, vector, product;     ///< frequency.cpp: f, u-hat, x and A x
 };
 
-struct Domain {
-  Index part = 0;      ///< solver part index
-  Index material = 0;  ///< compiled material index
-  SpgSettings settings;
-
-  // Particles (generated from the part's hexahedra).
+/// What the particles are: their nodes, masses, flags and initial arrangement.
+struct ParticleSet {
   std::vector<Index> nodes;          ///< node of each particle, ascending
-  std::vector<double> mass;          ///< m-hat: lumped mass, constant (Eq. 20)
+  std::vector<double> mass;          ///< m-hat: lumped mass, constant (Eq. 20) but for DT2MS
   std::vector<double> base_mass;     ///< the node's lumped mass incl. FE elements sharing it
+  std::vector<double> added_mass;    ///< DT2MS mass scaling: part of `mass` (and base_mass) added
+  std::vector<double> mass_request;  ///< mass factor a row asked for this cycle (0: none)
   std::vector<std::uint8_t> shared;  ///< node also moved by FE elements, SPC or prescribed motion
   std::vector<std::uint8_t> surface;
-  std::vector<double> initial_volume, volume;
+  std::vector<double> initial_volume;
   Eigen::Matrix3Xd initial_position;  ///< X, for bond stretch (Eq. 35)
   Eigen::Matrix<double, 9, Eigen::Dynamic>
       initial_support;  ///< A0: DX/DY/DZ x spacing (particles.hpp)
+};
 
-  // Kernel: each row in its own reference configuration (renewed per row, renewal.cpp).
+/// The kernel: each row in its own reference configuration (renewed per row, renewal.cpp), what
+/// the rows give (shape functions, transpose, smoothed masses), the bonds between particles and
+/// what the particles' stable step is estimated from.
+struct Kernel {
   Supports support;  ///< at the last renewal or check (S = (F A0^2 F^T)^(1/2), Eq. 34)
   Eigen::Matrix<double, 9, Eigen::Dynamic> reference_deformation;  ///< F^n (Eq. 32), col-major
   NeighbourList list;
   ShapeFunctions shape;
   Transpose transpose;
   std::vector<double> smoothed_mass;  ///< m_I (Eq. 20)
-  std::vector<double> added_mass;     ///< DT2MS mass scaling: part of `mass` (and base_mass) added
-  std::vector<double> mass_request;   ///< mass factor a row asked for this cycle (0: none)
   std::vector<std::uint8_t> pinned;   ///< velocity integrated plainly, not smoothed (see smoothing)
   std::vector<double> length;         ///< characteristic length at the renewal
   /// Row I's mobility: the largest, over the particles J of row I, of m-hat_J times the
@@ -234,26 +234,24 @@ struct Domain {
   /// can raise the frequencies of every row J is in; the row's stable step is divided by the
   /// square root of this bound (renewal.cpp, smooth_masses).
   std::vector<double> mobility;
-  double mobility_scale = 1.0;    ///< the largest Gershgorin bound at the first renewal
-  double largest_mobility = 1.0;  ///< the largest mobility of the run so far, where and when
-  Index largest_mobility_particle = -1;
-  double largest_mobility_time = 0.0;
-  /// The particle's stable step at its last stress update (with the mass it has; before
-  /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
-  std::vector<double> step;
+  double mobility_scale = 1.0;         ///< the largest Gershgorin bound at the first renewal
   std::vector<double> renewal_volume;  ///< volume at the renewal
-  StepBound step_bound;  ///< what the particles' stable step is estimated from and found
   /// Largest nearest-neighbour distance x gradient norm (sum_K |grad phi_K|^2)^(1/2) of the rows
   /// at the first renewal: a row whose gradients later grow past it (an ill-conditioned, torn
   /// neighbourhood) gets the shorter length kappa / |grad phi| (renewal.cpp).
   double gradient_length_scale = 0.0;
   int steps_since_renewal = 0;
-  long renewals = 0;      ///< renewal events (all rows or some)
-  long renewed_rows = 0;  ///< rows rebuilt over all renewals (count() per full renewal)
   std::vector<std::uint8_t> isolated;  ///< the same as flags: no shape functions, no stress
-  long degenerate_events = 0;          ///< renewals that found a degenerate particle
-  Index first_degenerate = -1;         ///< first such particle, and when
-  double first_degenerate_time = 0.0;
+  Bonds bonds;
+  StepBound step_bound;  ///< what the particles' stable step is estimated from and found
+};
+
+/// The particles' state: velocities, one integration point each, the stabilisation's state.
+struct ParticleFields {
+  std::vector<double> volume;
+  /// The particle's stable step at its last stress update (with the mass it has; before
+  /// TSSFAC), 0 for a particle that carries no stress: written to d3plot as `time_step`.
+  std::vector<double> step;
 
   // Velocities (MC-SPG): unsmoothed u-hat at the half step and one step back; the smoothed
   // velocity is the node velocity (it moves the particle, Eq. 28).
@@ -276,17 +274,39 @@ struct Domain {
   std::vector<double> mode_energy;  ///< work of the mode-control or ITB 1 stabilisation forces
                                     ///< (hourglass energy)
   GradientStabilization gradient;   ///< ITB 1 only (empty otherwise)
-
-  Bonds bonds;
-  long broken_bonds = 0;
-  long released = 0;  ///< times a particle became debris
   /// Particles with broken bonds whose neighbourhood inverted: no stress until their row is
   /// renewed (particle_pass.cpp).
   std::vector<std::uint8_t> debris;
+};
+
+/// What the run reports about the part (d3hsp, the summary): counts and where things happened.
+struct SpgDiagnostics {
+  double largest_mobility = 1.0;  ///< the largest mobility of the run so far, where and when
+  Index largest_mobility_particle = -1;
+  double largest_mobility_time = 0.0;
+  long renewals = 0;            ///< renewal events (all rows or some)
+  long renewed_rows = 0;        ///< rows rebuilt over all renewals (count() per full renewal)
+  long degenerate_events = 0;   ///< renewals that found a degenerate particle
+  Index first_degenerate = -1;  ///< first such particle, and when
+  double first_degenerate_time = 0.0;
+  long broken_bonds = 0;
+  long released = 0;  ///< times a particle became debris
+};
+
+/// One SPG part: its settings, its particles, kernel and fields as separate structs, and beside
+/// them what the run reports (diagnostics, timers) and a workspace.
+struct Domain {
+  Index part = 0;      ///< solver part index
+  Index material = 0;  ///< compiled material index
+  SpgSettings settings;
+  ParticleSet particles;
+  Kernel kernel;
+  ParticleFields fields;
+  SpgDiagnostics diagnostics;
   SpgTimes times;
   Workspace scratch;
 
-  [[nodiscard]] Index count() const { return static_cast<Index>(nodes.size()); }
+  [[nodiscard]] Index count() const { return static_cast<Index>(particles.nodes.size()); }
 };
 
 /// Eq. 14's gather at particle i of a field held per particle (3 x count): sum over the rows
@@ -295,9 +315,9 @@ struct Domain {
 inline Eigen::Vector3d gathered(const Domain& d, Index i, const Eigen::Matrix3Xd& field) {
   const auto ii = static_cast<std::size_t>(i);
   Eigen::Vector3d u = Eigen::Vector3d::Zero();
-  for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+  for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
     const auto tt = static_cast<std::size_t>(t);
-    u += d.transpose.gather[tt] * field.col(d.transpose.rows[tt]);
+    u += d.kernel.transpose.gather[tt] * field.col(d.kernel.transpose.rows[tt]);
   }
   return u;
 }

@@ -55,10 +55,10 @@ void reach(const ParticleSubset& from, const std::vector<Index>& offsets,
 // The patch of a product of x nonzero on `live`.
 void spread(const Domain& d, const ParticleSubset& live, ProductPatch& patch) {
   const auto rows_of = [&d](const ParticleSubset& from, ParticleSubset& to) {
-    reach(from, d.transpose.offsets, d.transpose.rows, to);
+    reach(from, d.kernel.transpose.offsets, d.kernel.transpose.rows, to);
   };
   const auto particles_of = [&d](const ParticleSubset& from, ParticleSubset& to) {
-    reach(from, d.list.offsets, d.list.neighbours, to);
+    reach(from, d.kernel.list.offsets, d.kernel.list.neighbours, to);
   };
   rows_of(live, patch.rows);
   particles_of(patch.rows, patch.particles);
@@ -104,25 +104,27 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
     const Index j = member(rows, static_cast<std::size_t>(r));
     const auto jj = static_cast<std::size_t>(j);
     Eigen::Map<Mat3> pj(p.col(j).data());
-    if (d.isolated[jj] || d.debris[jj]) {
+    if (d.kernel.isolated[jj] || d.fields.debris[jj]) {
       pj.setZero();
       continue;
     }
     Mat3 df = Mat3::Zero();
-    for (Index q = d.list.offsets[jj]; q < d.list.offsets[jj + 1]; ++q) {
-      const Index k = d.list.neighbours[static_cast<std::size_t>(q)];
-      df.noalias() += (x.col(k) - x.col(j)) * d.shape.gradient.col(q).transpose();
+    for (Index q = d.kernel.list.offsets[jj]; q < d.kernel.list.offsets[jj + 1]; ++q) {
+      const Index k = d.kernel.list.neighbours[static_cast<std::size_t>(q)];
+      df.noalias() += (x.col(k) - x.col(j)) * d.kernel.shape.gradient.col(q).transpose();
     }
-    const Eigen::Map<const Mat3> f_hat(d.deformation.col(j).data());
+    const Eigen::Map<const Mat3> f_hat(d.fields.deformation.col(j).data());
     const Mat3 f_inv = f_hat.inverse();
     const Mat3 l = df * f_inv;
     const Mat3 e = 0.5 * (l + l.transpose());
-    const double physical = d.mass[jj] - d.added_mass[jj];
+    const double physical = d.particles.mass[jj] - d.particles.added_mass[jj];
     const double rc2 =
-        physical / d.volume[jj] * wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
-    const double g = d.failed[jj] ? 0.0 : shear;
+        physical / d.fields.volume[jj] *
+        wave_speed_squared(mat, d.fields.volume[jj] / d.particles.initial_volume[jj]);
+    const double g = d.fields.failed[jj] ? 0.0 : shear;
     const Mat3 sigma = (rc2 - 2.0 * g) * e.trace() * Mat3::Identity() + 2.0 * g * e;
-    const double weight = d.volume[jj] * (d.surface[jj] ? d.settings.surface_factor : 1.0);
+    const double weight =
+        d.fields.volume[jj] * (d.particles.surface[jj] ? d.settings.surface_factor : 1.0);
     pj = weight * sigma * f_inv.transpose();
   }
   // Forces, gathered over the transpose; for the smoothed particles the accelerations f / m
@@ -133,15 +135,16 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
     const Index i = member(particles, static_cast<std::size_t>(r));
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const Eigen::Map<const Mat3> pj(p.col(d.transpose.rows[static_cast<std::size_t>(t)]).data());
-      f.noalias() -= pj * d.transpose.gradient.col(t);
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
+      const Eigen::Map<const Mat3> pj(
+          p.col(d.kernel.transpose.rows[static_cast<std::size_t>(t)]).data());
+      f.noalias() -= pj * d.kernel.transpose.gradient.col(t);
     }
-    acc.col(i) = !d.pinned[ii] && mc ? Vec3(f / d.smoothed_mass[ii]) : f;
+    acc.col(i) = !d.kernel.pinned[ii] && mc ? Vec3(f / d.kernel.smoothed_mass[ii]) : f;
   }
   if (stabilization) {  // ITB 1: every particle pinned, acc holds forces
-    stabilization_operator(d, mat, x, d.gradient.force, rows, particles);
-    acc += d.gradient.force;
+    stabilization_operator(d, mat, x, d.fields.gradient.force, rows, particles);
+    acc += d.fields.gradient.force;
   }
   const auto hat_count = static_cast<std::int64_t>(members(hats, n));
 #pragma omp parallel for schedule(static, 256) if (hat_count > 512)
@@ -150,15 +153,16 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
     const auto kk = static_cast<std::size_t>(k);
     Vec3 sum = Vec3::Zero();
     if (mc)
-      for (Index q = d.list.offsets[kk]; q < d.list.offsets[kk + 1]; ++q) {
-        const Index j = d.list.neighbours[static_cast<std::size_t>(q)];
-        if (!d.pinned[static_cast<std::size_t>(j)])
-          sum += d.shape.value[static_cast<std::size_t>(q)] * acc.col(j);
+      for (Index q = d.kernel.list.offsets[kk]; q < d.kernel.list.offsets[kk + 1]; ++q) {
+        const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(q)];
+        if (!d.kernel.pinned[static_cast<std::size_t>(j)])
+          sum += d.kernel.shape.value[static_cast<std::size_t>(q)] * acc.col(j);
       }
-    if (d.pinned[kk] || !mc) {
-      const auto node = static_cast<std::size_t>(d.nodes[kk]);
+    if (d.kernel.pinned[kk] || !mc) {
+      const auto node = static_cast<std::size_t>(d.particles.nodes[kk]);
       const double m = s.nodes.mass[node] + s.nodes.added_mass[node];
-      hat.col(k) = (acc.col(k) + d.mass[kk] * sum) / m;  // acc holds the pinned one's force
+      hat.col(k) =
+          (acc.col(k) + d.particles.mass[kk] * sum) / m;  // acc holds the pinned one's force
     } else {
       hat.col(k) = sum;
     }
@@ -168,7 +172,7 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
   for (std::int64_t r = 0; r < out_count; ++r) {
     const Index i = member(outs, static_cast<std::size_t>(r));
     const auto ii = static_cast<std::size_t>(i);
-    if (d.pinned[ii] || !mc) {
+    if (d.kernel.pinned[ii] || !mc) {
       out.col(i) = hat.col(i);
       continue;
     }
@@ -221,7 +225,7 @@ std::vector<double> self_adjoint_weights(const State& s, const Domain& d) {
   if (d.settings.stabilization == Stabilization::momentum_consistent) return w;
   w.resize(static_cast<std::size_t>(d.count()));
   for (Index k = 0; k < d.count(); ++k) {
-    const auto node = static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(k)]);
+    const auto node = static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(k)]);
     w[static_cast<std::size_t>(k)] = s.nodes.mass[node] + s.nodes.added_mass[node];
   }
   return w;

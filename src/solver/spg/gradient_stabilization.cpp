@@ -53,7 +53,7 @@ namespace {
 
 bool active(const Domain& d, Index j) {
   const auto jj = static_cast<std::size_t>(j);
-  return d.isolated[jj] == 0 && d.debris[jj] == 0;
+  return d.kernel.isolated[jj] == 0 && d.fields.debris[jj] == 0;
 }
 
 // The inverse of symmetric_tensor(): a symmetric t as xx yy zz xy yz zx into `out`.
@@ -66,7 +66,7 @@ void store_symmetric(const Mat3& t, double* out) {
 
 void stabilization_moments(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
-  GradientStabilization& g = d.gradient;
+  GradientStabilization& g = d.fields.gradient;
   if (g.moment.cols() != n) {  // the first renewal; the stress pass fills bulk and shear
     g.moment.setZero(6, n);
     g.strain.setZero(18, n);
@@ -84,12 +84,13 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
     // A new reference: e = 0 exactly (the second-derivative functions vanish on the linear
     // field of the present positions); sigma-tilde was carried over (carry_stabilization).
     g.strain.col(j).setZero();
-    const Vec3 xj = x.col(d.nodes[jj]);
+    const Vec3 xj = x.col(d.particles.nodes[jj]);
     Mat3 m = Mat3::Zero();
-    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+    for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
       const auto pp = static_cast<std::size_t>(p);
-      const Vec3 r = x.col(d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])]) - xj;
-      m.noalias() += d.shape.value[pp] * r * r.transpose();
+      const Vec3 r =
+          x.col(d.particles.nodes[static_cast<std::size_t>(d.kernel.list.neighbours[pp])]) - xj;
+      m.noalias() += d.kernel.shape.value[pp] * r * r.transpose();
     }
     // RK functions may be negative near a surface: keep the moment positive semi-definite.
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
@@ -111,12 +112,12 @@ void curvature(const Domain& d, const Eigen::Matrix3Xd& u, Index j, Mat3 g[3],
                Eigen::Ref<Eigen::Matrix<double, 6, 1>> own_psi, Eigen::Ref<Vec3> own_grad) {
   const auto jj = static_cast<std::size_t>(j);
   Eigen::Matrix<double, 6, 3> hu = Eigen::Matrix<double, 6, 3>::Zero();  // (ab, component)
-  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
-    const Index k = d.list.neighbours[static_cast<std::size_t>(p)];
+  for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
+    const Index k = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
     if (k == j) continue;
-    const Eigen::Matrix<double, 6, 1> psi = d.shape.hessian.col(p);
+    const Eigen::Matrix<double, 6, 1> psi = d.kernel.shape.hessian.col(p);
     own_psi += psi;
-    own_grad += d.shape.gradient.col(p);
+    own_grad += d.kernel.shape.gradient.col(p);
     hu.noalias() += psi * (u.col(k) - u.col(j)).transpose();
   }
   for (int q = 0; q < 6; ++q) {
@@ -136,7 +137,7 @@ void strain_gradients(const Mat3& f, const Mat3 g[3], double e[18]) {
 // sigma-tilde_a = C-tilde : sum_b M_ab e_b = 2 G (M e)_a + lambda tr((M e)_a) I for a = X, Y, Z.
 void stabilization_stresses(const Domain& d, Index j, double shear, double lame, const double e[18],
                             double sigma[18]) {
-  const double* mo = d.gradient.moment.col(j).data();
+  const double* mo = d.fields.gradient.moment.col(j).data();
   const double m[3][3] = {{mo[0], mo[3], mo[5]}, {mo[3], mo[1], mo[4]}, {mo[5], mo[4], mo[2]}};
   for (int a = 0; a < 3; ++a) {
     double me[6];
@@ -197,11 +198,11 @@ void stabilization_forces(const Domain& d, const Eigen::Matrix<double, 27, Eigen
     const Index k = member(particles, static_cast<std::size_t>(r));
     const auto kk = static_cast<std::size_t>(k);
     Vec3 f = pushed(p, q, own_psi.col(k), own_grad.col(k), k);
-    for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t) {
-      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+    for (Index t = d.kernel.transpose.offsets[kk]; t < d.kernel.transpose.offsets[kk + 1]; ++t) {
+      const Index j = d.kernel.transpose.rows[static_cast<std::size_t>(t)];
       if (j == k || !active(d, j)) continue;
-      const auto pair = d.transpose.pairs[static_cast<std::size_t>(t)];
-      f -= pushed(p, q, d.shape.hessian.col(pair), d.transpose.gradient.col(t), j);
+      const auto pair = d.kernel.transpose.pairs[static_cast<std::size_t>(t)];
+      f -= pushed(p, q, d.kernel.shape.hessian.col(pair), d.kernel.transpose.gradient.col(t), j);
     }
     force.col(k) = f;
   }
@@ -224,9 +225,9 @@ void soften(double sigma[18], double old_shear, double shear, double old_bulk, d
 // Row j's sigma-tilde and e advanced to the positions x (F its F-hat there, curv its
 // curvature): sigma-tilde += C-tilde : M (e - e_last), after scaling down with fallen moduli,
 // and the step's work, trapezoidal in the stresses the forces saw at either end, into
-// d.mode_energy.
+// d.fields.mode_energy.
 void advance_row(Domain& d, Index j, const Mat3& f, const Mat3 curv[3]) {
-  GradientStabilization& g = d.gradient;
+  GradientStabilization& g = d.fields.gradient;
   const auto jj = static_cast<std::size_t>(j);
   double* sigma = g.stress.col(j).data();
   double* strain = g.strain.col(j).data();
@@ -248,7 +249,7 @@ void advance_row(Domain& d, Index j, const Mat3& f, const Mat3 curv[3]) {
   g.applied_shear[jj] = shear;
   g.applied_bulk[jj] = bulk;
   std::copy(e, e + 18, strain);
-  d.mode_energy[jj] += d.renewal_volume[jj] * work;
+  d.fields.mode_energy[jj] += d.kernel.renewal_volume[jj] * work;
 }
 
 // Sized workspaces of the force pass, zeroed.
@@ -262,7 +263,7 @@ void clear_workspace(GradientStabilization& g, Index n) {
 }  // namespace
 
 void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
-  GradientStabilization& g = d.gradient;
+  GradientStabilization& g = d.fields.gradient;
   const Index n = d.count();
   if (g.stress.cols() != n) return;  // the first renewal: nothing stored yet
   const Eigen::Matrix3Xd x = particle_positions(s, d);
@@ -293,7 +294,7 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
 
 void strain_gradient_stabilization(State& s, Domain& d) {
   const Index n = d.count();
-  GradientStabilization& g = d.gradient;
+  GradientStabilization& g = d.fields.gradient;
   const Eigen::Matrix3Xd x = particle_positions(s, d);
   clear_workspace(g, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
@@ -305,16 +306,17 @@ void strain_gradient_stabilization(State& s, Domain& d) {
       g.strain.col(j).setZero();
       continue;
     }
-    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(j).data());
+    const Mat3 f = Eigen::Map<const Mat3>(d.fields.deformation.col(j).data());
     Mat3 curv[3];
     curvature(d, x, j, curv, g.own_hessian.col(j), g.own_gradient.col(j));
     advance_row(d, j, f, curv);
-    store_work_stresses(sigma, d.renewal_volume[jj], f, curv, g.work_stress, g.curvature_stress, j);
+    store_work_stresses(sigma, d.kernel.renewal_volume[jj], f, curv, g.work_stress,
+                        g.curvature_stress, j);
   }
   stabilization_forces(d, g.work_stress, &g.curvature_stress, g.own_hessian, g.own_gradient,
                        g.force);
   for (Index k = 0; k < n; ++k)
-    s.nodes.force.col(d.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
+    s.nodes.force.col(d.particles.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
 }
 
 void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
@@ -330,20 +332,21 @@ void stabilization_operator(const Domain& d, const Material& mat, const Eigen::M
     const auto jj = static_cast<std::size_t>(j);
     if (!active(d, j)) continue;
     // Linearised about the present state with its curvature neglected: de_a = sym(F^T dG_a).
-    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(j).data());
+    const Mat3 f = Eigen::Map<const Mat3>(d.fields.deformation.col(j).data());
     Mat3 curv[3];
     curvature(d, x, j, curv, w.own_hessian.col(j), w.own_gradient.col(j));
     double e[18];
     strain_gradients(f, curv, e);
     // The elastic C (as frequency.cpp takes for nodal integration): K from the wave speed.
-    const double physical = d.mass[jj] - d.added_mass[jj];
+    const double physical = d.particles.mass[jj] - d.particles.added_mass[jj];
     const double rc2 =
-        physical / d.volume[jj] * wave_speed_squared(mat, d.volume[jj] / d.initial_volume[jj]);
-    const double shear = d.failed[jj] ? 0.0 : mat.shear_modulus;
+        physical / d.fields.volume[jj] *
+        wave_speed_squared(mat, d.fields.volume[jj] / d.particles.initial_volume[jj]);
+    const double shear = d.fields.failed[jj] ? 0.0 : mat.shear_modulus;
     double sigma[18];
     stabilization_stresses(d, j, shear, rc2 - 2.0 * shear, e, sigma);
-    store_work_stresses(sigma, d.renewal_volume[jj], f, nullptr, w.work_stress, w.curvature_stress,
-                        j);
+    store_work_stresses(sigma, d.kernel.renewal_volume[jj], f, nullptr, w.work_stress,
+                        w.curvature_stress, j);
   }
   // No Q (null): the linearised curvature stress is left out, so the gradient sums push nothing.
   stabilization_forces(d, w.work_stress, nullptr, w.own_hessian, w.own_gradient, force, particles);

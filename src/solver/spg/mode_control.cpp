@@ -27,27 +27,30 @@ namespace mcdyna::solver::spg {
 Vec3 mode_residual(const State& s, const Domain& d, Index j) {
   const auto jj = static_cast<std::size_t>(j);
   const Eigen::Matrix3Xd& x = s.nodes.position;
-  const Vec3 xj = x.col(d.nodes[jj]);
+  const Vec3 xj = x.col(d.particles.nodes[jj]);
   Vec3 r = Vec3::Zero();  // sum_K phi_K (x_J - x_K): the same as r_J by the partition of unity
-  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+  for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
     const auto pp = static_cast<std::size_t>(p);
-    r += d.shape.value[pp] * (xj - x.col(d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])]));
+    r += d.kernel.shape.value[pp] *
+         (xj - x.col(d.particles.nodes[static_cast<std::size_t>(d.kernel.list.neighbours[pp])]));
   }
   return r;
 }
 
 void mode_control_update(const State& s, Domain& d, Index j) {
   const auto jj = static_cast<std::size_t>(j);
-  if (d.isolated[jj] || d.debris[jj]) {  // no row to measure with: no force, energy kept
-    d.mode_force.col(j).setZero();
+  if (d.kernel.isolated[jj] ||
+      d.fields.debris[jj]) {  // no row to measure with: no force, energy kept
+    d.fields.mode_force.col(j).setZero();
     return;
   }
   const Vec3 r = mode_residual(s, d, j);
-  const Vec3 g = d.settings.mode_control * d.mode_stiffness[jj] * r;
+  const Vec3 g = d.settings.mode_control * d.fields.mode_stiffness[jj] * r;
   // Work of the forces from the last residual to this one (midpoint rule).
-  d.mode_energy[jj] += 0.5 * (d.mode_force.col(j) + g).dot(r - d.mode_residual.col(j));
-  d.mode_residual.col(j) = r;
-  d.mode_force.col(j) = g;
+  d.fields.mode_energy[jj] +=
+      0.5 * (d.fields.mode_force.col(j) + g).dot(r - d.fields.mode_residual.col(j));
+  d.fields.mode_residual.col(j) = r;
+  d.fields.mode_force.col(j) = g;
 }
 
 void mode_control_forces(const State& s, Domain& d) {

@@ -36,9 +36,9 @@ void scale_particle_mass(const State& s, Domain& d, Index j, Outcome& o) {
   if (!(target > 0.0) || !std::isfinite(o.step)) return;
   const auto jj = static_cast<std::size_t>(j);
   double factor = std::numeric_limits<double>::infinity();  // the row's smallest mass factor
-  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p)
+  for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p)
     factor = std::min(factor, d.scratch.mass_factor[static_cast<std::size_t>(
-                                  d.list.neighbours[static_cast<std::size_t>(p)])]);
+                                  d.kernel.list.neighbours[static_cast<std::size_t>(p)])]);
   const double scale = s.time_control.scale_factor;
   const double with_added = o.step * std::sqrt(std::isfinite(factor) ? factor : 1.0);
   if (scale * with_added >= target) {
@@ -46,7 +46,7 @@ void scale_particle_mass(const State& s, Domain& d, Index j, Outcome& o) {
     return;
   }
   const double ratio = target / (scale * o.step);
-  d.mass_request[jj] = ratio * ratio;
+  d.particles.mass_request[jj] = ratio * ratio;
   o.step = target / scale;
   o.mass_added = true;
 }
@@ -59,7 +59,8 @@ void mass_factors(Domain& d) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index k = 0; k < n; ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    d.scratch.mass_factor[kk] = d.mass[kk] / (d.mass[kk] - d.added_mass[kk]);
+    d.scratch.mass_factor[kk] =
+        d.particles.mass[kk] / (d.particles.mass[kk] - d.particles.added_mass[kk]);
   }
 }
 
@@ -70,18 +71,17 @@ void grow_row_masses(Domain& d) {
   for (Index k = 0; k < n; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     double factor = 0.0;
-    for (Index t = d.transpose.offsets[kk]; t < d.transpose.offsets[kk + 1]; ++t)
-      factor = std::max(
-          factor,
-          d.mass_request[static_cast<std::size_t>(d.transpose.rows[static_cast<std::size_t>(t)])]);
-    const double physical = d.mass[kk] - d.added_mass[kk];
-    const double added = factor * physical - d.mass[kk];
+    for (Index t = d.kernel.transpose.offsets[kk]; t < d.kernel.transpose.offsets[kk + 1]; ++t)
+      factor = std::max(factor, d.particles.mass_request[static_cast<std::size_t>(
+                                    d.kernel.transpose.rows[static_cast<std::size_t>(t)])]);
+    const double physical = d.particles.mass[kk] - d.particles.added_mass[kk];
+    const double added = factor * physical - d.particles.mass[kk];
     if (!(added > 0.0)) continue;
-    d.mass[kk] += added;
-    d.base_mass[kk] += added;
-    d.added_mass[kk] += added;
+    d.particles.mass[kk] += added;
+    d.particles.base_mass[kk] += added;
+    d.particles.added_mass[kk] += added;
   }
-  std::fill(d.mass_request.begin(), d.mass_request.end(), 0.0);
+  std::fill(d.particles.mass_request.begin(), d.particles.mass_request.end(), 0.0);
 }
 
 // A particle that has lost bonds (Eq. 36) and whose neighbourhood then inverts is debris of the
@@ -91,10 +91,10 @@ void grow_row_masses(Domain& d) {
 Outcome release_or_invert(Domain& d, Index j) {
   // Designated fields: a positional {0.0, true, false} silently shifted when physical_step was
   // added (an inversion then read as a zero step, a release as an inversion).
-  if (!d.settings.bond_failure || !(d.bonds.damage(j) > 0.0))
+  if (!d.settings.bond_failure || !(d.kernel.bonds.damage(j) > 0.0))
     return {.step = 0.0, .inverted = true};
-  d.debris[static_cast<std::size_t>(j)] = 1;
-  d.stress_gradient.col(j).setZero();
+  d.fields.debris[static_cast<std::size_t>(j)] = 1;
+  d.fields.stress_gradient.col(j).setZero();
   return {.released = true};
 }
 
@@ -115,18 +115,18 @@ double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic
   const double smallest = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
   const auto jj = static_cast<std::size_t>(j);
   if (d.settings.step_estimate == StepEstimate::eigenvalue)
-    return d.step_bound.lengths[jj] * smallest;
-  return std::min(isotropic_length, d.length[jj] * smallest);
+    return d.kernel.step_bound.lengths[jj] * smallest;
+  return std::min(isotropic_length, d.kernel.length[jj] * smallest);
 }
 
-// Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.stress_gradient.
+// Stress update of particle j over `dt`; leaves w sigma F-hat^-T in d.fields.stress_gradient.
 template <class Model>
 Outcome particle_update(State& s, Domain& d, const Material& mat, const Model& model, Index j,
                         double dt) {
   const auto jj = static_cast<std::size_t>(j);
-  Eigen::Map<Mat3> f_hat(d.deformation.col(j).data());
-  Eigen::Map<Mat3> p_j(d.stress_gradient.col(j).data());
-  if (d.isolated[jj] || d.debris[jj]) {  // no strain measurable, no stress carried
+  Eigen::Map<Mat3> f_hat(d.fields.deformation.col(j).data());
+  Eigen::Map<Mat3> p_j(d.fields.stress_gradient.col(j).data());
+  if (d.kernel.isolated[jj] || d.fields.debris[jj]) {  // no strain measurable, no stress carried
     p_j.setZero();
     return {};
   }
@@ -150,50 +150,53 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, const Model& m
   const double grow = 1.0 + half * k.trace;
   const double shrink = (1.0 - (dt - half) * k.trace) / grow;
   if (!(shrink > 0.0) || !(grow > 0.0)) return release_or_invert(d, j);
-  const double volume = d.volume[jj] / shrink;
+  const double volume = d.fields.volume[jj] / shrink;
 
   // Deviator and volumetric state, as at an FE integration point (point_kinematics.hpp).
-  double* dev = d.points.deviator.col(j).data();
-  double* alpha = d.points.back_stress.size() > 0 ? d.points.back_stress.col(j).data() : nullptr;
+  double* dev = d.fields.points.deviator.col(j).data();
+  double* alpha =
+      d.fields.points.back_stress.size() > 0 ? d.fields.points.back_stress.col(j).data() : nullptr;
   bool failed = false;
   const bool gradient = d.settings.stabilization == Stabilization::strain_gradient;
   double modified_shear = 0.0;
   const double dev_work =
-      work_volume(k.objective, d.volume[jj], volume) *
+      work_volume(k.objective, d.fields.volume[jj], volume) *
       deviatoric_point_update(
-          mat, model, k, dt, d.temperature[jj], d.pressure[jj],
-          PointState{dev, alpha, d.points.plastic_strain[jj], d.points.damage[jj]}, failed,
-          gradient ? &modified_shear : nullptr);
-  if (failed) d.failed[jj] = 1;
-  const double length = d.length[jj] * std::cbrt(volume / d.renewal_volume[jj]);
-  const PointVolumetrics vol =
-      volumetric_point_update(mat, d.settings.bulk_viscosity, d.initial_volume[jj], d.volume[jj],
-                              volume, k.trace, dt, dev_work, length,
-                              VolumetricState{d.pressure[jj], d.eos_energy[jj], d.temperature[jj],
-                                              d.viscosity[jj], d.internal_energy[jj]},
-                              k.objective);
-  d.volume[jj] = volume;
+          mat, model, k, dt, d.fields.temperature[jj], d.fields.pressure[jj],
+          PointState{dev, alpha, d.fields.points.plastic_strain[jj], d.fields.points.damage[jj]},
+          failed, gradient ? &modified_shear : nullptr);
+  if (failed) d.fields.failed[jj] = 1;
+  const double length = d.kernel.length[jj] * std::cbrt(volume / d.kernel.renewal_volume[jj]);
+  const PointVolumetrics vol = volumetric_point_update(
+      mat, d.settings.bulk_viscosity, d.particles.initial_volume[jj], d.fields.volume[jj], volume,
+      k.trace, dt, dev_work, length,
+      VolumetricState{d.fields.pressure[jj], d.fields.eos_energy[jj], d.fields.temperature[jj],
+                      d.fields.viscosity[jj], d.fields.internal_energy[jj]},
+      k.objective);
+  d.fields.volume[jj] = volume;
   bool zero_dev = vol.zero_deviator;
-  if (d.failed[jj]) {  // material failure (FS on MAT_003/024, JC damage): no shear, no tension
+  if (d.fields
+          .failed[jj]) {  // material failure (FS on MAT_003/024, JC damage): no shear, no tension
     zero_dev = true;
-    d.pressure[jj] = std::max(d.pressure[jj], 0.0);
+    d.fields.pressure[jj] = std::max(d.fields.pressure[jj], 0.0);
   }
   if (zero_dev)
     for (int c = 0; c < 6; ++c)
       dev[c] = 0.0;
 
   // w sigma F-hat^-T, w = V (times MSFAC on the surface): f_I = -sum_J (w sigma F^-T)_J grad phi.
-  const double pq = d.pressure[jj] + vol.viscosity;
+  const double pq = d.fields.pressure[jj] + vol.viscosity;
   Mat3 sigma;
   sigma << dev[0] - pq, dev[3], dev[5], dev[3], dev[1] - pq, dev[4], dev[5], dev[4], dev[2] - pq;
-  const double weight = volume * (d.surface[jj] ? d.settings.surface_factor : 1.0);
+  const double weight = volume * (d.particles.surface[jj] ? d.settings.surface_factor : 1.0);
   p_j = weight * sigma * f_inv.transpose();
-  d.mode_stiffness[jj] = d.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
+  d.fields.mode_stiffness[jj] =
+      d.particles.mass[jj] * vol.sound * vol.sound / (length * length);  // rho c^2 h
   double step = element_step(d.settings.bulk_viscosity, step_length(d, j, f_hat, length), vol.sound,
                              k.trace) /
-                std::sqrt(d.mobility[jj]);
+                std::sqrt(d.kernel.mobility[jj]);
   if (gradient) {  // ITB 1: what the stabilisation pass needs, and its stiffer step
-    GradientStabilization& g = d.gradient;
+    GradientStabilization& g = d.fields.gradient;
     g.shear[jj] = modified_shear;
     g.bulk[jj] =
         std::max(vol.density * vol.wave_speed_squared - 4.0 / 3.0 * mat.shear_modulus, 0.0);
@@ -210,14 +213,14 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
   const auto jj = static_cast<std::size_t>(j);
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const Eigen::Matrix3Xd& v = s.nodes.velocity;
-  const Index node_j = d.nodes[jj];
+  const Index node_j = d.particles.nodes[jj];
   // F-hat and the reference velocity gradient from differences to particle j (sum grad phi = 0
   // makes them equal to Eq. 33's sums, with less round-off).
   Mat3 f = Mat3::Zero(), lr = Mat3::Zero();
-  for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+  for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
     const auto pp = static_cast<std::size_t>(p);
-    const Index node_i = d.nodes[static_cast<std::size_t>(d.list.neighbours[pp])];
-    const Vec3 g = d.shape.gradient.col(p);
+    const Index node_i = d.particles.nodes[static_cast<std::size_t>(d.kernel.list.neighbours[pp])];
+    const Vec3 g = d.kernel.shape.gradient.col(p);
     f.noalias() += (x.col(node_i) - x.col(node_j)) * g.transpose();
     lr.noalias() += (v.col(node_i) - v.col(node_j)) * g.transpose();
   }
@@ -239,7 +242,7 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
-  if (d.steps_since_renewal >= d.settings.renewal_interval) {
+  if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
     const auto bonds_start = Clock::now();
     const long broke = break_bonds(s, d);
     d.times.bonds += seconds_since(bonds_start);
@@ -249,7 +252,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     else if (due > 0)
       renew_kernel(s, d, renewed);
     else
-      d.steps_since_renewal = 0;
+      d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
   }
   if (d.settings.step_estimate == StepEstimate::eigenvalue) {
@@ -257,7 +260,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     recalibrate_stiffness_length(s, d, renewed);
     d.times.step_estimate += seconds_since(estimate_start);
   }
-  ++d.steps_since_renewal;
+  ++d.kernel.steps_since_renewal;
   auto start = Clock::now();
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   const Index n = d.count();
@@ -285,7 +288,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 #pragma omp for schedule(static, 128) nowait
           for (Index j = 0; j < n; ++j) {
             const Outcome o = particle_update(s, d, mat, model, j, step);
-            d.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
+            d.fields.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
             if (control) mode_control_update(s, d, j);
             released += o.released ? 1 : 0;
             if (o.mass_added) mass_added = 1;
@@ -321,7 +324,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
         }
       },
       mat.model);
-  d.released += released;
+  d.diagnostics.released += released;
   if (mass_added) {
     grow_row_masses(d);
     smooth_masses(s, d);
@@ -340,25 +343,26 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
-      const Eigen::Map<const Mat3> p_j(d.stress_gradient.col(d.transpose.rows[tt]).data());
-      f.noalias() -= p_j * d.transpose.gradient.col(t);
+      const Eigen::Map<const Mat3> p_j(
+          d.fields.stress_gradient.col(d.kernel.transpose.rows[tt]).data());
+      f.noalias() -= p_j * d.kernel.transpose.gradient.col(t);
       if (control)
-        f += d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] *
-             d.mode_force.col(d.transpose.rows[tt]);
+        f += d.kernel.shape.value[static_cast<std::size_t>(d.kernel.transpose.pairs[tt])] *
+             d.fields.mode_force.col(d.kernel.transpose.rows[tt]);
     }
-    if (control) f -= d.mode_force.col(i);
-    s.nodes.force.col(d.nodes[ii]) += f;
+    if (control) f -= d.fields.mode_force.col(i);
+    s.nodes.force.col(d.particles.nodes[ii]) += f;
   }
   d.times.force += seconds_since(start);
 
   ParticlePassResult r;
   r.critical_step = best;
   r.controlling = controlling;
-  d.step_bound.pass_step = best;
-  d.step_bound.physical = best_physical;
-  d.step_bound.physical_particle = controlling_physical;
+  d.kernel.step_bound.pass_step = best;
+  d.kernel.step_bound.physical = best_physical;
+  d.kernel.step_bound.physical_particle = controlling_physical;
   r.inverted = inverted == std::numeric_limits<Index>::max() ? -1 : inverted;
   r.non_finite = non_finite == std::numeric_limits<Index>::max() ? -1 : non_finite;
   return r;

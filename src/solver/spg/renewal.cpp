@@ -37,13 +37,13 @@ Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
 // unseen), and it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
 Supports current_supports(const Domain& d) {
   if (d.settings.kernel_update == KernelUpdate::eulerian)
-    return deformed(d.settings.shape, d.initial_support);
+    return deformed(d.settings.shape, d.particles.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
 #pragma omp parallel for schedule(static) if (d.count() > 4096)
   for (Index i = 0; i < d.count(); ++i) {
-    const Mat3 f = Eigen::Map<const Mat3>(d.deformation.col(i).data()) *
-                   Eigen::Map<const Mat3>(d.reference_deformation.col(i).data());
-    const Eigen::Map<const Mat3> a0(d.initial_support.col(i).data());
+    const Mat3 f = Eigen::Map<const Mat3>(d.fields.deformation.col(i).data()) *
+                   Eigen::Map<const Mat3>(d.kernel.reference_deformation.col(i).data());
+    const Eigen::Map<const Mat3> a0(d.particles.initial_support.col(i).data());
     const Mat3 fa = f * a0;
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
     eig.computeDirect(fa * fa.transpose());
@@ -58,7 +58,7 @@ Supports current_supports(const Domain& d) {
 
 // Drops the pairs whose bond is broken (Eq. 36: phi = 0 for a disconnected pair, for good).
 void remove_broken_pairs(const Domain& d, NeighbourList& l) {
-  if (d.broken_bonds == 0) return;
+  if (d.diagnostics.broken_bonds == 0) return;
   std::vector<Index> offsets(l.offsets.size(), 0);
   std::size_t out = 0;
   for (Index i = 0; i < d.count(); ++i) {
@@ -66,7 +66,7 @@ void remove_broken_pairs(const Domain& d, NeighbourList& l) {
     const auto last = static_cast<std::size_t>(l.offsets[static_cast<std::size_t>(i) + 1]);
     for (std::size_t p = first; p < last; ++p) {
       const Index j = l.neighbours[p];
-      if (j != i && d.bonds.is_broken(i, j)) continue;
+      if (j != i && d.kernel.bonds.is_broken(i, j)) continue;
       l.neighbours[out++] = j;
     }
     offsets[static_cast<std::size_t>(i) + 1] = static_cast<Index>(out);
@@ -113,19 +113,19 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
   for (Index i = 0; i < n; ++i)
     list.offsets[static_cast<std::size_t>(i) + 1] =
         list.offsets[static_cast<std::size_t>(i)] +
-        (rows[static_cast<std::size_t>(i)] ? fresh.count(i) : d.list.count(i));
+        (rows[static_cast<std::size_t>(i)] ? fresh.count(i) : d.kernel.list.count(i));
   const auto pairs = static_cast<std::size_t>(list.offsets.back());
   list.neighbours.resize(pairs);
   ShapeFunctions shape;
   shape.value.resize(pairs);
   shape.gradient.resize(3, static_cast<Eigen::Index>(pairs));
-  const bool second = d.shape.hessian.cols() > 0;
+  const bool second = d.kernel.shape.hessian.cols() > 0;
   if (second) shape.hessian.resize(6, static_cast<Eigen::Index>(pairs));
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const bool renewed = rows[static_cast<std::size_t>(i)] != 0;
-    const NeighbourList& from = renewed ? fresh : d.list;
-    const ShapeFunctions& from_shape = renewed ? fresh_shape : d.shape;
+    const NeighbourList& from = renewed ? fresh : d.kernel.list;
+    const ShapeFunctions& from_shape = renewed ? fresh_shape : d.kernel.shape;
     Index q = list.offsets[static_cast<std::size_t>(i)];
     for (Index p = from.offsets[static_cast<std::size_t>(i)];
          p < from.offsets[static_cast<std::size_t>(i) + 1]; ++p, ++q) {
@@ -135,8 +135,8 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
       if (second) shape.hessian.col(q) = from_shape.hessian.col(p);
     }
   }
-  d.list = std::move(list);
-  d.shape = std::move(shape);
+  d.kernel.list = std::move(list);
+  d.kernel.shape = std::move(shape);
 }
 
 // MC-SPG moves a smoothed particle I with u_I = sum_K T_IK u-hat_K, u-hat_K += dt sum_J
@@ -149,51 +149,55 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
 // at a sixth of the step its length and sound speed gave; with this factor it ran through.
 void update_mobility(Domain& d, double time) {
   const Index n = d.count();
-  d.mobility.assign(static_cast<std::size_t>(n), 1.0);
+  d.kernel.mobility.assign(static_cast<std::size_t>(n), 1.0);
   if (d.settings.stabilization != Stabilization::momentum_consistent) return;
-  std::vector<double> inverse_mass_sum(static_cast<std::size_t>(n), 0.0), r(d.mobility);
+  std::vector<double> inverse_mass_sum(static_cast<std::size_t>(n), 0.0), r(d.kernel.mobility);
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index k = 0; k < n; ++k) {
     double sum = 0.0;
-    for (Index p = d.list.offsets[static_cast<std::size_t>(k)];
-         p < d.list.offsets[static_cast<std::size_t>(k) + 1]; ++p) {
-      const auto j = static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)]);
-      if (!d.pinned[j])
-        sum += std::abs(d.shape.value[static_cast<std::size_t>(p)]) / d.smoothed_mass[j];
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(k)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(k) + 1]; ++p) {
+      const auto j =
+          static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+      if (!d.kernel.pinned[j])
+        sum +=
+            std::abs(d.kernel.shape.value[static_cast<std::size_t>(p)]) / d.kernel.smoothed_mass[j];
     }
     inverse_mass_sum[static_cast<std::size_t>(k)] = sum;
   }
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (d.pinned[ii]) continue;
+    if (d.kernel.pinned[ii]) continue;
     double sum = 0.0;
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
-      sum += std::abs(d.transpose.gather[tt]) *
-             inverse_mass_sum[static_cast<std::size_t>(d.transpose.rows[tt])];
+      sum += std::abs(d.kernel.transpose.gather[tt]) *
+             inverse_mass_sum[static_cast<std::size_t>(d.kernel.transpose.rows[tt])];
     }
-    r[ii] = d.mass[ii] * sum;
+    r[ii] = d.particles.mass[ii] * sum;
   }
   // Normalised by the largest bound of the initial particle arrangement, where length / c is
   // the stable step (verified); Gershgorin alone overestimates at free surfaces, whose shape
   // functions have negative lobes (r up to 1.36 on the elastic-wave rod: 16 % more cycles for
   // no change in the result).
-  if (d.renewals == 0) d.mobility_scale = std::max(1.0, *std::max_element(r.begin(), r.end()));
+  if (d.diagnostics.renewals == 0)
+    d.kernel.mobility_scale = std::max(1.0, *std::max_element(r.begin(), r.end()));
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     double worst = 0.0;  // row I's stress drives every particle of row I
-    for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p)
-      worst = std::max(worst,
-                       r[static_cast<std::size_t>(d.list.neighbours[static_cast<std::size_t>(p)])]);
-    d.mobility[ii] = std::max(1.0, worst / d.mobility_scale);
+    for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p)
+      worst = std::max(
+          worst,
+          r[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])]);
+    d.kernel.mobility[ii] = std::max(1.0, worst / d.kernel.mobility_scale);
   }
-  const auto top = std::max_element(d.mobility.begin(), d.mobility.end());
-  if (*top > d.largest_mobility) {
-    d.largest_mobility = *top;
-    d.largest_mobility_particle = static_cast<Index>(top - d.mobility.begin());
-    d.largest_mobility_time = time;
+  const auto top = std::max_element(d.kernel.mobility.begin(), d.kernel.mobility.end());
+  if (*top > d.diagnostics.largest_mobility) {
+    d.diagnostics.largest_mobility = *top;
+    d.diagnostics.largest_mobility_particle = static_cast<Index>(top - d.kernel.mobility.begin());
+    d.diagnostics.largest_mobility_time = time;
   }
 }
 
@@ -209,27 +213,29 @@ void smooth_masses(State& s, Domain& d) {
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     double m = 0.0;
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
-      m += d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
-           d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])];
+      m += d.particles.mass[static_cast<std::size_t>(d.kernel.transpose.rows[tt])] *
+           d.kernel.shape.value[static_cast<std::size_t>(d.kernel.transpose.pairs[tt])];
     }
-    d.smoothed_mass[ii] = m;
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
+    d.kernel.smoothed_mass[ii] = m;
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
-      d.transpose.gather[tt] = d.mass[static_cast<std::size_t>(d.transpose.rows[tt])] *
-                               d.shape.value[static_cast<std::size_t>(d.transpose.pairs[tt])] / m;
+      d.kernel.transpose.gather[tt] =
+          d.particles.mass[static_cast<std::size_t>(d.kernel.transpose.rows[tt])] *
+          d.kernel.shape.value[static_cast<std::size_t>(d.kernel.transpose.pairs[tt])] / m;
     }
-    const bool pin = !smooths_velocity(mode) || d.shared[ii] || d.isolated[ii] ||
+    const bool pin = !smooths_velocity(mode) || d.particles.shared[ii] || d.kernel.isolated[ii] ||
                      (mode == Stabilization::momentum_consistent &&
-                      !(m > kMinimumSmoothedMassShare * d.mass[ii]));
-    d.pinned[ii] = pin ? 1 : 0;
-    const auto node = static_cast<std::size_t>(d.nodes[ii]);
+                      !(m > kMinimumSmoothedMassShare * d.particles.mass[ii]));
+    d.kernel.pinned[ii] = pin ? 1 : 0;
+    const auto node = static_cast<std::size_t>(d.particles.nodes[ii]);
     s.nodes.smoothed[node] = pin ? 0 : (mode == Stabilization::momentum_consistent ? 1 : 2);
     // Impulses of walls and constraints on a smoothed particle act on its smoothed momentum
     // m_I u_I (Eq. 19), so they see the smoothed mass.
     s.nodes.mass[node] =
-        pin ? d.base_mass[ii] : (mode == Stabilization::momentum_consistent ? m : d.mass[ii]);
+        pin ? d.particles.base_mass[ii]
+            : (mode == Stabilization::momentum_consistent ? m : d.particles.mass[ii]);
   }
   update_mobility(d, s.time);
 }
@@ -237,7 +243,7 @@ void smooth_masses(State& s, Domain& d) {
 Eigen::Matrix3Xd particle_positions(const State& s, const Domain& d) {
   Eigen::Matrix3Xd x(3, d.count());
   for (Index i = 0; i < d.count(); ++i)
-    x.col(i) = s.nodes.position.col(d.nodes[static_cast<std::size_t>(i)]);
+    x.col(i) = s.nodes.position.col(d.particles.nodes[static_cast<std::size_t>(i)]);
   return x;
 }
 
@@ -247,7 +253,7 @@ void renew_kernel(State& s, Domain& d) {
 
 void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   const Index n = d.count();
-  const bool all = rows.empty() || d.renewals == 0;
+  const bool all = rows.empty() || d.diagnostics.renewals == 0;
   auto renewed = [&](Index i) { return all || rows[static_cast<std::size_t>(i)] != 0; };
   auto start = Clock::now();
   const Eigen::Matrix3Xd x = particle_positions(s, d);
@@ -256,55 +262,56 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   // Eq. 32: F^{n+m} = F-hat F^n; a renewed row starts again from F-hat = I.
   for (Index i = 0; i < n; ++i) {
     if (!renewed(i)) continue;
-    const Mat3 total = mat(d.deformation, i) * mat(d.reference_deformation, i);
-    mat(d.reference_deformation, i) = total;
-    mat(d.deformation, i).setIdentity();
+    const Mat3 total = mat(d.fields.deformation, i) * mat(d.kernel.reference_deformation, i);
+    mat(d.kernel.reference_deformation, i) = total;
+    mat(d.fields.deformation, i).setIdentity();
   }
-  if (all) d.support = current_supports(d);  // a partial renewal has them from rows_to_renew
+  if (all) d.kernel.support = current_supports(d);  // a partial renewal has them from rows_to_renew
   std::vector<Index> degenerate;
   std::vector<std::uint8_t> damaged;  // particles that lost bonds: the stricter conditioning
-  if (d.broken_bonds > 0) {
+  if (d.diagnostics.broken_bonds > 0) {
     damaged.assign(static_cast<std::size_t>(n), 0);
     for (Index i = 0; i < n; ++i)
-      damaged[static_cast<std::size_t>(i)] = d.bonds.damage(i) > 0.0 ? 1 : 0;
+      damaged[static_cast<std::size_t>(i)] = d.kernel.bonds.damage(i) > 0.0 ? 1 : 0;
   }
   if (all) {
-    d.list = find_neighbours(x, d.support, d.settings.shape);
-    remove_broken_pairs(d, d.list);
+    d.kernel.list = find_neighbours(x, d.kernel.support, d.settings.shape);
+    remove_broken_pairs(d, d.kernel.list);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    d.shape = shape_functions(x, d.support, d.settings.shape, d.list, degenerate, damaged,
-                              second_derivatives(d));
-    d.isolated.assign(static_cast<std::size_t>(n), 0);
+    d.kernel.shape = shape_functions(x, d.kernel.support, d.settings.shape, d.kernel.list,
+                                     degenerate, damaged, second_derivatives(d));
+    d.kernel.isolated.assign(static_cast<std::size_t>(n), 0);
   } else {
-    NeighbourList fresh = find_neighbours(x, d.support, d.settings.shape, {}, rows);
+    NeighbourList fresh = find_neighbours(x, d.kernel.support, d.settings.shape, {}, rows);
     remove_broken_pairs(d, fresh);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    const ShapeFunctions fresh_shape = shape_functions(x, d.support, d.settings.shape, fresh,
+    const ShapeFunctions fresh_shape = shape_functions(x, d.kernel.support, d.settings.shape, fresh,
                                                        degenerate, damaged, second_derivatives(d));
     merge_rows(d, fresh, fresh_shape, rows);
     for (Index i = 0; i < n; ++i)
-      if (renewed(i)) d.isolated[static_cast<std::size_t>(i)] = 0;
+      if (renewed(i)) d.kernel.isolated[static_cast<std::size_t>(i)] = 0;
   }
   for (Index i = 0; i < n; ++i)
-    if (renewed(i)) d.debris[static_cast<std::size_t>(i)] = 0;
+    if (renewed(i)) d.fields.debris[static_cast<std::size_t>(i)] = 0;
   // The new row sees the same positions through new shape functions: its residual changes
   // without any motion, which is not work done (mode_control.cpp).
   if (d.settings.mode_control > 0.0)
     for (Index i = 0; i < n; ++i)
-      if (renewed(i)) d.mode_residual.col(i) = mode_residual(s, d, i);
-  d.renewed_rows += all ? n : static_cast<long>(std::count(rows.begin(), rows.end(), 1));
-  d.transpose = transpose_of(d.list, n);
+      if (renewed(i)) d.fields.mode_residual.col(i) = mode_residual(s, d, i);
+  d.diagnostics.renewed_rows +=
+      all ? n : static_cast<long>(std::count(rows.begin(), rows.end(), 1));
+  d.kernel.transpose = transpose_of(d.kernel.list, n);
   if (!degenerate.empty()) {
-    ++d.degenerate_events;
-    if (d.first_degenerate < 0) {
-      d.first_degenerate = degenerate.front();
-      d.first_degenerate_time = s.time;
+    ++d.diagnostics.degenerate_events;
+    if (d.diagnostics.first_degenerate < 0) {
+      d.diagnostics.first_degenerate = degenerate.front();
+      d.diagnostics.first_degenerate_time = s.time;
     }
   }
   for (const Index i : degenerate)
-    d.isolated[static_cast<std::size_t>(i)] = 1;
+    d.kernel.isolated[static_cast<std::size_t>(i)] = 1;
 
   // Characteristic length for the step: the nearest neighbour in the new reference, and no more
   // than kappa / |grad phi| of the row. The force a row's stress puts on its neighbours grows with
@@ -315,39 +322,43 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t)
-      d.transpose.gradient.col(t) =
-          d.shape.gradient.col(d.transpose.pairs[static_cast<std::size_t>(t)]);
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t)
+      d.kernel.transpose.gradient.col(t) =
+          d.kernel.shape.gradient.col(d.kernel.transpose.pairs[static_cast<std::size_t>(t)]);
     if (renewed(i)) {
       double nearest = std::numeric_limits<double>::infinity(), g2 = 0.0;
-      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
-        const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+      for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
+        const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
         if (j != i) nearest = std::min(nearest, (x.col(j) - x.col(i)).norm());
-        g2 += d.shape.gradient.col(p).squaredNorm();
+        g2 += d.kernel.shape.gradient.col(p).squaredNorm();
       }
-      d.length[ii] = std::isfinite(nearest) ? nearest : d.support.reach.col(i).minCoeff();
+      d.kernel.length[ii] =
+          std::isfinite(nearest) ? nearest : d.kernel.support.reach.col(i).minCoeff();
       gradient_norm[ii] = std::sqrt(g2);
-      d.renewal_volume[ii] = d.volume[ii];
+      d.kernel.renewal_volume[ii] = d.fields.volume[ii];
     }
   }
-  if (d.renewals == 0)
+  if (d.diagnostics.renewals == 0)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      d.gradient_length_scale = std::max(d.gradient_length_scale, d.length[ii] * gradient_norm[ii]);
+      d.kernel.gradient_length_scale =
+          std::max(d.kernel.gradient_length_scale, d.kernel.length[ii] * gradient_norm[ii]);
     }
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     if (renewed(i) && gradient_norm[ii] > 0.0)
-      d.length[ii] = std::min(d.length[ii], d.gradient_length_scale / gradient_norm[ii]);
+      d.kernel.length[ii] =
+          std::min(d.kernel.length[ii], d.kernel.gradient_length_scale / gradient_norm[ii]);
   }
   if (d.settings.stabilization == Stabilization::strain_gradient)
     stabilization_moments(s, d, all ? std::vector<std::uint8_t>{} : rows);
   // After the moments: ITB 1's lengths include its stabilisation's stiffness.
   if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(d);
   smooth_masses(s, d);
-  if (d.renewals == 0) d.step_bound.initial_critical = calibrate_stiffness_length(s, d);
-  d.steps_since_renewal = 0;
-  ++d.renewals;
+  if (d.diagnostics.renewals == 0)
+    d.kernel.step_bound.initial_critical = calibrate_stiffness_length(s, d);
+  d.kernel.steps_since_renewal = 0;
+  ++d.diagnostics.renewals;
   d.times.shape_functions += seconds_since(start);
 }
 
@@ -371,33 +382,35 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
   const double limit = d.settings.renewal_strain;
   // Renewing folds F-hat into F^n, which leaves F-hat F^n and so these supports as they are:
   // the partial renewal that may follow uses them.
-  d.support = current_supports(d);
-  const Supports& support = d.support;
+  d.kernel.support = current_supports(d);
+  const Supports& support = d.kernel.support;
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const KernelShape shape = d.settings.shape;
   Index count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    const Eigen::Map<const Mat3> f(d.deformation.col(i).data());
+    const Eigen::Map<const Mat3> f(d.fields.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());
     // Under compression (pressure > 0) the tensile instability that argues against renewing
     // (the note above) does not arise, and compression is what crowds a Lagrangian
     // kernel's neighbours together: renew there at a fifth of the limit.
     const double strain = green.norm();
     bool renew = strain > limit ||
-                 (d.pressure[ii] > 0.0 && strain > kCompressionRenewalShare * limit) ||
-                 d.debris[ii];
+                 (d.fields.pressure[ii] > 0.0 && strain > kCompressionRenewalShare * limit) ||
+                 d.fields.debris[ii];
     // A row is also rebuilt when it holds a pair whose bond broke (Eq. 36), or a neighbour that
     // has left its support by more than the strain limit: F-hat weights such a far neighbour
     // so little that it does not show in the Green strain, yet the pair would keep the two
     // particles connected (across a crack whose bonds at the other rows all broke) for good.
-    const Vec3 xi = x.col(d.nodes[ii]);
-    for (Index p = d.list.offsets[ii]; !renew && p < d.list.offsets[ii + 1]; ++p) {
-      const Index j = d.list.neighbours[static_cast<std::size_t>(p)];
+    const Vec3 xi = x.col(d.particles.nodes[ii]);
+    for (Index p = d.kernel.list.offsets[ii]; !renew && p < d.kernel.list.offsets[ii + 1]; ++p) {
+      const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
       if (j == i) continue;
-      const Vec3 z = support.matrix(j) * (xi - x.col(d.nodes[static_cast<std::size_t>(j)]));
-      renew = unit_distance(shape, z) > 1.0 + limit || (bonds_broke && d.bonds.is_broken(i, j));
+      const Vec3 z =
+          support.matrix(j) * (xi - x.col(d.particles.nodes[static_cast<std::size_t>(j)]));
+      renew =
+          unit_distance(shape, z) > 1.0 + limit || (bonds_broke && d.kernel.bonds.is_broken(i, j));
     }
     rows[ii] = renew ? 1 : 0;
     count += renew ? 1 : 0;
@@ -408,30 +421,31 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
 
 void initialise(State& s, Domain& d) {
   const Index n = d.count();
-  d.reference_deformation.resize(9, n);
-  d.deformation.resize(9, n);
+  d.kernel.reference_deformation.resize(9, n);
+  d.fields.deformation.resize(9, n);
   for (Index i = 0; i < n; ++i) {
-    mat(d.reference_deformation, i).setIdentity();
-    mat(d.deformation, i).setIdentity();
+    mat(d.kernel.reference_deformation, i).setIdentity();
+    mat(d.fields.deformation, i).setIdentity();
   }
-  d.debris.assign(static_cast<std::size_t>(n), 0);
-  d.mode_stiffness.assign(static_cast<std::size_t>(n), 0.0);
-  d.mode_residual.setZero(3, n);
-  d.mode_energy.assign(static_cast<std::size_t>(n), 0.0);
-  d.mode_force.setZero(3, n);
-  d.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
-  d.pinned.assign(static_cast<std::size_t>(n), 0);
-  d.length.assign(static_cast<std::size_t>(n), 0.0);
-  d.step.assign(static_cast<std::size_t>(n), 0.0);
-  d.renewal_volume = d.volume;
-  d.stress_gradient.setZero(9, n);
-  d.unsmoothed.resize(3, n);
+  d.fields.debris.assign(static_cast<std::size_t>(n), 0);
+  d.fields.mode_stiffness.assign(static_cast<std::size_t>(n), 0.0);
+  d.fields.mode_residual.setZero(3, n);
+  d.fields.mode_energy.assign(static_cast<std::size_t>(n), 0.0);
+  d.fields.mode_force.setZero(3, n);
+  d.kernel.smoothed_mass.assign(static_cast<std::size_t>(n), 0.0);
+  d.kernel.pinned.assign(static_cast<std::size_t>(n), 0);
+  d.kernel.length.assign(static_cast<std::size_t>(n), 0.0);
+  d.fields.step.assign(static_cast<std::size_t>(n), 0.0);
+  d.kernel.renewal_volume = d.fields.volume;
+  d.fields.stress_gradient.setZero(9, n);
+  d.fields.unsmoothed.resize(3, n);
   for (Index i = 0; i < n; ++i)
-    d.unsmoothed.col(i) = s.nodes.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
-  d.unsmoothed_previous = d.unsmoothed;
-  d.smoothed = d.unsmoothed;
+    d.fields.unsmoothed.col(i) =
+        s.nodes.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
+  d.fields.unsmoothed_previous = d.fields.unsmoothed;
+  d.fields.smoothed = d.fields.unsmoothed;
   renew_kernel(s, d);
-  d.bonds = initial_bonds(d);
+  d.kernel.bonds = initial_bonds(d);
 }
 
 }  // namespace mcdyna::solver::spg

@@ -39,8 +39,8 @@ struct PairEnd {
 
 PairEnd pair_end(const State& s, const Domain& d, Index i) {
   const auto ii = static_cast<std::size_t>(i);
-  return {s.nodes.position.col(d.nodes[ii]), d.unsmoothed_previous.col(i), d.mass[ii],
-          d.scratch.damping_share[ii]};
+  return {s.nodes.position.col(d.particles.nodes[ii]), d.fields.unsmoothed_previous.col(i),
+          d.particles.mass[ii], d.scratch.damping_share[ii]};
 }
 
 // |PDAMP| / n of every row, once per cycle rather than at every pair that needs it.
@@ -50,7 +50,7 @@ void damping_shares(Domain& d) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index i = 0; i < n; ++i)
     d.scratch.damping_share[static_cast<std::size_t>(i)] =
-        d.settings.damping / static_cast<double>(std::max<Index>(d.list.count(i) - 1, 1));
+        d.settings.damping / static_cast<double>(std::max<Index>(d.kernel.list.count(i) - 1, 1));
 }
 
 // The impulse of the pair (I, J) of row I on I.
@@ -71,7 +71,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
   const bool damping = d.settings.damping > 0.0 && smooths_velocity(mode);
-  d.unsmoothed_previous = d.unsmoothed;
+  d.fields.unsmoothed_previous = d.fields.unsmoothed;
   // Accelerations of the smoothed particles (zero for pinned ones).
   Eigen::Matrix3Xd& acc = d.scratch.acceleration;
   acc.resize(3, n);
@@ -79,12 +79,13 @@ Index advance_velocities(State& s, Domain& d, double dt) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      if (d.pinned[ii]) {
+      if (d.kernel.pinned[ii]) {
         acc.col(i).setZero();
         continue;
       }
-      acc.col(i) = nd.force.col(d.nodes[ii]) / (mc ? d.smoothed_mass[ii] : d.mass[ii]);
-      nd.acceleration.col(d.nodes[ii]) = acc.col(i);
+      acc.col(i) = nd.force.col(d.particles.nodes[ii]) /
+                   (mc ? d.kernel.smoothed_mass[ii] : d.particles.mass[ii]);
+      nd.acceleration.col(d.particles.nodes[ii]) = acc.col(i);
     }
   }
   // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
@@ -96,65 +97,66 @@ Index advance_velocities(State& s, Domain& d, double dt) {
 #pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      const bool free_i = d.pinned[ii] == 0;
+      const bool free_i = d.kernel.pinned[ii] == 0;
       const bool damp_i = damping && free_i;
       const PairEnd end_i = damp_i ? pair_end(s, d, i) : PairEnd{};
       Vec3 sum = Vec3::Zero(), own = Vec3::Zero();
-      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+      for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
-        const Index j = d.list.neighbours[pp];
-        if (mc) sum += d.shape.value[pp] * acc.col(j);
-        if (damp_i && j != i && !d.pinned[static_cast<std::size_t>(j)])
+        const Index j = d.kernel.list.neighbours[pp];
+        if (mc) sum += d.kernel.shape.value[pp] * acc.col(j);
+        if (damp_i && j != i && !d.kernel.pinned[static_cast<std::size_t>(j)])
           own += pair_impulse(end_i, pair_end(s, d, j));
       }
       if (!mc) sum = acc.col(i);
       if (free_i) {
-        d.unsmoothed.col(i) += dt * sum;
+        d.fields.unsmoothed.col(i) += dt * sum;
       } else {
-        const auto node = static_cast<std::size_t>(d.nodes[ii]);
+        const auto node = static_cast<std::size_t>(d.particles.nodes[ii]);
         if (mc)
-          nd.velocity.col(d.nodes[ii]) +=
-              dt * d.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
-        d.unsmoothed.col(i) = nd.velocity.col(d.nodes[ii]);
+          nd.velocity.col(d.particles.nodes[ii]) +=
+              dt * d.particles.mass[ii] * sum / (nd.mass[node] + nd.added_mass[node]);
+        d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[ii]);
       }
       if (!damp_i) continue;
       // The other end: I receives minus the impulses of the pairs (J, I) of the rows it is in.
       Vec3 total = own;
-      for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-        const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
-        if (j != i && !d.pinned[static_cast<std::size_t>(j)])
+      for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
+        const Index j = d.kernel.transpose.rows[static_cast<std::size_t>(t)];
+        if (j != i && !d.kernel.pinned[static_cast<std::size_t>(j)])
           total -= pair_impulse(pair_end(s, d, j), end_i);
       }
-      const Vec3 undamped = d.unsmoothed.col(i);
-      d.unsmoothed.col(i) += total / d.mass[ii];
-      removed += 0.5 * d.mass[ii] * (undamped.squaredNorm() - d.unsmoothed.col(i).squaredNorm());
+      const Vec3 undamped = d.fields.unsmoothed.col(i);
+      d.fields.unsmoothed.col(i) += total / d.particles.mass[ii];
+      removed += 0.5 * d.particles.mass[ii] *
+                 (undamped.squaredNorm() - d.fields.unsmoothed.col(i).squaredNorm());
     }
   } else {
     for (Index i = 0; i < n; ++i)  // plain nodal integration: every particle is pinned
-      d.unsmoothed.col(i) = nd.velocity.col(d.nodes[static_cast<std::size_t>(i)]);
+      d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
   }
-  d.damping_energy += removed;
+  d.fields.damping_energy += removed;
 
   // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7),
   // from u-hat only (which holds the pinned particles' node velocities).
-  const Eigen::Matrix3Xd& source = d.unsmoothed;
+  const Eigen::Matrix3Xd& source = d.fields.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
 #pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     Vec3 u = source.col(i);
-    if (!d.pinned[ii] && mc) {
+    if (!d.kernel.pinned[ii] && mc) {
       u = gathered(d, i, source);
-    } else if (!d.pinned[ii] && mode == Stabilization::direct) {
+    } else if (!d.kernel.pinned[ii] && mode == Stabilization::direct) {
       u.setZero();
-      for (Index p = d.list.offsets[ii]; p < d.list.offsets[ii + 1]; ++p) {
+      for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
-        u += d.shape.value[pp] * source.col(d.list.neighbours[pp]);
+        u += d.kernel.shape.value[pp] * source.col(d.kernel.list.neighbours[pp]);
       }
     }
-    d.smoothed.col(i) = u;
-    nd.velocity.col(d.nodes[ii]) = u;
-    if (!std::isfinite(u.sum())) bad = std::min(bad, d.nodes[ii]);
+    d.fields.smoothed.col(i) = u;
+    nd.velocity.col(d.particles.nodes[ii]) = u;
+    if (!std::isfinite(u.sum())) bad = std::min(bad, d.particles.nodes[ii]);
   }
   d.times.smoothing += seconds_since(start);
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
@@ -169,18 +171,18 @@ void absorb_constraints(State& s, Domain& d) {
   bool any = false;
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    const Vec3 v = nd.velocity.col(d.nodes[ii]);
-    if (d.pinned[ii]) {
-      d.unsmoothed.col(i) = v;
+    const Vec3 v = nd.velocity.col(d.particles.nodes[ii]);
+    if (d.kernel.pinned[ii]) {
+      d.fields.unsmoothed.col(i) = v;
     } else {
-      change.col(i) = v - d.smoothed.col(i);
+      change.col(i) = v - d.fields.smoothed.col(i);
       any = any || change.col(i).squaredNorm() > 0.0;
     }
-    d.smoothed.col(i) = v;
+    d.fields.smoothed.col(i) = v;
   }
   if (!any) return;
   if (d.settings.stabilization == Stabilization::direct) {
-    d.unsmoothed += change;
+    d.fields.unsmoothed += change;
     return;
   }
   // MC-SPG: an impulse enters like a force (Eq. 30), u-hat_J += sum_I phi_I(X_J) p_I / m_I, so
@@ -191,13 +193,13 @@ void absorb_constraints(State& s, Domain& d) {
 #pragma omp parallel for schedule(static, 256) if (n > 512)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    if (d.pinned[jj]) continue;
+    if (d.kernel.pinned[jj]) continue;
     Vec3 sum = Vec3::Zero();
-    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
+    for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
       const auto pp = static_cast<std::size_t>(p);
-      sum += d.shape.value[pp] * change.col(d.list.neighbours[pp]);
+      sum += d.kernel.shape.value[pp] * change.col(d.kernel.list.neighbours[pp]);
     }
-    d.unsmoothed.col(j) += sum;
+    d.fields.unsmoothed.col(j) += sum;
   }
 }
 
@@ -205,10 +207,10 @@ SmoothedKinetic smoothed_kinetic(const State& s, const Domain& d) {
   SmoothedKinetic k;
   for (Index i = 0; i < d.count(); ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (s.nodes.smoothed[static_cast<std::size_t>(d.nodes[ii])] != 1) continue;
-    const double m = d.mass[ii];
-    k.kinetic += 0.5 * m * d.unsmoothed_previous.col(i).dot(d.unsmoothed.col(i));
-    k.momentum += 0.5 * m * (d.unsmoothed_previous.col(i) + d.unsmoothed.col(i));
+    if (s.nodes.smoothed[static_cast<std::size_t>(d.particles.nodes[ii])] != 1) continue;
+    const double m = d.particles.mass[ii];
+    k.kinetic += 0.5 * m * d.fields.unsmoothed_previous.col(i).dot(d.fields.unsmoothed.col(i));
+    k.momentum += 0.5 * m * (d.fields.unsmoothed_previous.col(i) + d.fields.unsmoothed.col(i));
     k.mass += m;
   }
   return k;

@@ -12,7 +12,7 @@ std::string particle_name(const State& s, std::size_t domain, Index particle) {
   const spg::Domain& d = s.spg[domain];
   return fmt::format(
       "SPG particle at node {} (part {})",
-      s.nodes.ids[static_cast<std::size_t>(d.nodes[static_cast<std::size_t>(particle)])],
+      s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(particle)])],
       s.parts[static_cast<std::size_t>(d.part)].id);
 }
 
@@ -27,7 +27,7 @@ class SpgBlock final : public Block {
 
   void initialise(State& s) override {
     spg::Domain& d = s.spg[domain_];
-    if (d.renewals == 0) spg::initialise(s, d);
+    if (d.diagnostics.renewals == 0) spg::initialise(s, d);
   }
 
   void forces(State& s, ForceReport& r) override {

@@ -124,7 +124,7 @@ void recalibrate_stiffness_length(const State& s, Domain& d,
 /// Green strain relative to their reference exceeds renewal_strain (a fifth of it when the
 /// particle is under compression), the rows with a neighbour that is outside its (current)
 /// support by more than that share, debris rows, and, when bonds broke, the rows that hold a
-/// broken pair. Measuring brings d.support to the current configuration.
+/// broken pair. Measuring brings d.kernel.support to the current configuration.
 Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std::uint8_t>& rows);
 
 /// Bonds of the initial configuration from the first neighbour list (both directions).
@@ -143,8 +143,8 @@ struct Pieces {
 };
 Pieces count_pieces(const Domain& d);
 
-/// Low-energy-mode control (MSC = 1): residual and force g_J of particle j into d.mode_force
-/// (the internal-force gather applies -(D^T g)), their work into d.mode_energy. Run by the
+/// Low-energy-mode control (MSC = 1): residual and force g_J of particle j into d.fields.mode_force
+/// (the internal-force gather applies -(D^T g)), their work into d.fields.mode_energy. Run by the
 /// stress pass right after the particle's stress update (its row is then in cache).
 void mode_control_update(const State& s, Domain& d, Index j);
 
@@ -165,7 +165,7 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
 
 /// ITB 1, after the stress pass (which left F-hat, K and G-tilde per particle): the
 /// stabilisation stresses (Eq. 10) from the strain gradient of the current positions in each
-/// row's reference, their forces (Eq. 9) added to the nodes, their work to d.mode_energy.
+/// row's reference, their forces (Eq. 9) added to the nodes, their work to d.fields.mode_energy.
 void strain_gradient_stabilization(State& s, Domain& d);
 
 /// A subset of a domain's particles: a flag per particle and the flagged ones ascending.

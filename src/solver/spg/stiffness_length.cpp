@@ -84,37 +84,39 @@ double hessian_norm(const Eigen::Matrix<double, 6, 1>& psi) {
 // mass everywhere: measured on FDS h 0.15, 59 x the plate's mass (manual/verification.md).
 void add_stabilization_stiffness(const Domain& d, std::vector<double>& stiffness) {
   const Index n = d.count();
-  const GradientStabilization& g = d.gradient;
-  if (d.shape.hessian.cols() != d.shape.gradient.cols() || g.moment.cols() != n) return;
+  const GradientStabilization& g = d.fields.gradient;
+  if (d.kernel.shape.hessian.cols() != d.kernel.shape.gradient.cols() || g.moment.cols() != n)
+    return;
   std::vector<double> row_weight(static_cast<std::size_t>(n), 0.0);  // m V0/V lambda_max(M) P
   std::vector<double> own(static_cast<std::size_t>(n), 0.0);         // |psi_J(X_J)|
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    if (d.isolated[jj] || d.debris[jj]) continue;
+    if (d.kernel.isolated[jj] || d.fields.debris[jj]) continue;
     Eigen::Matrix<double, 6, 1> own_psi = Eigen::Matrix<double, 6, 1>::Zero();
     double sum = 0.0;
-    for (Index p = d.list.offsets[jj]; p < d.list.offsets[jj + 1]; ++p) {
-      if (d.list.neighbours[static_cast<std::size_t>(p)] == j) continue;
-      own_psi += d.shape.hessian.col(p);
-      sum += hessian_norm(d.shape.hessian.col(p));
+    for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
+      if (d.kernel.list.neighbours[static_cast<std::size_t>(p)] == j) continue;
+      own_psi += d.kernel.shape.hessian.col(p);
+      sum += hessian_norm(d.kernel.shape.hessian.col(p));
     }
     own[jj] = hessian_norm(own_psi);
     Eigen::SelfAdjointEigenSolver<Mat3> eig;
     eig.computeDirect(symmetric_tensor(g.moment.col(j).data()), Eigen::EigenvaluesOnly);
-    const double physical = d.mass[jj] - d.added_mass[jj];
-    row_weight[jj] = physical * d.renewal_volume[jj] / d.volume[jj] *
+    const double physical = d.particles.mass[jj] - d.particles.added_mass[jj];
+    row_weight[jj] = physical * d.kernel.renewal_volume[jj] / d.fields.volume[jj] *
                      std::max(eig.eigenvalues().maxCoeff(), 0.0) * (sum + own[jj]);
   }
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     double sum = own[ii] * row_weight[ii];
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const Index j = d.transpose.rows[static_cast<std::size_t>(t)];
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
+      const Index j = d.kernel.transpose.rows[static_cast<std::size_t>(t)];
       if (j == i) continue;
-      const auto pair = d.transpose.pairs[static_cast<std::size_t>(t)];
-      sum += hessian_norm(d.shape.hessian.col(pair)) * row_weight[static_cast<std::size_t>(j)];
+      const auto pair = d.kernel.transpose.pairs[static_cast<std::size_t>(t)];
+      sum +=
+          hessian_norm(d.kernel.shape.hessian.col(pair)) * row_weight[static_cast<std::size_t>(j)];
     }
     stiffness[ii] += sum;
   }
@@ -127,9 +129,9 @@ void update_stiffness_length(Domain& d) {
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index j = 0; j < n; ++j) {
     double sum = 0.0;
-    for (Index p = d.list.offsets[static_cast<std::size_t>(j)];
-         p < d.list.offsets[static_cast<std::size_t>(j) + 1]; ++p)
-      sum += d.shape.gradient.col(p).norm();
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(j)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(j) + 1]; ++p)
+      sum += d.kernel.shape.gradient.col(p).norm();
     row_gradient[static_cast<std::size_t>(j)] = sum;
   }
   std::vector<double> stiffness(static_cast<std::size_t>(n), 0.0);  // sum_J m_J |g_IJ| G_J
@@ -137,35 +139,38 @@ void update_stiffness_length(Domain& d) {
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     double sum = 0.0;  // physical masses
-    for (Index t = d.transpose.offsets[ii]; t < d.transpose.offsets[ii + 1]; ++t) {
-      const auto j = static_cast<std::size_t>(d.transpose.rows[static_cast<std::size_t>(t)]);
-      sum += (d.mass[j] - d.added_mass[j]) * d.transpose.gradient.col(t).norm() * row_gradient[j];
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
+      const auto j = static_cast<std::size_t>(d.kernel.transpose.rows[static_cast<std::size_t>(t)]);
+      sum += (d.particles.mass[j] - d.particles.added_mass[j]) *
+             d.kernel.transpose.gradient.col(t).norm() * row_gradient[j];
     }
     stiffness[ii] = sum;
   }
   if (d.settings.stabilization == Stabilization::strain_gradient)
     add_stabilization_stiffness(d, stiffness);
-  d.step_bound.lengths.resize(static_cast<std::size_t>(n));
+  d.kernel.step_bound.lengths.resize(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    const double own = d.mass[ii] - d.added_mass[ii];
-    d.step_bound.lengths[ii] = stiffness[ii] > 0.0
-                                   ? d.step_bound.scale * std::sqrt(own / stiffness[ii])
-                                   : std::numeric_limits<double>::infinity();
+    const double own = d.particles.mass[ii] - d.particles.added_mass[ii];
+    d.kernel.step_bound.lengths[ii] =
+        stiffness[ii] > 0.0 ? d.kernel.step_bound.scale * std::sqrt(own / stiffness[ii])
+                            : std::numeric_limits<double>::infinity();
   }
 }
 
 void recalibrate_stiffness_length(const State& s, Domain& d,
                                   const std::vector<std::uint8_t>& renewed) {
-  if (!(d.step_bound.pass_step > 0.0) || !std::isfinite(d.step_bound.pass_step)) return;
+  if (!(d.kernel.step_bound.pass_step > 0.0) || !std::isfinite(d.kernel.step_bound.pass_step))
+    return;
   if (renewed.empty() && s.cycle % kRecalibrationInterval != 0) return;
-  FrequencyEstimate f = largest_frequency(s, d, kRecalibrationIterations, &d.step_bound.mode);
+  FrequencyEstimate f =
+      largest_frequency(s, d, kRecalibrationIterations, &d.kernel.step_bound.mode);
   if (!renewed.empty()) {
     Eigen::Matrix3Xd local = frequency_start(d.count(), renewed);
     const FrequencyEstimate g = largest_frequency(s, d, kRenewalIterations, &local, false, true);
     if (g.omega_squared > f.omega_squared) {  // the renewal's mode is the highest: follow it
       f = g;
-      d.step_bound.mode = local;
+      d.kernel.step_bound.mode = local;
     }
   }
   if (!(f.omega_squared > 0.0)) return;
@@ -176,19 +181,21 @@ void recalibrate_stiffness_length(const State& s, Domain& d,
   // matched to 2 / omega without it, so the step keeps that margin.
   const double damped = element_step(d.settings.bulk_viscosity, 1.0, 1.0, 0.0);
   const double ratio =
-      std::min(critical * damped / d.step_bound.pass_step, kLargestRecalibrationGrowth);
-  d.step_bound.critical = critical;
-  if (d.step_bound.smallest_critical == 0.0 || critical < d.step_bound.smallest_critical) {
-    d.step_bound.smallest_critical = critical;
-    d.step_bound.smallest_critical_time = s.time;
-    d.step_bound.smallest_critical_particle = f.particle;
+      std::min(critical * damped / d.kernel.step_bound.pass_step, kLargestRecalibrationGrowth);
+  d.kernel.step_bound.critical = critical;
+  if (d.kernel.step_bound.smallest_critical == 0.0 ||
+      critical < d.kernel.step_bound.smallest_critical) {
+    d.kernel.step_bound.smallest_critical = critical;
+    d.kernel.step_bound.smallest_critical_time = s.time;
+    d.kernel.step_bound.smallest_critical_particle = f.particle;
   }
-  rescale(d.step_bound, ratio);
+  rescale(d.kernel.step_bound, ratio);
 }
 
 double calibrate_stiffness_length(const State& s, Domain& d) {
-  d.step_bound.mode.resize(3, 0);
-  const FrequencyEstimate f = largest_frequency(s, d, kCalibrationIterations, &d.step_bound.mode);
+  d.kernel.step_bound.mode.resize(3, 0);
+  const FrequencyEstimate f =
+      largest_frequency(s, d, kCalibrationIterations, &d.kernel.step_bound.mode);
   if (!(f.omega_squared > 0.0)) return 0.0;
   const double critical = 2.0 / std::sqrt(f.omega_squared);
   if (d.settings.stabilization == Stabilization::strain_gradient &&
@@ -199,18 +206,20 @@ double calibrate_stiffness_length(const State& s, Domain& d) {
     Eigen::Matrix3Xd plain;
     const FrequencyEstimate g = largest_frequency(s, d, kCalibrationIterations, &plain, true);
     if (g.omega_squared > 0.0)
-      d.gradient.step_scale = std::min(1.0, std::sqrt(g.omega_squared / f.omega_squared));
+      d.fields.gradient.step_scale = std::min(1.0, std::sqrt(g.omega_squared / f.omega_squared));
   }
   if (d.settings.step_estimate != StepEstimate::eigenvalue) return critical;  // reported only
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   double shortest = std::numeric_limits<double>::infinity();  // min l / (c sqrt(mobility))
   for (Index i = 0; i < d.count(); ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (d.isolated[ii] || !std::isfinite(d.step_bound.lengths[ii])) continue;
-    const double c = std::sqrt(wave_speed_squared(mat, d.volume[ii] / d.initial_volume[ii]));
-    shortest = std::min(shortest, d.step_bound.lengths[ii] / (c * std::sqrt(d.mobility[ii])));
+    if (d.kernel.isolated[ii] || !std::isfinite(d.kernel.step_bound.lengths[ii])) continue;
+    const double c =
+        std::sqrt(wave_speed_squared(mat, d.fields.volume[ii] / d.particles.initial_volume[ii]));
+    shortest = std::min(shortest,
+                        d.kernel.step_bound.lengths[ii] / (c * std::sqrt(d.kernel.mobility[ii])));
   }
-  if (std::isfinite(shortest)) rescale(d.step_bound, critical / shortest);
+  if (std::isfinite(shortest)) rescale(d.kernel.step_bound, critical / shortest);
   return critical;
 }
 
