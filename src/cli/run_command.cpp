@@ -16,6 +16,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "cli/launcher.hpp"
 #include "cli/load.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
@@ -278,6 +279,17 @@ std::string prepare_output_directory(const std::filesystem::path& dir) {
 }  // namespace
 
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  // Started by mpirun over several processes: each would run the whole deck into the same
+  // files. Until the decomposition over processes is in (issue 25) that is refused, once.
+  if (const LaunchedProcesses p = launched_processes(); p.size > 1) {
+    if (p.rank == 0)
+      fmt::print(err,
+                 "mcdyna: error: started as {} processes (mpirun -np {}); this build runs a deck "
+                 "in one process, the decomposition over processes is not in it yet. Run it "
+                 "without mpirun: --threads N uses the cores of one machine.\n",
+                 p.size, p.size);
+    return kRunUsage;
+  }
   if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
     fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
     return kRunUsage;
