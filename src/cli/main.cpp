@@ -11,6 +11,7 @@
 #include "cli/check_command.hpp"
 #include "cli/compare_command.hpp"
 #include "cli/keyword_docs.hpp"
+#include "cli/partition_command.hpp"
 #include "cli/run_command.hpp"
 #include "cli/wait_policy.hpp"
 #include "deck/registry.hpp"
@@ -113,6 +114,16 @@ int main(int argc, char** argv) {
   check_cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
   check_cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
       ->capture_default_str();
+
+  mcdyna::cli::PartitionOptions partition;
+  auto* partition_cmd = app.add_subcommand(
+      "partition",
+      "the decomposition a run over N processes would use, without running the physics: per "
+      "rank the nodes it owns and reads, the elements and SPG rows it computes, the balance");
+  partition_cmd->add_option("deck", partition.deck, "keyword deck (.k, .key, .dyn)")->required();
+  partition_cmd->add_option("--ranks", partition.ranks, "rank counts, e.g. 2,4,64")
+      ->required()
+      ->delimiter(',');
 
   mcdyna::cli::RunOptions run;
   auto* run_cmd = app.add_subcommand("run",
@@ -220,6 +231,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) return mcdyna::cli::run_check(check, std::cout, std::cerr);
+    if (*partition_cmd) return mcdyna::cli::run_partition(partition, std::cout, std::cerr);
     if (*run_cmd) return mcdyna::cli::run_deck(run, std::cout, std::cerr);
     if (*cmp_cmd) return mcdyna::cli::run_compare(cmp, std::cout, std::cerr);
     const mcdyna::deck::Registry registry;

@@ -1,0 +1,180 @@
+#include "solver/parallel/decomposition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+namespace mcdyna::solver::parallel {
+
+namespace {
+
+// Cells first_cell .. first_cell + parts - 1 for the points in `members`.
+void split(const Eigen::Matrix3Xd& points, const std::vector<double>& weights,
+           std::vector<Index> members, int first_cell, int parts, std::vector<int>& cell) {
+  if (parts <= 1 || members.size() <= 1) {
+    for (const Index i : members)
+      cell[static_cast<std::size_t>(i)] = first_cell;
+    return;
+  }
+  // Across the longest extent (the lowest axis on a tie).
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d high = -low;
+  for (const Index i : members) {
+    low = low.cwiseMin(points.col(i));
+    high = high.cwiseMax(points.col(i));
+  }
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
+  std::sort(members.begin(), members.end(), [&](Index a, Index b) {
+    const double xa = points(axis, a), xb = points(axis, b);
+    return xa < xb || (xa == xb && a < b);
+  });
+  // The split whose left weight is nearest the left cells' share (both sides non-empty).
+  const int left_parts = parts / 2;
+  double total = 0.0;
+  for (const Index i : members)
+    total += weights[static_cast<std::size_t>(i)];
+  const double target = total * left_parts / parts;
+  std::size_t best = 1;
+  double prefix = 0.0, best_gap = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < members.size(); ++k) {
+    prefix += weights[static_cast<std::size_t>(members[k - 1])];
+    const double gap = std::abs(prefix - target);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = k;
+    }
+  }
+  std::vector<Index> right(members.begin() + static_cast<std::ptrdiff_t>(best), members.end());
+  members.resize(best);
+  split(points, weights, std::move(members), first_cell, left_parts, cell);
+  split(points, weights, std::move(right), first_cell + left_parts, parts - left_parts, cell);
+}
+
+// Bisects the nodes flagged in `take` (by `weight`) over all ranks into d.owner.
+void bisect_nodes(const State& s, const std::vector<std::uint8_t>& take,
+                  const std::vector<double>& weight, int ranks, Decomposition& d) {
+  std::vector<Index> nodes;
+  for (Index n = 0; n < s.nodes.count(); ++n)
+    if (take[static_cast<std::size_t>(n)]) nodes.push_back(n);
+  Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(nodes.size()));
+  std::vector<double> w(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    points.col(static_cast<Eigen::Index>(k)) = s.nodes.initial.col(nodes[k]);
+    w[k] = weight[static_cast<std::size_t>(nodes[k])];
+  }
+  const std::vector<int> cell = bisect(points, w, ranks);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    d.owner[static_cast<std::size_t>(nodes[k])] = cell[k];
+}
+
+}  // namespace
+
+std::vector<int> bisect(const Eigen::Matrix3Xd& points, const std::vector<double>& weights,
+                        int parts) {
+  std::vector<int> cell(static_cast<std::size_t>(points.cols()), 0);
+  std::vector<Index> all(static_cast<std::size_t>(points.cols()));
+  std::iota(all.begin(), all.end(), Index{0});
+  split(points, weights, std::move(all), 0, std::max(parts, 1), cell);
+  return cell;
+}
+
+Decomposition decompose(const State& s, int ranks, const EntityCosts& costs) {
+  const auto n = static_cast<std::size_t>(s.nodes.count());
+  Decomposition d;
+  d.ranks = ranks;
+  d.owner.assign(n, 0);
+  // What sits on each node: its particles, an eighth of each solid, its contact passes.
+  std::vector<double> weight(n, 0.0);
+  std::vector<std::uint8_t> particle(n, 0), solid(n, 0), other(n, 1);
+  for (const spg::Domain& dom : s.spg)
+    for (const Index node : dom.particles.nodes) {
+      particle[static_cast<std::size_t>(node)] = 1;
+      weight[static_cast<std::size_t>(node)] += costs.particle;
+    }
+  for (const auto& element : s.solids.nodes)
+    for (const Index node : element) {
+      solid[static_cast<std::size_t>(node)] = 1;
+      weight[static_cast<std::size_t>(node)] += costs.hexahedron / 8.0;
+    }
+  for (const contact::Interface& c : s.contacts)
+    for (const contact::Pass& p : c.passes)
+      for (const Index node : p.nodes)
+        weight[static_cast<std::size_t>(node)] += costs.contact_node;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (particle[k]) solid[k] = 0;  // a particle's node goes with the particles
+    if (particle[k] || solid[k]) other[k] = 0;
+  }
+  bisect_nodes(s, particle, weight, ranks, d);
+  bisect_nodes(s, solid, weight, ranks, d);
+  // Rigid-body and free nodes: little work each, spread by count.
+  std::vector<double> unit(n, 1.0);
+  bisect_nodes(s, other, unit, ranks, d);
+  return d;
+}
+
+std::vector<RankLoad> rank_loads(const State& s, const Decomposition& d, const EntityCosts& costs) {
+  std::vector<RankLoad> load(static_cast<std::size_t>(d.ranks));
+  for (const int r : d.owner)
+    ++load[static_cast<std::size_t>(r)].owned_nodes;
+  std::vector<std::pair<int, Index>> read;  // (rank, node) it reads
+  std::vector<int> ranks;
+  auto computed_by = [&](const auto& nodes_of_entity) {  // the ranks owning any of its nodes
+    ranks.clear();
+    for (const Index node : nodes_of_entity)
+      ranks.push_back(d.owner[static_cast<std::size_t>(node)]);
+    std::sort(ranks.begin(), ranks.end());
+    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+  };
+  for (const auto& element : s.solids.nodes) {
+    computed_by(element);
+    for (const int r : ranks) {
+      RankLoad& l = load[static_cast<std::size_t>(r)];
+      ++l.elements;
+      if (ranks.size() > 1) ++l.ghost_elements;
+      l.cost += costs.hexahedron;
+      for (const Index node : element)
+        read.emplace_back(r, node);
+    }
+  }
+  std::vector<Index> row_nodes;
+  for (const spg::Domain& dom : s.spg) {
+    const spg::NeighbourList& list = dom.kernel.list;
+    for (Index j = 0; j < dom.count(); ++j) {
+      row_nodes.clear();
+      for (Index q = list.offsets[static_cast<std::size_t>(j)];
+           q < list.offsets[static_cast<std::size_t>(j) + 1]; ++q)
+        row_nodes.push_back(
+            dom.particles
+                .nodes[static_cast<std::size_t>(list.neighbours[static_cast<std::size_t>(q)])]);
+      const Index own_node = dom.particles.nodes[static_cast<std::size_t>(j)];
+      row_nodes.push_back(own_node);
+      computed_by(row_nodes);
+      const int owner = d.owner[static_cast<std::size_t>(own_node)];
+      ++load[static_cast<std::size_t>(owner)].particles;
+      for (const int r : ranks) {
+        RankLoad& l = load[static_cast<std::size_t>(r)];
+        ++l.rows;
+        if (r != owner) ++l.ghost_rows;
+        l.cost += costs.particle;
+        for (const Index node : row_nodes)
+          read.emplace_back(r, node);
+      }
+    }
+  }
+  for (const contact::Interface& c : s.contacts)
+    for (const contact::Pass& p : c.passes)
+      for (const Index node : p.nodes)
+        load[static_cast<std::size_t>(d.owner[static_cast<std::size_t>(node)])].cost +=
+            costs.contact_node;
+  std::sort(read.begin(), read.end());
+  read.erase(std::unique(read.begin(), read.end()), read.end());
+  for (const auto& [r, node] : read)
+    if (d.owner[static_cast<std::size_t>(node)] != r)
+      ++load[static_cast<std::size_t>(r)].ghost_nodes;
+  return load;
+}
+
+}  // namespace mcdyna::solver::parallel
