@@ -21,9 +21,9 @@ namespace {
 using solver::parallel::RankLoad;
 
 void print_rank(std::ostream& out, const std::string& label, const RankLoad& l) {
-  fmt::print(out, "  {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>12.1f}\n", label,
-             l.owned_nodes, l.ghost_nodes, l.elements, l.ghost_elements, l.particles, l.rows,
-             l.ghost_rows, 1e6 * l.cost);
+  fmt::print(out, "  {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>12.1f}\n", label,
+             l.owned_nodes, l.ghost_nodes, l.peers, l.elements, l.ghost_elements, l.particles,
+             l.rows, l.ghost_rows, 1e6 * l.cost);
 }
 
 void print_decomposition(std::ostream& out, const solver::State& s, int ranks) {
@@ -36,8 +36,9 @@ void print_decomposition(std::ostream& out, const solver::State& s, int ranks) {
              "\n{} rank{} (recursive coordinate bisection; the SPG particles and the solids "
              "each spread over all ranks)\n",
              ranks, ranks == 1 ? "" : "s");
-  fmt::print(out, "  {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>12}\n", "rank", "nodes",
-             "ghosts", "elements", "ghost el", "particles", "rows", "ghost rows", "cost us/cyc");
+  fmt::print(out, "  {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>12}\n", "rank",
+             "nodes", "ghosts", "peers", "elements", "ghost el", "particles", "rows", "ghost rows",
+             "cost us/cyc");
   RankLoad lowest = loads.front(), highest = loads.front(), total;
   for (const RankLoad& l : loads) {
     auto each = [&](auto member) {
@@ -47,6 +48,7 @@ void print_decomposition(std::ostream& out, const solver::State& s, int ranks) {
     };
     each(&RankLoad::owned_nodes);
     each(&RankLoad::ghost_nodes);
+    each(&RankLoad::peers);
     each(&RankLoad::elements);
     each(&RankLoad::ghost_elements);
     each(&RankLoad::particles);

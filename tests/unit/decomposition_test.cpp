@@ -77,6 +77,7 @@ TEST_CASE("Decomposition: every node owned once, SPG and FE each spread over all
     const std::vector<parallel::RankLoad> l = parallel::rank_loads(s, one);
     CHECK(l[0].owned_nodes == s.nodes.count());
     CHECK(l[0].ghost_nodes == 0);
+    CHECK(l[0].peers == 0);
     CHECK(l[0].elements == elements);
     CHECK(l[0].ghost_elements == 0);
     CHECK(l[0].rows == particles);
@@ -95,6 +96,8 @@ TEST_CASE("Decomposition: every node owned once, SPG and FE each spread over all
       CHECK(l.elements > 0);
       CHECK(l.particles > 0);
       CHECK(l.ghost_nodes > 0);
+      CHECK(l.peers >= 1);
+      CHECK(l.peers < ranks);
       CHECK(l.ghost_rows > 0);
       CHECK(l.rows >= l.particles);
     }

@@ -171,9 +171,17 @@ std::vector<RankLoad> rank_loads(const State& s, const Decomposition& d, const E
             costs.contact_node;
   std::sort(read.begin(), read.end());
   read.erase(std::unique(read.begin(), read.end()), read.end());
-  for (const auto& [r, node] : read)
-    if (d.owner[static_cast<std::size_t>(node)] != r)
-      ++load[static_cast<std::size_t>(r)].ghost_nodes;
+  std::vector<std::pair<int, int>> peers;  // (rank, rank owning a node it reads)
+  for (const auto& [r, node] : read) {
+    const int owner = d.owner[static_cast<std::size_t>(node)];
+    if (owner == r) continue;
+    ++load[static_cast<std::size_t>(r)].ghost_nodes;
+    peers.emplace_back(r, owner);
+  }
+  std::sort(peers.begin(), peers.end());
+  peers.erase(std::unique(peers.begin(), peers.end()), peers.end());
+  for (const auto& [r, owner] : peers)
+    ++load[static_cast<std::size_t>(r)].peers;
   return load;
 }
 

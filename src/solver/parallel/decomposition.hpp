@@ -51,6 +51,7 @@ Decomposition decompose(const State& s, int ranks, const EntityCosts& costs = {}
 struct RankLoad {
   Index owned_nodes = 0;
   Index ghost_nodes = 0;     ///< nodes it reads but another rank owns (halo)
+  Index peers = 0;           ///< ranks that own its ghost nodes (messages per exchange)
   Index elements = 0;        ///< hexahedra it computes (those with an owned node)
   Index ghost_elements = 0;  ///< of them, also computed by another rank
   Index particles = 0;       ///< owned SPG particles
