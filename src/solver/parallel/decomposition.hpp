@@ -11,7 +11,7 @@
 /// lend its time to another. The SPG particles' nodes are bisected over all ranks, then the
 /// nodes of the deformable solids that are not particles, each by recursive coordinate
 /// bisection weighted by the measured cost of what sits on the node. Rigid-body and other
-/// nodes go with the rank of the nearest bisection cell, in the same pass.
+/// nodes, which carry little work each, are bisected over all ranks by count.
 ///
 /// Recursive coordinate bisection rather than METIS: the SPG kernels reach a fixed distance, so
 /// a rank's halo is its boundary layer of that thickness and compact boxes keep it small; RCB
