@@ -157,120 +157,184 @@ double choose_step(const State& s, const ForceReport& r, bool first) {
 
 }  // namespace
 
-RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
-  RunResult result;
-  const auto start = Clock::now();
-  Blocks blocks = make_blocks(s);
-  Phases phases(blocks, result.phases);
-  long elements = 0, particles = 0;
-  for (const std::unique_ptr<Block>& b : blocks) {
-    elements += b->elements();
-    particles += b->particles();
-  }
-  if (!resume) phases.each([&](Block& b) { b.initialise(s); });
-  ForceReport pass;
-  if (resume) {
-    // The dump was taken at the top of a cycle: its forces and step estimate are in the state
-    // and the resume point; computing them again would advance the stresses a second time.
-    pass.critical_step = resume->critical_step;
-    pass.controlling_element = resume->controlling_element;
-    pass.controlling_domain = resume->controlling_domain;
-    pass.controlling_particle = resume->controlling_particle;
-    result.phases = resume->phases;
-    result.element_cycles = resume->element_cycles;
-    result.particle_cycles = resume->particle_cycles;
-  } else {
-    pass = compute_forces(s, phases);
-  }
-  s.critical_step = pass.critical_step;
-  const double earlier_wall = resume ? resume->wall_seconds : 0.0;
-  const double earlier_core = resume ? resume->core_seconds : 0.0;
-  const int threads = omp_get_max_threads();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  const long first_cycle = s.cycle;
-  const double first_step = resume ? resume->first_step : choose_step(s, pass, true);
-  // DTMIN: stop when the step falls below DTMIN x the first step; without it, a step below
-  // 1e-6 x the first one is treated as a collapse.
-  const double min_step =
-      first_step * (s.time_control.min_step_factor > 0.0 ? s.time_control.min_step_factor : 1e-6);
-  Eigen::Matrix3Xd velocity_before;
-  for (;;) {
-    const bool at_end = s.time >= s.time_control.end_time * (1.0 - 1e-12) ||
-                        (s.time_control.end_cycle > 0 && s.cycle >= s.time_control.end_cycle);
-    const bool interrupted = hooks.stop_requested && hooks.stop_requested();
-    // A restart dump at the top of the cycle: everything the cycle starts from is in the state
-    // and in `pass`, so a run continued from here repeats this cycle bit for bit.
-    if (hooks.dump && hooks.dump_due && !at_end && (s.cycle != first_cycle || interrupted) &&
-        hooks.dump_due(s, interrupted)) {
-      phases.charge(PhaseTimes::other);
-      const double seconds = elapsed();
-      ResumePoint point{pass.critical_step,
-                        pass.controlling_element,
-                        pass.controlling_domain,
-                        pass.controlling_particle,
-                        first_step,
-                        result.phases,
-                        earlier_wall + seconds,
-                        earlier_core + threads * seconds,
-                        result.element_cycles,
-                        result.particle_cycles};
-      hooks.dump(s, point);
-      phases.charge(PhaseTimes::output);
+namespace {
+
+// The wrapper around the cycle: where the run started, the stop decisions, restart dumps and
+// outputs, the phase clock and the timing. cycle() is the time loop's body.
+class Loop {
+ public:
+  Loop(State& s, const RunHooks& hooks, const ResumePoint* resume, RunResult& result)
+      : s_(s),
+        hooks_(hooks),
+        result_(result),
+        start_(Clock::now()),
+        blocks_(make_blocks(s)),
+        phases_(blocks_, result.phases),
+        threads_(omp_get_max_threads()) {
+    for (const std::unique_ptr<Block>& b : blocks_) {
+      elements_ += b->elements();
+      particles_ += b->particles();
     }
-    const double dt = s.cycle == 0 ? first_step : choose_step(s, pass, false);
-    if (!at_end && !interrupted && !(dt > min_step)) {
-      result.reason = StopReason::step_collapse;
-      result.message = fmt::format(
+    if (resume) {
+      // The dump was taken at the top of a cycle: its forces and step estimate are in the
+      // state and the resume point; computing them again would advance the stresses again.
+      pass_.critical_step = resume->critical_step;
+      pass_.controlling_element = resume->controlling_element;
+      pass_.controlling_domain = resume->controlling_domain;
+      pass_.controlling_particle = resume->controlling_particle;
+      result_.phases = resume->phases;
+      result_.element_cycles = resume->element_cycles;
+      result_.particle_cycles = resume->particle_cycles;
+      earlier_wall_ = resume->wall_seconds;
+      earlier_core_ = resume->core_seconds;
+    } else {
+      phases_.each([&](Block& b) { b.initialise(s_); });
+      pass_ = compute_forces(s_, phases_);
+    }
+    s_.critical_step = pass_.critical_step;
+    first_cycle_ = s_.cycle;
+    first_step_ = resume ? resume->first_step : choose_step(s_, pass_, true);
+    // DTMIN: stop when the step falls below DTMIN x the first step; without it, a step below
+    // 1e-6 x the first one is treated as a collapse.
+    const double factor = s_.time_control.min_step_factor;
+    min_step_ = first_step_ * (factor > 0.0 ? factor : 1e-6);
+  }
+
+  // One cycle, t^n -> t^{n+1}; false once the run has stopped.
+  bool cycle() {
+    const bool at_end = reached_end();
+    const bool interrupted = hooks_.stop_requested && hooks_.stop_requested();
+    dump_if_due(at_end, interrupted);
+    const StepTimes t = next_step(at_end || interrupted);
+    const bool stop = at_end || interrupted || result_.reason == StopReason::step_collapse;
+    const bool write = stop || (hooks_.output_due && hooks_.output_due(s_));
+    if (write) velocity_before_ = s_.nodes.velocity;
+    const Index bad = advance_velocities(s_, phases_, t);
+    if (bad >= 0) stop_on_non_finite_velocity(bad);
+    if (hooks_.velocities_advanced && bad < 0) hooks_.velocities_advanced(s_, t);
+    if (write || bad >= 0) write_state(velocity_before_, stop || bad >= 0);
+    if (bad >= 0 || stop) return close(at_end, interrupted);
+    pass_ = advance_positions(s_, phases_, t);
+    result_.element_cycles += elements_;
+    result_.particle_cycles += particles_;
+    if (!pass_.failure.empty()) return stop_on_failure();
+    s_.controlling_element = pass_.controlling_element;
+    s_.controlling_domain = pass_.controlling_domain;
+    s_.controlling_particle = pass_.controlling_particle;
+    s_.critical_step = pass_.critical_step;
+    if (hooks_.progress) hooks_.progress(s_);
+    return true;
+  }
+
+  // Finer phases (the SPG parts' neighbour search, shape functions, ...) out of the ones their
+  // blocks were charged to, and the run's wall and core time.
+  void finish() {
+    for (const std::unique_ptr<Block>& b : blocks_)
+      b->split_times(s_, result_.phases);
+    const double seconds = elapsed();
+    result_.wall_seconds = earlier_wall_ + seconds;
+    result_.core_seconds = earlier_core_ + threads_ * seconds;
+  }
+
+ private:
+  [[nodiscard]] double elapsed() const {
+    return std::chrono::duration<double>(Clock::now() - start_).count();
+  }
+
+  [[nodiscard]] bool reached_end() const {
+    const TimeControl& tc = s_.time_control;
+    return s_.time >= tc.end_time * (1.0 - 1e-12) || (tc.end_cycle > 0 && s_.cycle >= tc.end_cycle);
+  }
+
+  // A restart dump at the top of the cycle: everything the cycle starts from is in the state
+  // and in pass_, so a run continued from here repeats this cycle bit for bit.
+  void dump_if_due(bool at_end, bool interrupted) {
+    if (!hooks_.dump || !hooks_.dump_due || at_end || (s_.cycle == first_cycle_ && !interrupted) ||
+        !hooks_.dump_due(s_, interrupted))
+      return;
+    phases_.charge(PhaseTimes::other);
+    const double seconds = elapsed();
+    const ResumePoint point{pass_.critical_step,
+                            pass_.controlling_element,
+                            pass_.controlling_domain,
+                            pass_.controlling_particle,
+                            first_step_,
+                            result_.phases,
+                            earlier_wall_ + seconds,
+                            earlier_core_ + threads_ * seconds,
+                            result_.element_cycles,
+                            result_.particle_cycles};
+    hooks_.dump(s_, point);
+    phases_.charge(PhaseTimes::output);
+  }
+
+  // The cycle's times; a step below the minimum stops the run (unless it stops anyway) and
+  // still closes the cycle with the minimum.
+  StepTimes next_step(bool stopping) {
+    const double dt = s_.cycle == 0 ? first_step_ : choose_step(s_, pass_, false);
+    if (!stopping && !(dt > min_step_)) {
+      result_.reason = StopReason::step_collapse;
+      result_.message = fmt::format(
           "time step {:.4e} fell below the minimum {:.4e} at t = {:.6e} (cycle {}); controlling "
           "element: {}",
-          dt, min_step, s.time, s.cycle, controlling_name(s, pass));
+          dt, min_step_, s_.time, s_.cycle, controlling_name(s_, pass_));
     }
-    const bool stop = at_end || interrupted || result.reason == StopReason::step_collapse;
-    const double step = dt > 0.0 ? dt : min_step;  // a collapsed step still closes the cycle
-    const StepTimes t{s.time, step, 0.5 * (s.step + step)};
-    const bool write = stop || (hooks.output_due && hooks.output_due(s));
-    if (write) velocity_before = s.nodes.velocity;
-    const Index bad = advance_velocities(s, phases, t);
-    if (bad >= 0 && result.reason == StopReason::end_time) {
-      result.reason = StopReason::non_finite;
-      result.message = fmt::format("non-finite velocity at node {} at t = {:.6e} (cycle {})",
-                                   s.nodes.ids[static_cast<std::size_t>(bad)], s.time, s.cycle);
-    }
-    if (hooks.velocities_advanced && bad < 0) hooks.velocities_advanced(s, t);
-    if (write || bad >= 0) {
-      if (hooks.write) hooks.write(s, velocity_before, stop || bad >= 0);
-      phases.charge(PhaseTimes::output);
-    }
-    if (bad >= 0 || stop) {
-      if (interrupted && !at_end)
-        result.reason = StopReason::interrupted;
-      else if (at_end && result.reason == StopReason::end_time && s.time_control.end_cycle > 0 &&
-               s.cycle >= s.time_control.end_cycle)
-        result.reason = StopReason::end_cycle;
-      break;
-    }
-    pass = advance_positions(s, phases, t);
-    result.element_cycles += elements;
-    result.particle_cycles += particles;
-    if (!pass.failure.empty()) {
-      result.reason = pass.inverted ? StopReason::inverted_element : StopReason::non_finite;
-      result.message = fmt::format("{} at t = {:.6e} (cycle {})", pass.failure, s.time, s.cycle);
-      if (hooks.write) hooks.write(s, s.nodes.velocity, true);
-      break;
-    }
-    s.controlling_element = pass.controlling_element;
-    s.controlling_domain = pass.controlling_domain;
-    s.controlling_particle = pass.controlling_particle;
-    s.critical_step = pass.critical_step;
-    if (hooks.progress) hooks.progress(s);
+    const double step = dt > 0.0 ? dt : min_step_;
+    return StepTimes{s_.time, step, 0.5 * (s_.step + step)};
   }
-  // Finer phases (the SPG parts' neighbour search, shape functions, ...) out of the ones their
-  // blocks were charged to.
-  for (const std::unique_ptr<Block>& b : blocks)
-    b->split_times(s, result.phases);
-  const double seconds = elapsed();
-  result.wall_seconds = earlier_wall + seconds;
-  result.core_seconds = earlier_core + threads * seconds;
+
+  void stop_on_non_finite_velocity(Index node) {
+    if (result_.reason != StopReason::end_time) return;
+    result_.reason = StopReason::non_finite;
+    result_.message = fmt::format("non-finite velocity at node {} at t = {:.6e} (cycle {})",
+                                  s_.nodes.ids[static_cast<std::size_t>(node)], s_.time, s_.cycle);
+  }
+
+  void write_state(const Eigen::Matrix3Xd& previous, bool final) {
+    if (hooks_.write) hooks_.write(s_, previous, final);
+    phases_.charge(PhaseTimes::output);
+  }
+
+  bool close(bool at_end, bool interrupted) {
+    if (interrupted && !at_end)
+      result_.reason = StopReason::interrupted;
+    else if (at_end && result_.reason == StopReason::end_time && s_.time_control.end_cycle > 0 &&
+             s_.cycle >= s_.time_control.end_cycle)
+      result_.reason = StopReason::end_cycle;
+    return false;
+  }
+
+  // An inverted or non-finite element or particle at t^{n+1}: the state is written as it is.
+  bool stop_on_failure() {
+    result_.reason = pass_.inverted ? StopReason::inverted_element : StopReason::non_finite;
+    result_.message = fmt::format("{} at t = {:.6e} (cycle {})", pass_.failure, s_.time, s_.cycle);
+    if (hooks_.write) hooks_.write(s_, s_.nodes.velocity, true);
+    return false;
+  }
+
+  State& s_;
+  const RunHooks& hooks_;
+  RunResult& result_;
+  Clock::time_point start_;
+  Blocks blocks_;
+  Phases phases_;
+  int threads_;
+  long elements_ = 0, particles_ = 0;
+  ForceReport pass_;
+  double earlier_wall_ = 0.0, earlier_core_ = 0.0;
+  long first_cycle_ = 0;
+  double first_step_ = 0.0, min_step_ = 0.0;
+  Eigen::Matrix3Xd velocity_before_;
+};
+
+}  // namespace
+
+RunResult run(State& s, const RunHooks& hooks, const ResumePoint* resume) {
+  RunResult result;
+  Loop loop(s, hooks, resume, result);
+  while (loop.cycle()) {
+  }
+  loop.finish();
   return result;
 }
 
