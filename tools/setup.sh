@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libfmt-dev libcli11-dev libvtk9-dev doctest-dev libomp-dev
   python3-numpy python3-matplotlib python3-vtk9 time
   xvfb xauth  # tools/verify/render_state.py renders states offscreen under xvfb-run
+  openmpi-bin libopenmpi-dev  # runs over many processes (issue 25); MCDYNA_MPI=OFF builds without
 )
 
 missing=()

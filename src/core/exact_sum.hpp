@@ -16,6 +16,7 @@
 /// counted beside the integer: value() returns NaN for any NaN or for +inf and -inf together,
 /// else the infinity. Cost: 6.4 ns a term against 0.57 ns for a plain double sum (10 million
 /// terms over 80 binary orders of magnitude, one core of this machine, -O2).
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -101,10 +102,29 @@ class ExactSum {
     return negative ? -sum : sum;
   }
 
-  /// The limbs (after carrying), for a merge over processes by integer sums.
-  [[nodiscard]] const std::array<std::int64_t, kLimbs>& limbs() {
-    normalise();
-    return limbs_;
+  /// The limbs (after carrying) and the NaN, +inf and -inf counts, as integers whose
+  /// element-wise sum over partial sums is the parts of their total: a merge over processes by
+  /// one integer all-reduce (core::Communicator).
+  using Parts = std::array<std::int64_t, kLimbs + 3>;
+  [[nodiscard]] Parts parts() const {
+    ExactSum n = *this;
+    n.normalise();
+    Parts p{};
+    std::copy(n.limbs_.begin(), n.limbs_.end(), p.begin());
+    p[kLimbs] = nan_;
+    p[kLimbs + 1] = plus_infinity_;
+    p[kLimbs + 2] = minus_infinity_;
+    return p;
+  }
+  /// The sum whose parts (summed over partials) are `p`.
+  static ExactSum from_parts(const Parts& p) {
+    ExactSum s;
+    std::copy(p.begin(), p.begin() + kLimbs, s.limbs_.begin());
+    s.nan_ = p[kLimbs];
+    s.plus_infinity_ = p[kLimbs + 1];
+    s.minus_infinity_ = p[kLimbs + 2];
+    s.normalise();
+    return s;
   }
 
  private:
