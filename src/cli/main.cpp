@@ -175,6 +175,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber & kFinite);
   run_cmd->add_option("--cycles", run.cycles, "stop after this many cycles of this run")
       ->check(CLI::Range(1L, 1000000000000L));
+  run_cmd
+      ->add_option("--end-time", run.end_time,
+                   "stop at this time instead of the deck's ENDTIM (the outputs' schedule is the "
+                   "deck's)")
+      ->check(CLI::PositiveNumber & kFinite);
   run_cmd->add_option("--step-log", run.step_log,
                       "write one CSV row per cycle: the step, what sets it, and the particle "
                       "with the smallest step at its physical mass");

@@ -169,9 +169,12 @@ DumpSchedule::DumpSchedule(const model::OutputRequests& requests, std::filesyste
     runrsf_cycles_ = requests.runrsf->cycles;
     runrsf_files_ = requests.runrsf->files;
   }
-  // A restarted run continues the d3dump family after the highest number present.
+  // A restarted run continues the d3dump family after the highest number present (over
+  // several processes, process 0's file d3dumpNN.0000 stands for the family member).
   for (int k = 1; k < 100; ++k)
-    if (std::filesystem::exists(dir_ / fmt::format("d3dump{:02d}", k))) next_d3dump_ = k + 1;
+    if (std::filesystem::exists(dir_ / fmt::format("d3dump{:02d}", k)) ||
+        std::filesystem::exists(dir_ / fmt::format("d3dump{:02d}.0000", k)))
+      next_d3dump_ = k + 1;
 }
 
 bool DumpSchedule::due(long cycle, bool interrupted) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -23,6 +24,7 @@
 #include "cli/restart_dump.hpp"
 #include "cli/step_log.hpp"
 #include "cli/wait_policy.hpp"
+#include "core/communicator.hpp"
 #include "deck/deck.hpp"
 #include "io/checked_file.hpp"
 #include "io/output_lock.hpp"
@@ -255,11 +257,15 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
 
 }  // namespace
 
-std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options) {
-  // The options that change the physics go into the dump's fingerprint with the deck's text.
-  return deck_fingerprint(
-      files, fmt::format("stabilization={};renewal={};msc={};step={}", options.spg_stabilization,
-                         options.spg_renewal_strain, options.spg_mode_control, options.spg_step));
+std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options,
+                            int processes) {
+  // The options that change the physics go into the dump's fingerprint with the deck's text,
+  // and over several processes their number: a process's dump holds its share of the work.
+  std::string physics =
+      fmt::format("stabilization={};renewal={};msc={};step={}", options.spg_stabilization,
+                  options.spg_renewal_strain, options.spg_mode_control, options.spg_step);
+  if (processes > 1) physics += fmt::format(";processes={}", processes);
+  return deck_fingerprint(files, physics);
 }
 
 namespace {
@@ -276,20 +282,72 @@ std::string prepare_output_directory(const std::filesystem::path& dir) {
   return {};
 }
 
+// Over several processes a failure one of them meets alone before the time loop: the others
+// would wait for it in the loop's first exchange, so it stops them all (MPI_Abort).
+int stop_all(const core::Communicator& comm, int code, std::ostream& err) {
+  err.flush();
+  if (comm.size() > 1) comm.abort(code);
+  return code;
+}
+
+// Each process of a run over several writes and reads its own restart dump: d3dump01.0000,
+// d3dump01.0001, ... as LS-DYNA MPP names them; one process keeps the plain name.
+std::filesystem::path process_file(const std::filesystem::path& path,
+                                   const core::Communicator& comm) {
+  if (comm.size() == 1) return path;
+  return std::filesystem::path(path.string() + fmt::format(".{:04d}", comm.rank()));
+}
+
+std::string processes_text(const core::Communicator& comm) {
+  return comm.size() > 1 ? fmt::format(" on each of {} processes", comm.size()) : std::string();
+}
+
+// Every process needs a share of the deformable elements and particles.
+std::string process_count_problem(const solver::State& s, const core::Communicator& comm) {
+  long entities = s.solids.count();
+  for (const solver::spg::Domain& d : s.spg)
+    entities += d.count();
+  if (comm.size() <= std::max(entities, 1L)) return {};
+  return fmt::format(
+      "{} processes for {} deformable element(s) and SPG particle(s): each process needs at "
+      "least one; run with mpirun -np {} or fewer",
+      comm.size(), entities, std::max(entities, 1L));
+}
+
+// One process's run of the deck (all of it, or its share over several processes).
+int run_processes(const RunOptions& options, const core::Communicator& comm, std::ostream& out,
+                  std::ostream& err);
+
 }  // namespace
 
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
-  // Started by mpirun over several processes: each would run the whole deck into the same
-  // files. Until the decomposition over processes is in (issue 25) that is refused, once.
-  if (const LaunchedProcesses p = launched_processes(); p.size > 1) {
-    if (p.rank == 0)
+  const LaunchedProcesses launched = launched_processes();
+  // Started by mpirun over several processes in a build without MPI: each would run the whole
+  // deck into the same files. Refused, once.
+  if (launched.size > 1 && !core::Communicator::built_with_mpi()) {
+    if (launched.rank == 0)
       fmt::print(err,
-                 "mcdyna: error: started as {} processes (mpirun -np {}); this build runs a deck "
-                 "in one process, the decomposition over processes is not in it yet. Run it "
-                 "without mpirun: --threads N uses the cores of one machine.\n",
-                 p.size, p.size);
+                 "mcdyna: error: started as {} processes (mpirun -np {}), but this build has no "
+                 "MPI (CMake MCDYNA_MPI=OFF, or no MPI found when it was built). Run it without "
+                 "mpirun (--threads N uses the cores of one machine), or build with Open MPI "
+                 "(Debian: openmpi-bin libopenmpi-dev).\n",
+                 launched.size, launched.size);
     return kRunUsage;
   }
+  const core::Session mpi(launched.size > 1);
+  const core::Communicator comm = core::Communicator::world();
+  if (comm.rank() == 0) return run_processes(options, comm, out, err);
+  // The other processes compute their share and write only their restart dumps; what they
+  // would print, process 0 prints.
+  std::ostringstream quiet_out, quiet_err;
+  return run_processes(options, comm, quiet_out, quiet_err);
+}
+
+namespace {
+
+int run_processes(const RunOptions& options, const core::Communicator& comm, std::ostream& out,
+                  std::ostream& err) {
+  const bool writer = comm.rank() == 0;
   if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
     fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
     return kRunUsage;
@@ -297,7 +355,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const StopSignalGuard signals;
   std::ostringstream report;
   LoadedDeck d = load_deck(options.deck, report);
-  if (stopped_in_setup(options, err)) return kRunInterrupted;
+  if (comm.size() == 1 && stopped_in_setup(options, err)) return kRunInterrupted;
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
   const bool blocked = d.unsupported_physics > 0 && !options.allow_unsupported;
   if (blocked) {
@@ -319,7 +377,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                compile_diags.error_count());
     return kRunDeckErrors;
   }
-  if (stopped_in_setup(options, err)) return kRunInterrupted;
+  if (comm.size() == 1 && stopped_in_setup(options, err)) return kRunInterrupted;
   if (!options.spg_stabilization.empty()) {
     const solver::spg::Stabilization mode =
         options.spg_stabilization == "none"     ? solver::spg::Stabilization::none
@@ -342,28 +400,39 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
       dom.settings.step_estimate = options.spg_step == "eigen"
                                        ? solver::spg::StepEstimate::eigenvalue
                                        : solver::spg::StepEstimate::nearest_neighbour;
-  const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
-  if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
-    fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,
-               options.deck.string());
+  if (const std::string problem = process_count_problem(*state, comm); !problem.empty()) {
+    fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", problem, options.deck.string());
     return kRunUsage;
   }
-  const io::OutputLock lock(dir);
-  if (!lock.problem().empty()) {
-    fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", lock.problem(),
-               options.deck.string());
-    return kRunUsage;
+  // Process 0 writes every output; the others only their restart dumps into the same directory.
+  const std::filesystem::path dir = options.out_dir.empty() ? "." : options.out_dir;
+  std::optional<io::OutputLock> lock;
+  if (writer) {
+    if (const std::string problem = prepare_output_directory(dir); !problem.empty()) {
+      fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", problem,
+                 options.deck.string());
+      return stop_all(comm, kRunUsage, err);
+    }
+    lock.emplace(dir);
+    if (!lock->problem().empty()) {
+      fmt::print(err, "mcdyna: error: --out: {}\nmcdyna: {} not run\n", lock->problem(),
+                 options.deck.string());
+      return stop_all(comm, kRunUsage, err);
+    }
   }
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
-  const std::string fingerprint = run_fingerprint(d.deck.files, options);
+  const std::string fingerprint = run_fingerprint(d.deck.files, options, comm.size());
   std::optional<LoadedDump> dump;
   if (!options.restart.empty()) {
+    const std::filesystem::path path = process_file(options.restart, comm);
     try {
-      dump = read_dump(options.restart, fingerprint, *state);
+      dump = read_dump(path, fingerprint, *state);
     } catch (const std::exception& e) {
-      fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
-      return kRunDeckErrors;
+      // Each process reads its own file: the one that fails says so, and stops them all.
+      fmt::print(writer ? err : std::cerr, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(),
+                 options.deck.string());
+      return stop_all(comm, kRunDeckErrors, writer ? err : std::cerr);
     }
   }
 
@@ -372,33 +441,40 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     state->mass_scaling_dt = 0.0;
   }
   if (options.cycles > 0) state->time_control.end_cycle = state->cycle + options.cycles;
+  if (options.end_time > 0.0) state->time_control.end_time = options.end_time;
   std::optional<StepLog> step_log;
-  if (!options.step_log.empty()) {
+  if (!options.step_log.empty() && writer) {
     try {
       step_log.emplace(options.step_log);
     } catch (const std::exception& e) {
       fmt::print(err, "mcdyna: error: --step-log: {}\nmcdyna: {} not run\n", e.what(),
                  options.deck.string());
-      return kRunUsage;
+      return stop_all(comm, kRunUsage, err);
     }
   }
 
-  // A restarted run continues d3hsp after what the earlier runs wrote.
-  std::ofstream log(dir / "d3hsp", dump ? std::ios::app : std::ios::trunc);
-  if (!log) {
-    fmt::print(err, "mcdyna: error: --out: cannot write {} ({})\nmcdyna: {} not run\n",
-               (dir / "d3hsp").string(), std::generic_category().message(errno),
-               options.deck.string());
-    return kRunUsage;
+  // A restarted run continues d3hsp after what the earlier runs wrote. The other processes
+  // keep a closed stream: what they would log, process 0 logs.
+  std::ofstream log;
+  if (writer) {
+    log.open(dir / "d3hsp", dump ? std::ios::app : std::ios::trunc);
+    if (!log) {
+      fmt::print(err, "mcdyna: error: --out: cannot write {} ({})\nmcdyna: {} not run\n",
+                 (dir / "d3hsp").string(), std::generic_category().message(errno),
+                 options.deck.string());
+      return stop_all(comm, kRunUsage, err);
+    }
   }
   if (dump) {
-    fmt::print(log, "\nRestart from {} at t = {:.6e}, cycle {} (threads: {})\n",
-               options.restart.string(), state->time, state->cycle, omp_get_max_threads());
+    fmt::print(log, "\nRestart from {} at t = {:.6e}, cycle {} (threads: {}{})\n",
+               options.restart.string(), state->time, state->cycle, omp_get_max_threads(),
+               processes_text(comm));
   } else {
     fmt::print(log,
-               "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}, "
+               "mcdyna 0.1 - explicit dynamics of LS-DYNA keyword decks\ndeck: {}\nthreads: {}{}, "
                "OpenMP wait policy {}\n\n",
-               options.deck.string(), omp_get_max_threads(), wait_policy_description());
+               options.deck.string(), omp_get_max_threads(), processes_text(comm),
+               wait_policy_description());
     print_summary(log, d.deck, d.built.model, count_model(d.built.model));
     log << report.str();
     for (const auto& diag : compile_diags.all())
@@ -407,19 +483,19 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
 
   std::vector<std::string> notes;
-  std::unique_ptr<io::Outputs> outputs_holder;
+  std::unique_ptr<io::Outputs> outputs;
   try {
-    outputs_holder = std::make_unique<io::Outputs>(d.built.model, *state, dir, notes,
-                                                   dump ? &dump->outputs : nullptr);
+    if (writer)
+      outputs = std::make_unique<io::Outputs>(d.built.model, *state, dir, notes,
+                                              dump ? &dump->outputs : nullptr);
   } catch (const io::WriteError& e) {
     fmt::print(err, "mcdyna: error termination: {}\nmcdyna: {} not run\n", e.what(),
                options.deck.string());
-    return kRunOutputFailed;
+    return stop_all(comm, kRunOutputFailed, err);
   } catch (const std::exception& e) {
     fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", e.what(), options.deck.string());
-    return kRunDeckErrors;
+    return stop_all(comm, kRunDeckErrors, err);
   }
-  io::Outputs& outputs = *outputs_holder;
   if (!dump) {
     for (const auto& n : notes)
       fmt::print(log, "note: {}\n", n);
@@ -447,15 +523,27 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
   };
   solver::RunHooks hooks;
-  hooks.output_due = [&](const solver::State& s) { return outputs.due(s); };
-  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
-    checked([&] {
-      zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      outputs.write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
-    });
-  };
+  if (writer) {
+    hooks.output_due = [&](const solver::State& s) { return outputs->due(s); };
+    hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
+      checked([&] {
+        zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        outputs->write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
+      });
+    };
+    hooks.progress = [&](const solver::State& s) {
+      progress.update(s);
+      if (step_log) checked([&] { step_log->add(s); });
+      if (!log && output_failure.empty())
+        output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
+    };
+    hooks.decomposed = [&](const std::string& summary) {
+      log << '\n' << summary;
+      log.flush();
+    };
+  }
   std::vector<solver::spg::AngularBudget> budgets;
   if (options.spg_angular_budget) {
     budgets.resize(state->spg.size());
@@ -465,20 +553,15 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     };
   }
   hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
-  hooks.progress = [&](const solver::State& s) {
-    progress.update(s);
-    if (step_log) checked([&] { step_log->add(s); });
-    if (!log && output_failure.empty())
-      output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
-  };
   hooks.dump_due = [&](const solver::State& s, bool interrupted) {
     // A fixed-step probe leaves no dump: continuing it would not repeat the deck's run.
     return output_failure.empty() && options.fixed_step <= 0.0 && dumps.due(s.cycle, interrupted);
   };
   std::filesystem::path last_dump;
   hooks.dump = [&](const solver::State& s, const solver::ResumePoint& point) {
-    const io::OutputsResume where = outputs.resume_point();
-    for (const std::filesystem::path& path : dumps.take()) {
+    const io::OutputsResume where = writer ? outputs->resume_point() : io::OutputsResume{};
+    for (const std::filesystem::path& dump_path : dumps.take()) {
+      const std::filesystem::path path = process_file(dump_path, comm);
       try {
         const auto begin = std::chrono::steady_clock::now();
         write_dump(path, fingerprint, s, point, where);
@@ -487,7 +570,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                    1e-6 * static_cast<double>(std::filesystem::file_size(path)),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
         log.flush();
-        last_dump = path;
+        last_dump = dump_path;  // what --restart takes: each process adds its number
       } catch (const std::exception& e) {
         if (output_failure.empty()) output_failure = e.what();
       }
@@ -504,12 +587,16 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
              state->time, state->cycle);
   if (!output_failure.empty()) fmt::print(summary, "  {}\n", output_failure);
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
-  fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s))\n", omp_get_max_threads());
+  fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s){})\n", omp_get_max_threads(),
+             comm.size() > 1 ? fmt::format(" on each of {} processes; process 0", comm.size())
+                             : std::string());
   for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
     const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
     // SPG rows only for decks with SPG parts, the contact row only for decks with contact.
     if (p == solver::PhaseTimes::contact) {
       if (state->contacts.empty()) continue;
+    } else if (p == solver::PhaseTimes::exchange) {
+      if (comm.size() == 1) continue;
     } else if (p >= solver::PhaseTimes::spg_neighbours && state->spg.empty()) {
       continue;
     }
@@ -539,12 +626,13 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(summary, "  added mass (DT2MS) {:.6e}\n", solver::total_added_mass(*state));
   }
   fmt::print(summary, "Outputs in {}:", dir.string());
-  for (const auto& f : outputs.files())
-    fmt::print(summary, " {};", f);
+  if (writer)
+    for (const auto& f : outputs->files())
+      fmt::print(summary, " {};", f);
   fmt::print(summary, " d3hsp\n");
   log << summary.str();
   log.flush();
-  if (!log && output_failure.empty())
+  if (writer && !log && output_failure.empty())
     output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
   if (!options.quiet || result.reason != solver::StopReason::end_time || !output_failure.empty())
     out << summary.str();
@@ -563,5 +651,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
       return kRunUnstable;
   }
 }
+
+}  // namespace
 
 }  // namespace mcdyna::cli

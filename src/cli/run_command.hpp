@@ -32,6 +32,7 @@ struct RunOptions {
   /// the true critical step; not part of the dump fingerprint so it can start from any dump)
   double fixed_step = 0.0;
   long cycles = 0;                 ///< --cycles: stop after this many cycles of this run
+  double end_time = 0.0;           ///< --end-time: stop at this time instead of ENDTIM
   std::filesystem::path step_log;  ///< --step-log: per-cycle CSV of what sets the step
   /// --restart / r=: continue the run from this dump (written by the same deck and options)
   std::filesystem::path restart;
@@ -51,6 +52,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 /// The fingerprint a run's restart dumps carry: the deck's files and the options that change
 /// the physics (cli/restart_dump.hpp deck_fingerprint).
-std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options);
+std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& options,
+                            int processes = 1);
 
 }  // namespace mcdyna::cli

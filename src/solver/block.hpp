@@ -7,6 +7,7 @@
 /// SPG parts take up what the constraints changed. A block does nothing in the phases it has no
 /// part in. Blocks are made from the compiled state by block_registry.cpp.
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -57,6 +58,10 @@ class Block {
   /// Entity updates per cycle (element and particle counts of the timing summary).
   [[nodiscard]] virtual long elements() const { return 0; }
   [[nodiscard]] virtual long particles() const { return 0; }
+  /// Over several processes (parallel/halo.hpp): a block that every process computes whole
+  /// marks the nodes it reads or moves, which every process then moves itself. Blocks split
+  /// over the processes (hexahedra) and node-wise conditions mark nothing.
+  virtual void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& /*nodes*/) const {}
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}

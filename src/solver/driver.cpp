@@ -10,11 +10,15 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
+#include "core/communicator.hpp"
 #include "solver/block.hpp"
+#include "solver/parallel/halo.hpp"
 
 namespace mcdyna::solver {
 
@@ -32,7 +36,8 @@ const char* PhaseTimes::name(int p) {
                                        "SPG forces",
                                        "SPG bond failure",
                                        "SPG step estimate",
-                                       "contact"};
+                                       "contact",
+                                       "exchange"};
   return kNames[p];
 }
 
@@ -95,6 +100,7 @@ Index free_velocity_update(State& s, double dt) {
   for (Index n = 0; n < nd.count(); ++n) {
     const auto i = static_cast<std::size_t>(n);
     if (nd.rigid_body[i] >= 0 || nd.smoothed[i]) continue;  // smoothed: spg::advance_velocities
+    if (!s.ownership.moves_node(n)) continue;               // another process moves it
     const double m = nd.mass[i] + nd.added_mass[i];
     if (!(m > 0.0)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -112,7 +118,7 @@ void advance_free_positions(State& s, double dt) {
   Nodes& nd = s.nodes;
 #pragma omp parallel for schedule(static) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n) {
-    if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0) continue;
+    if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0 || !s.ownership.moves_node(n)) continue;
     nd.position.col(n) += dt * nd.velocity.col(n);
   }
 }
@@ -132,15 +138,52 @@ Index advance_velocities(State& s, Phases& phases, const StepTimes& t) {
   return bad;
 }
 
-// The second half: x^n -> x^{n+1}, t^{n+1}, and the forces there.
-ForceReport advance_positions(State& s, Phases& phases, const StepTimes& t) {
+// The second half: x^n -> x^{n+1}, t^{n+1}, and the forces there. Over several processes the
+// ghost nodes' new positions and velocities arrive before the forces.
+ForceReport advance_positions(State& s, Phases& phases, const StepTimes& t, parallel::Halo* halo) {
   advance_free_positions(s, t.step);
   phases.charge(PhaseTimes::other);
   phases.each([&](Block& b) { b.advance_positions(s, t.step); });
   s.time += t.step;
   s.step = t.step;
   ++s.cycle;
+  if (halo) {
+    halo->exchange_motion(s);
+    phases.charge(PhaseTimes::exchange);
+  }
   return compute_forces(s, phases);
+}
+
+// Over several processes each computed the step estimate and failures of its own share: all
+// take the smallest step (an element before a particle, then the lowest index, as one process
+// picks) and the failure the lowest process met.
+void agree_on_forces(ForceReport& r, const core::Communicator& comm) {
+  const std::vector<double> mine = {r.critical_step,
+                                    static_cast<double>(r.controlling_element),
+                                    static_cast<double>(r.controlling_domain),
+                                    static_cast<double>(r.controlling_particle),
+                                    r.failure.empty() ? 0.0 : 1.0,
+                                    r.inverted ? 1.0 : 0.0};
+  const std::vector<double> all = comm.all_gather(mine);
+  auto key = [&](int p) {
+    const double* v = &all[static_cast<std::size_t>(p) * mine.size()];
+    const double element = v[1] >= 0.0 ? v[1] : std::numeric_limits<double>::infinity();
+    return std::array<double, 4>{v[0], element, v[2], v[3]};
+  };
+  int best = 0, failed = -1;
+  for (int p = 0; p < comm.size(); ++p) {
+    if (key(p) < key(best)) best = p;
+    if (failed < 0 && all[static_cast<std::size_t>(p) * mine.size() + 4] != 0.0) failed = p;
+  }
+  const double* b = &all[static_cast<std::size_t>(best) * mine.size()];
+  r.critical_step = b[0];
+  r.controlling_element = static_cast<Index>(b[1]);
+  r.controlling_domain = static_cast<std::size_t>(b[2]);
+  r.controlling_particle = static_cast<Index>(b[3]);
+  if (failed >= 0) {
+    comm.broadcast(r.failure, failed);
+    r.inverted = all[static_cast<std::size_t>(failed) * mine.size() + 5] != 0.0;
+  }
 }
 
 double choose_step(const State& s, const ForceReport& r, bool first) {
@@ -170,11 +213,13 @@ class Loop {
         start_(Clock::now()),
         blocks_(make_blocks(s)),
         phases_(blocks_, result.phases),
-        threads_(omp_get_max_threads()) {
+        threads_(omp_get_max_threads()),
+        comm_(core::Communicator::world()) {
     for (const std::unique_ptr<Block>& b : blocks_) {
       elements_ += b->elements();
       particles_ += b->particles();
     }
+    if (comm_.size() > 1) decompose();
     if (resume) {
       // The dump was taken at the top of a cycle: its forces and step estimate are in the
       // state and the resume point; computing them again would advance the stresses again.
@@ -190,6 +235,7 @@ class Loop {
     } else {
       phases_.each([&](Block& b) { b.initialise(s_); });
       pass_ = compute_forces(s_, phases_);
+      if (halo_) agree_on_forces(pass_, comm_);
     }
     s_.critical_step = pass_.critical_step;
     first_cycle_ = s_.cycle;
@@ -203,18 +249,25 @@ class Loop {
   // One cycle, t^n -> t^{n+1}; false once the run has stopped.
   bool cycle() {
     const bool at_end = reached_end();
-    const bool interrupted = hooks_.stop_requested && hooks_.stop_requested();
+    bool interrupted = hooks_.stop_requested && hooks_.stop_requested();
+    bool output_due = hooks_.output_due && hooks_.output_due(s_);
+    if (halo_) agree(interrupted, output_due);
     dump_if_due(at_end, interrupted);
     const StepTimes t = next_step(at_end || interrupted);
     const bool stop = at_end || interrupted || result_.reason == StopReason::step_collapse;
-    const bool write = stop || (hooks_.output_due && hooks_.output_due(s_));
+    const bool write = stop || output_due;
     if (write) velocity_before_ = s_.nodes.velocity;
-    const Index bad = advance_velocities(s_, phases_, t);
+    Index bad = advance_velocities(s_, phases_, t);
+    if (halo_) bad = agree(bad);
     if (bad >= 0) stop_on_non_finite_velocity(bad);
     if (hooks_.velocities_advanced && bad < 0) hooks_.velocities_advanced(s_, t);
     if (write || bad >= 0) write_state(velocity_before_, stop || bad >= 0);
     if (bad >= 0 || stop) return close(at_end, interrupted);
-    pass_ = advance_positions(s_, phases_, t);
+    pass_ = advance_positions(s_, phases_, t, halo_ ? &*halo_ : nullptr);
+    if (halo_) {
+      agree_on_forces(pass_, comm_);
+      phases_.charge(PhaseTimes::exchange);
+    }
     result_.element_cycles += elements_;
     result_.particle_cycles += particles_;
     if (!pass_.failure.empty()) return stop_on_failure();
@@ -237,6 +290,31 @@ class Loop {
   }
 
  private:
+  // Over several processes: the decomposition and this process's halo (parallel/halo.hpp).
+  void decompose() {
+    std::vector<std::uint8_t> replicated(static_cast<std::size_t>(s_.nodes.count()), 0);
+    for (const std::unique_ptr<Block>& b : blocks_)
+      b->mark_replicated(s_, replicated);
+    halo_.emplace(s_, parallel::decompose(s_, comm_.size()), std::move(replicated), comm_);
+    const std::string summary = halo_->summary();
+    if (hooks_.decomposed && comm_.rank() == 0) hooks_.decomposed(summary);
+  }
+
+  // Every process stops and writes when any one is asked to (a signal reaches the processes
+  // of an mpirun at different cycles); process 0 alone knows when an output is due.
+  void agree(bool& interrupted, bool& output_due) {
+    const unsigned flags = comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U));
+    interrupted = (flags & 1U) != 0;
+    output_due = (flags & 2U) != 0;
+  }
+
+  // The lowest node with a non-finite velocity on any process.
+  Index agree(Index bad) {
+    const std::int64_t lowest =
+        comm_.min(bad >= 0 ? std::int64_t{bad} : std::numeric_limits<std::int64_t>::max());
+    return lowest == std::numeric_limits<std::int64_t>::max() ? -1 : static_cast<Index>(lowest);
+  }
+
   [[nodiscard]] double elapsed() const {
     return std::chrono::duration<double>(Clock::now() - start_).count();
   }
@@ -290,7 +368,8 @@ class Loop {
                                   s_.nodes.ids[static_cast<std::size_t>(node)], s_.time, s_.cycle);
   }
 
-  void write_state(const Eigen::Matrix3Xd& previous, bool final) {
+  void write_state(Eigen::Matrix3Xd& previous, bool final) {
+    if (halo_) halo_->gather_for_output(s_, previous);
     if (hooks_.write) hooks_.write(s_, previous, final);
     phases_.charge(PhaseTimes::output);
   }
@@ -308,7 +387,7 @@ class Loop {
   bool stop_on_failure() {
     result_.reason = pass_.inverted ? StopReason::inverted_element : StopReason::non_finite;
     result_.message = fmt::format("{} at t = {:.6e} (cycle {})", pass_.failure, s_.time, s_.cycle);
-    if (hooks_.write) hooks_.write(s_, s_.nodes.velocity, true);
+    write_state(s_.nodes.velocity, true);
     return false;
   }
 
@@ -319,6 +398,8 @@ class Loop {
   Blocks blocks_;
   Phases phases_;
   int threads_;
+  core::Communicator comm_;
+  std::optional<parallel::Halo> halo_;  ///< over several processes only
   long elements_ = 0, particles_ = 0;
   ForceReport pass_;
   double earlier_wall_ = 0.0, earlier_core_ = 0.0;

@@ -14,7 +14,7 @@ namespace mcdyna::solver {
 
 /// Wall-clock seconds per phase of the cycle.
 struct PhaseTimes {
-  static constexpr int kCount = 14;
+  static constexpr int kCount = 15;
   enum Phase {
     elements,
     boundary,
@@ -29,7 +29,8 @@ struct PhaseTimes {
     spg_forces,
     spg_bonds,
     spg_step_estimate,
-    contact
+    contact,
+    exchange  ///< over several processes: halo messages and the per-cycle agreements
   };
   std::array<double, kCount> seconds{};
   static const char* name(int p);
@@ -81,6 +82,8 @@ struct RunHooks {
   /// Called every cycle once the velocities have advanced to n+1/2 (constraints applied), before
   /// the positions move: the state holds x^n, f^n and v^{n+1/2} (spg/angular_budget.hpp).
   std::function<void(const State&, const StepTimes&)> velocities_advanced;
+  /// Over several processes, once at the start: the decomposition summary (process 0).
+  std::function<void(const std::string&)> decomposed;
   /// Polled every cycle (signals).
   std::function<bool()> stop_requested;
   /// Called every cycle after the step (progress display decides how often to print).

@@ -15,6 +15,7 @@
 #include "solver/curve.hpp"
 #include "solver/material/material.hpp"
 #include "solver/material/point_kinematics.hpp"
+#include "solver/parallel/ownership.hpp"
 #include "solver/spg/domain.hpp"
 
 namespace mcdyna::solver {
@@ -235,6 +236,9 @@ struct State {
   double initial_energy = 0.0;
   double initial_mass = 0.0;
   double mass_scaling_dt = 0.0;  ///< TSSFAC * |DT2MS| or 0
+  /// Over several processes: what this one advances and computes (not dumped: rebuilt from the
+  /// deck and the process count when a run starts or restarts).
+  parallel::Ownership ownership;
 };
 
 }  // namespace mcdyna::solver

@@ -5,6 +5,10 @@
 # (timings) are left out.
 #
 #   tools/verify/same_histories.sh OLD_BINARY NEW_BINARY OUT_DIR
+#   NEW_LAUNCH="mpirun -np 3 --oversubscribe" tools/verify/same_histories.sh BIN BIN OUT_DIR
+#
+# NEW_LAUNCH runs the new binary under a launcher: one binary on one process against the same
+# binary over several (issue 25, the same bits for any process count).
 #
 # About 3.5 minutes on 2 threads. Prints one line per deck, "same" or the files that differ;
 # exits 1 if any differs.
@@ -19,10 +23,10 @@ compare() { # name deck [options...]
   local name=$1 deck=$2
   shift 2
   for b in old new; do
-    local bin=$OLD
-    [ $b = new ] && bin=$NEW
+    local bin=$OLD launch=""
+    [ $b = new ] && bin=$NEW && launch=${NEW_LAUNCH:-}
     rm -rf "$OUT/$name.$b"
-    "$bin" run "$deck" --out "$OUT/$name.$b" -q "$@" >"$OUT/$name.$b.log" 2>&1
+    $launch "$bin" run "$deck" --out "$OUT/$name.$b" -q "$@" >"$OUT/$name.$b.log" 2>&1
   done
   local same=1
   for f in $(cd "$OUT/$name.old" && ls | grep -v "d3hsp\|lock\|runrsf\|d3dump"); do

@@ -14,6 +14,19 @@ class ContactBlock final : public Block {
   void forces(State& s, ForceReport& /*report*/) override {
     contact::interface_pass(s, s.contacts[interface_]);
   }
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    const contact::Interface& c = s.contacts[interface_];
+    auto mark = [&](Index n) { nodes[static_cast<std::size_t>(n)] = 1; };
+    for (const Index n : c.tracked)
+      mark(n);
+    for (const contact::Pass& p : c.passes) {
+      for (const Index n : p.nodes)
+        mark(n);
+      for (const auto& segment : p.surface.segments)
+        for (const Index n : segment)
+          mark(n);
+    }
+  }
 
  private:
   std::size_t interface_;

@@ -353,7 +353,8 @@ void block_pass(ElementContext& c, const Model& model, PassTotals& totals) {
 #pragma omp for schedule(static, kElementChunk) nowait
     for (Index e = block.begin; e < block.end; ++e) {
       const auto i = static_cast<std::size_t>(e);
-      if (s.eroded[i]) continue;
+      // Over several processes, the elements another process computes alone are skipped.
+      if (s.eroded[i] || !c.st.ownership.computes_element(e)) continue;
       const ElementOutcome o =
           one_point ? one_point_element(c, model, e) : selective_reduced_element(c, model, e);
       if (o.inverted) {
@@ -412,6 +413,7 @@ void gather_solid_forces(State& state) {
   const Index n_nodes = nd.count();
 #pragma omp parallel for schedule(static) if (n_nodes > 4 * kParallelMinimum)
   for (Index n = 0; n < n_nodes; ++n) {
+    if (!state.ownership.moves_node(n)) continue;  // another process gathers it
     double fx = 0.0, fy = 0.0, fz = 0.0;
     for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
          k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k) {

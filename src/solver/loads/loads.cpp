@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace mcdyna::solver {
 
@@ -86,14 +87,18 @@ void apply_nodal_motions(State& state, const StepTimes& t) {
 
 void apply_rigid_walls(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
+  const parallel::Ownership& own = state.ownership;
   for (RigidWallState& w : state.rigid_walls) {
-    w.force.setZero();
     const bool on = t.time >= w.birth && t.time <= w.death;
     // Wall plane at the end of the step (a moving wall advances along its normal).
     const Vec3 point_next = w.point + (w.displacement + w.velocity * t.step) * w.normal;
-    double wall_impulse = 0.0;
+    // The wall's force, the work it absorbs and the impulse it takes, summed exactly: each node
+    // on the process that owns it, then over the processes (the same bits for any count).
+    enum { kForceX, kForceY, kForceZ, kWork, kImpulse, kSums };
+    std::vector<core::ExactSum> sums(kSums);
     for (const Index n : w.nodes) {
       if (!on) break;
+      if (!own.moves_node(n)) continue;  // another process moves it
       const Vec3 x = nd.position.col(n);
       Vec3 v = nd.velocity.col(n);
       const double gap = (x + t.step * v - point_next).dot(w.normal);
@@ -119,10 +124,17 @@ void apply_rigid_walls(State& state, const StepTimes& t) {
       const Vec3 dv = v - v_before;
       nd.velocity.col(n) = v;
       nd.acceleration.col(n) += dv / t.mean;
-      w.force -= m * dv / t.mean;
-      wall_impulse += m * dvn;
-      w.energy -= impulse_work(m * dv, v_start, v);
+      if (!own.owns_node(n)) continue;  // a replicated node counts on its owner only
+      const Vec3 f = -m * dv / t.mean;
+      for (int k = 0; k < 3; ++k)
+        sums[static_cast<std::size_t>(kForceX + k)].add(f[k]);
+      sums[kImpulse].add(m * dvn);
+      sums[kWork].add(impulse_work(m * dv, v_start, v));
     }
+    const std::vector<double> total = own.comm.sum(sums);
+    w.force = Vec3(total[kForceX], total[kForceY], total[kForceZ]);
+    w.energy -= total[kWork];
+    const double wall_impulse = total[kImpulse];
     if (w.moving) {
       // The wall takes the opposite normal impulse (momentum is exchanged, not created).
       w.velocity -= wall_impulse / w.mass;

@@ -16,6 +16,11 @@ class RigidBodiesBlock final : public Block {
     return -1;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    for (const RigidBody& b : s.rigid_bodies)
+      for (const Index n : b.nodes)
+        nodes[static_cast<std::size_t>(n)] = 1;
+  }
 };
 
 }  // namespace

@@ -51,6 +51,11 @@ class SpgBlock final : public Block {
 
   void after_constraints(State& s) override { spg::absorb_constraints(s, s.spg[domain_]); }
 
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    for (const Index n : s.spg[domain_].particles.nodes)
+      nodes[static_cast<std::size_t>(n)] = 1;
+  }
+
   void split_times(const State& s, PhaseTimes& phases) const override {
     const spg::SpgTimes& t = s.spg[domain_].times;
     constexpr int kSplit = PhaseTimes::spg_step_estimate - PhaseTimes::spg_neighbours + 1;

@@ -1,0 +1,212 @@
+#include "solver/parallel/halo.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mcdyna::solver::parallel {
+
+namespace {
+
+// Every per-node value an output reads that the process moving the node computes, as (first
+// value, count) pairs; one list serves packing and unpacking.
+template <class Visit>
+void node_fields(State& s, Eigen::Matrix3Xd& previous, Index n, Visit&& visit) {
+  Nodes& nd = s.nodes;
+  visit(nd.position.col(n).data(), 3);
+  visit(nd.velocity.col(n).data(), 3);
+  visit(nd.acceleration.col(n).data(), 3);
+  visit(nd.force.col(n).data(), 3);
+  visit(&nd.added_mass[static_cast<std::size_t>(n)], 1);
+  visit(previous.col(n).data(), 3);
+}
+
+// The same for a hexahedron: its element values and those of its integration points.
+template <class Visit>
+void element_fields(State& s, Index e, Visit&& visit) {
+  Solids& so = s.solids;
+  const auto i = static_cast<std::size_t>(e);
+  for (std::vector<double>* v :
+       {&so.volume, &so.pressure, &so.eos_energy, &so.temperature, &so.internal_energy,
+        &so.hourglass_energy, &so.viscosity, &so.time_step, &so.added_mass})
+    visit(&(*v)[i], 1);
+  visit(&so.hourglass_force[12 * i], 12);
+  visit(&so.corner_force[24 * i], 24);
+  const auto block = std::find_if(so.blocks.begin(), so.blocks.end(),
+                                  [e](const SolidBlock& b) { return e >= b.begin && e < b.end; });
+  const Index first = block->point_begin + (e - block->begin) * block->points_per_element;
+  MaterialPoints& p = so.points;
+  for (Index q = first; q < first + block->points_per_element; ++q) {
+    visit(p.deviator.col(q).data(), 6);
+    if (p.back_stress.cols() > 0) visit(p.back_stress.col(q).data(), 6);
+    if (!p.plastic_strain.empty()) visit(&p.plastic_strain[static_cast<std::size_t>(q)], 1);
+    if (!p.damage.empty()) visit(&p.damage[static_cast<std::size_t>(q)], 1);
+  }
+}
+
+}  // namespace
+
+Halo::Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicated,
+           core::Communicator comm)
+    : comm_(comm), output_(static_cast<std::size_t>(comm.size())) {
+  const int me = comm_.rank();
+  const Index n_nodes = s.nodes.count();
+  const Index n_elements = s.solids.count();
+  Ownership& own = s.ownership;
+  own.comm = comm_;
+  own.moves.assign(static_cast<std::size_t>(n_nodes), 0);
+  own.owns.assign(static_cast<std::size_t>(n_nodes), 0);
+  own.computes.assign(static_cast<std::size_t>(n_elements), 0);
+  auto owner = [&](Index n) { return d.owner[static_cast<std::size_t>(n)]; };
+  for (Index n = 0; n < n_nodes; ++n) {
+    const auto i = static_cast<std::size_t>(n);
+    own.moves[i] = (owner(n) == me || replicated[i]) ? 1 : 0;
+    own.owns[i] = owner(n) == me ? 1 : 0;
+    if (replicated[i])
+      ++size_.replicated_nodes;
+    else if (owner(n) == me)
+      ++size_.owned_nodes;
+  }
+  // The hexahedra with a moved node, and the nodes they read that another process moves.
+  std::vector<std::uint8_t> ghost(static_cast<std::size_t>(n_nodes), 0);
+  for (Index e = 0; e < n_elements; ++e) {
+    const auto& corners = s.solids.nodes[static_cast<std::size_t>(e)];
+    if (std::none_of(corners.begin(), corners.end(), [&](Index n) { return own.moves_node(n); }))
+      continue;
+    own.computes[static_cast<std::size_t>(e)] = 1;
+    ++size_.elements;
+    if (owner(corners[0]) != me) ++size_.ghost_elements;
+    for (const Index n : corners)
+      if (!own.moves_node(n)) ghost[static_cast<std::size_t>(n)] = 1;
+  }
+  // Ask each owner for its nodes among the ghosts; what the others ask of this process is what
+  // it sends them.
+  std::vector<std::vector<Index>> wanted(static_cast<std::size_t>(comm_.size()));
+  for (Index n = 0; n < n_nodes; ++n)
+    if (ghost[static_cast<std::size_t>(n)]) wanted[static_cast<std::size_t>(owner(n))].push_back(n);
+  const std::vector<std::vector<Index>> asked = comm_.all_to_all(wanted);
+  for (int r = 0; r < comm_.size(); ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    if (r == me || (wanted[k].empty() && asked[k].empty())) continue;
+    peers_.push_back(r);
+    receive_.push_back(wanted[k]);
+    send_.push_back(asked[k]);
+    receive_buffer_.emplace_back(6 * wanted[k].size());
+    send_buffer_.emplace_back(6 * asked[k].size());
+    size_.ghost_nodes += static_cast<Index>(wanted[k].size());
+    size_.sent_nodes += static_cast<Index>(asked[k].size());
+  }
+  size_.peers = static_cast<Index>(peers_.size());
+  // What each process other than 0 sends to 0 at an output: the values it alone computes.
+  for (Index n = 0; n < n_nodes; ++n)
+    if (!replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+      output_[static_cast<std::size_t>(owner(n))].nodes.push_back(n);
+  for (Index e = 0; e < n_elements; ++e)
+    if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
+      output_[static_cast<std::size_t>(r)].elements.push_back(e);
+  for (std::size_t k = 0; k < s.constraints.nodes.size(); ++k)
+    if (const Index n = s.constraints.nodes[k];
+        !replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+      output_[static_cast<std::size_t>(owner(n))].constraints.push_back(static_cast<Index>(k));
+  for (std::size_t m = 0; m < s.nodal_motions.size(); ++m)
+    for (std::size_t k = 0; k < s.nodal_motions[m].nodes.size(); ++k)
+      if (const Index n = s.nodal_motions[m].nodes[k];
+          !replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+        output_[static_cast<std::size_t>(owner(n))].motions.emplace_back(static_cast<Index>(m),
+                                                                         static_cast<Index>(k));
+}
+
+void Halo::exchange_motion(State& s) {
+  Nodes& nd = s.nodes;
+  for (std::size_t k = 0; k < peers_.size(); ++k) {
+    double* out = send_buffer_[k].data();
+    for (const Index n : send_[k]) {
+      for (int c = 0; c < 3; ++c)
+        *out++ = nd.position(c, n);
+      for (int c = 0; c < 3; ++c)
+        *out++ = nd.velocity(c, n);
+    }
+  }
+  comm_.exchange(peers_, send_buffer_, receive_buffer_);
+  for (std::size_t k = 0; k < peers_.size(); ++k) {
+    const double* in = receive_buffer_[k].data();
+    for (const Index n : receive_[k]) {
+      for (int c = 0; c < 3; ++c)
+        nd.position(c, n) = *in++;
+      for (int c = 0; c < 3; ++c)
+        nd.velocity(c, n) = *in++;
+    }
+  }
+}
+
+void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous) const {
+  // Packing and unpacking walk the same lists in the same order.
+  auto walk = [&](const OutputShare& share, auto&& visit) {
+    for (const Index n : share.nodes)
+      node_fields(s, previous, n, visit);
+    for (const Index e : share.elements) {
+      // The erosion flag travels as a double beside the element's values.
+      double eroded = s.solids.eroded[static_cast<std::size_t>(e)];
+      visit(&eroded, 1);
+      s.solids.eroded[static_cast<std::size_t>(e)] = static_cast<std::uint8_t>(eroded);
+      element_fields(s, e, visit);
+    }
+    for (const Index k : share.constraints)
+      visit(s.constraints.reaction.col(k).data(), 3);
+    for (const auto& [m, k] : share.motions) {
+      NodalMotion& motion = s.nodal_motions[static_cast<std::size_t>(m)];
+      visit(motion.node_force.col(k).data(), 3);
+      visit(&motion.node_work[static_cast<std::size_t>(k)], 1);
+    }
+  };
+  std::vector<double> mine;
+  if (comm_.rank() != 0)
+    walk(output_[static_cast<std::size_t>(comm_.rank())],
+         [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
+  std::vector<int> counts;
+  const std::vector<double> all = comm_.gather_to_root(mine, counts);
+  if (comm_.rank() != 0) return;
+  const double* in = all.data();
+  for (int r = 1; r < comm_.size(); ++r)
+    walk(output_[static_cast<std::size_t>(r)], [&](double* v, int count) {
+      std::copy(in, in + count, v);
+      in += count;
+    });
+  if (in != all.data() + all.size())
+    throw std::logic_error("Halo::gather_for_output: the processes' shares do not match");
+}
+
+std::size_t Halo::received_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& b : receive_buffer_)
+    bytes += b.size() * sizeof(double);
+  return bytes;
+}
+
+std::string Halo::summary() const {
+  const std::vector<double> mine = {
+      static_cast<double>(size_.owned_nodes),    static_cast<double>(size_.replicated_nodes),
+      static_cast<double>(size_.ghost_nodes),    static_cast<double>(size_.sent_nodes),
+      static_cast<double>(size_.peers),          static_cast<double>(size_.elements),
+      static_cast<double>(size_.ghost_elements), static_cast<double>(received_bytes())};
+  const std::vector<double> all = comm_.all_gather(mine);
+  if (comm_.rank() != 0) return {};
+  std::string out = fmt::format(
+      "Decomposition over {} processes (recursive coordinate bisection, issue 25)\n"
+      "  rank  owned nodes  replicated  ghost nodes  sent nodes  peers  hexahedra  ghost hexa  "
+      "halo bytes/cycle\n",
+      comm_.size());
+  for (int r = 0; r < comm_.size(); ++r) {
+    const double* v = &all[static_cast<std::size_t>(r) * mine.size()];
+    out += fmt::format(
+        "  {:4d} {:12.0f} {:11.0f} {:12.0f} {:11.0f} {:6.0f} {:10.0f} {:11.0f} {:17.0f}\n", r, v[0],
+        v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+  out +=
+      "  replicated: nodes of the blocks every process computes whole (SPG parts, rigid bodies,\n"
+      "  contact); each process moves them itself.\n";
+  return out;
+}
+
+}  // namespace mcdyna::solver::parallel

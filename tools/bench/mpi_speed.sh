@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Strong scaling from 1 to 2 processes against 1 to 2 OpenMP threads (issue 25), on decks with
+# and without the blocks that are not split over processes yet. Each deck runs a fixed number
+# of cycles: 1 process x 1 thread, 1 process x 2 threads, 2 processes x 1 thread (mpirun). Prints
+# the wall time of the time loop (d3hsp "total", process 0), the speed-ups, and the halo of the
+# 2-process run (nodes and bytes received per cycle, messages per cycle) from d3hsp's
+# decomposition table. Goal (issue 25): >= 1.8x at 2 processes.
+#
+#   tools/bench/mpi_speed.sh [OUT_DIR]     (needs build/mcdyna built with MPI; ~6 min here)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+out=${1:-${TMPDIR:-/tmp}/mcdyna_mpi_speed}
+mkdir -p "$out"
+bin=$(realpath build/mcdyna)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+loop_seconds() { # d3hsp -> seconds of the time loop
+  awk '$1 == "total" { s = $2 } END { print s }' "$1"
+}
+
+bench() { # name deck cycles
+  local name=$1 deck=$2 cycles=$3
+  local d="$out/$name"
+  rm -rf "$d"
+  "$bin" run "$deck" --out "$d/p1t1" -q --threads 1 --cycles "$cycles" >/dev/null
+  "$bin" run "$deck" --out "$d/p1t2" -q --threads 2 --cycles "$cycles" >/dev/null
+  mpirun -np 2 --bind-to core "$bin" run "$deck" --out "$d/p2t1" -q --threads 1 \
+    --cycles "$cycles" >/dev/null
+  local t11 t12 t21
+  t11=$(loop_seconds "$d/p1t1/d3hsp")
+  t12=$(loop_seconds "$d/p1t2/d3hsp")
+  t21=$(loop_seconds "$d/p2t1/d3hsp")
+  # Halo per process: ghost nodes, bytes received, peers (= messages received per cycle).
+  local halo
+  halo=$(awk '/^Decomposition over/ { on = 1; next } on && $1 ~ /^[0-9]+$/ {
+      printf "%srank %s: %s ghost nodes, %s B, %s message(s), %s replicated nodes", sep, $1, $4, $9, $6, $3
+      sep = "; " } on && /replicated:/ { on = 0 }' "$d/p2t1/d3hsp")
+  printf "%-28s %7d cycles  1x1 %8.2f s  1x2 %8.2f s (%.2fx)  2x1 %8.2f s (%.2fx)\n" "$name" \
+    "$cycles" "$t11" "$t12" "$(echo "$t11 / $t12" | bc -l)" "$t21" "$(echo "$t11 / $t21" | bc -l)"
+  echo "    halo per cycle at 2 processes: $halo"
+  # The histories must not depend on the process count.
+  for f in $(cd "$d/p1t1" && ls | grep -v "d3hsp\|lock\|glstat$\|d3dump\|runrsf"); do
+    cmp -s "$d/p1t1/$f" "$d/p2t1/$f" || echo "    DIFFERENT: $f"
+  done
+}
+
+echo "processes x threads; wall time of the time loop (d3hsp total), speed-up against 1x1"
+bench "FE Taylor bar (coarse)" decks/taylor_bar/taylor_coarse.k 3000
+bench "FE Taylor bar (medium)" decks/taylor_bar/taylor_medium.k 1000
+bench "SPG Taylor bar (coarse)" decks/taylor_bar/taylor_spg_coarse.k 1000
+bench "FDS h 0.15" decks/fds/fds_h0.15.k 300
