@@ -525,6 +525,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   solver::RunHooks hooks;
   if (writer) {
     hooks.output_due = [&](const solver::State& s) { return outputs->due(s); };
+    hooks.state_due = [&](const solver::State& s) { return outputs->state_due(s); };
     hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
       checked([&] {
         zone_cycles = (s.cycle - start_cycle) * static_cast<long>(s.solids.count());

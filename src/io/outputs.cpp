@@ -122,6 +122,10 @@ bool Outputs::due(const solver::State& s) const {
                      [&](const Schedule& h) { return h.due(s.time); });
 }
 
+bool Outputs::state_due(const solver::State& s) const {
+  return d3plot_ && d3plot_schedule_.due(s.time);
+}
+
 void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bool final,
                     double ns_per_cycle) {
   const Eigen::Matrix3Xd velocity = 0.5 * (previous + s.nodes.velocity);

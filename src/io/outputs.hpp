@@ -55,6 +55,8 @@ class Outputs {
   [[nodiscard]] OutputsResume resume_point() const;
 
   [[nodiscard]] bool due(const solver::State& state) const;
+  /// Is a d3plot state among what is due (the element fields; histories need only energies)?
+  [[nodiscard]] bool state_due(const solver::State& state) const;
   /// `previous`: v^{n-1/2}; the state holds v^{n+1/2}.
   void write(const solver::State& state, const Eigen::Matrix3Xd& previous, bool final,
              double nanoseconds_per_zone_cycle);

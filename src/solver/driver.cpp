@@ -251,7 +251,8 @@ class Loop {
     const bool at_end = reached_end();
     bool interrupted = hooks_.stop_requested && hooks_.stop_requested();
     bool output_due = hooks_.output_due && hooks_.output_due(s_);
-    if (halo_) agree(interrupted, output_due);
+    state_due_ = output_due && hooks_.state_due && hooks_.state_due(s_);
+    if (halo_) agree(interrupted, output_due, state_due_);
     dump_if_due(at_end, interrupted);
     const StepTimes t = next_step(at_end || interrupted);
     const bool stop = at_end || interrupted || result_.reason == StopReason::step_collapse;
@@ -302,10 +303,12 @@ class Loop {
 
   // Every process stops and writes when any one is asked to (a signal reaches the processes
   // of an mpirun at different cycles); process 0 alone knows when an output is due.
-  void agree(bool& interrupted, bool& output_due) {
-    const unsigned flags = comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U));
+  void agree(bool& interrupted, bool& output_due, bool& state_due) {
+    const unsigned flags =
+        comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U) | (state_due ? 4U : 0U));
     interrupted = (flags & 1U) != 0;
     output_due = (flags & 2U) != 0;
+    state_due = (flags & 4U) != 0;
   }
 
   // The lowest node with a non-finite velocity on any process.
@@ -369,7 +372,8 @@ class Loop {
   }
 
   void write_state(Eigen::Matrix3Xd& previous, bool final) {
-    if (halo_) halo_->gather_for_output(s_, previous);
+    // The last write of a run completes every output, d3plot included.
+    if (halo_) halo_->gather_for_output(s_, previous, final || state_due_);
     if (hooks_.write) hooks_.write(s_, previous, final);
     phases_.charge(PhaseTimes::output);
   }
@@ -402,6 +406,7 @@ class Loop {
   std::optional<parallel::Halo> halo_;  ///< over several processes only
   long elements_ = 0, particles_ = 0;
   ForceReport pass_;
+  bool state_due_ = false;  ///< the output of this cycle includes a d3plot state
   double earlier_wall_ = 0.0, earlier_core_ = 0.0;
   long first_cycle_ = 0;
   double first_step_ = 0.0, min_step_ = 0.0;

@@ -75,6 +75,9 @@ struct ResumePoint {
 struct RunHooks {
   /// Asked at t^n before the velocities advance: is an output state due now?
   std::function<bool(const State&)> output_due;
+  /// Asked with output_due: is a d3plot state among it? Over several processes only the fields
+  /// the due outputs read are gathered to process 0 (the element fields for a state).
+  std::function<bool(const State&)> state_due;
   /// Writes the state at t^n. The state holds v^{n+1/2}; `previous` holds v^{n-1/2} (energies
   /// use both, see solver/energy.hpp). `final` is set for the last state of the run (normal end,
   /// interruption or error stop).

@@ -22,14 +22,17 @@ void node_fields(State& s, Eigen::Matrix3Xd& previous, Index n, Visit&& visit) {
   visit(previous.col(n).data(), 3);
 }
 
-// The same for a hexahedron: its element values and those of its integration points.
+// The same for a hexahedron: what the histories read (energy.cpp), and with `states` its other
+// values and those of its integration points.
 template <class Visit>
-void element_fields(State& s, Index e, Visit&& visit) {
+void element_fields(State& s, Index e, bool states, Visit&& visit) {
   Solids& so = s.solids;
   const auto i = static_cast<std::size_t>(e);
+  for (std::vector<double>* v : {&so.internal_energy, &so.hourglass_energy, &so.added_mass})
+    visit(&(*v)[i], 1);
+  if (!states) return;
   for (std::vector<double>* v :
-       {&so.volume, &so.pressure, &so.eos_energy, &so.temperature, &so.internal_energy,
-        &so.hourglass_energy, &so.viscosity, &so.time_step, &so.added_mass})
+       {&so.volume, &so.pressure, &so.eos_energy, &so.temperature, &so.viscosity, &so.time_step})
     visit(&(*v)[i], 1);
   visit(&so.hourglass_force[12 * i], 12);
   visit(&so.corner_force[24 * i], 24);
@@ -140,7 +143,7 @@ void Halo::exchange_motion(State& s) {
   }
 }
 
-void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous) const {
+void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) const {
   // Packing and unpacking walk the same lists in the same order.
   auto walk = [&](const OutputShare& share, auto&& visit) {
     for (const Index n : share.nodes)
@@ -150,7 +153,7 @@ void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous) const {
       double eroded = s.solids.eroded[static_cast<std::size_t>(e)];
       visit(&eroded, 1);
       s.solids.eroded[static_cast<std::size_t>(e)] = static_cast<std::uint8_t>(eroded);
-      element_fields(s, e, visit);
+      element_fields(s, e, states, visit);
     }
     for (const Index k : share.constraints)
       visit(s.constraints.reaction.col(k).data(), 3);

@@ -47,8 +47,10 @@ class Halo {
   /// x and v of the ghost nodes from the processes that own them.
   void exchange_motion(State& s);
   /// The owned values of nodes, hexahedra and nodal conditions to process 0, with the velocity
-  /// before the cycle's update (`previous`), so process 0 holds the whole state to write.
-  void gather_for_output(State& s, Eigen::Matrix3Xd& previous) const;
+  /// before the cycle's update (`previous`), so process 0 holds what the outputs read: for the
+  /// histories the nodes, the conditions and the elements' energies, added mass and erosion;
+  /// with `states` (a d3plot state) every element value and integration point too.
+  void gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) const;
 
   [[nodiscard]] const HaloSize& size() const { return size_; }
   /// Bytes one exchange moves into this process.
