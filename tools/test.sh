@@ -2,7 +2,8 @@
 # Sets up a fresh Debian machine, builds (Release), checks formatting, runs the whole test suite
 # and the elastic-wave family of the quick study (tools/study.py end to end, ~25 s, then its table
 # again from the runs' records alone), then builds the unit tests with AddressSanitizer +
-# UndefinedBehaviorSanitizer (optimised, -O2 -g, so the solver tests stay CI-length) and runs them.
+# UndefinedBehaviorSanitizer (optimised, -O2 -g, so the solver tests stay CI-length) and runs them
+# (without the two long decks over 1-4 processes), and builds and tests once more without MPI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
@@ -30,8 +31,13 @@ cmp build/study_smoke/study.csv build/study_smoke/study_from_runs.csv
 echo "== FDS thread measure on synthetic walls: tools/verify/fds_unwrap.py --check"
 /usr/bin/python3 tools/verify/fds_unwrap.py --check
 
-echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
+echo "== build without MPI (-DMCDYNA_MPI=OFF): one process, the whole suite"
+cmake -S . -B build-nompi -G Ninja -DCMAKE_BUILD_TYPE=Release -DMCDYNA_MPI=OFF >/dev/null
+cmake --build build-nompi -j "$jobs"
+ctest --test-dir build-nompi --output-on-failure -j "$jobs"
+
+echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer; the long MPI decks left out)"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMCDYNA_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir build-asan --output-on-failure -j "$jobs"
+  ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE long
