@@ -4,9 +4,11 @@
 // normal viscous damping; the opposite force goes to the segment's nodes with the weights of the
 // contact point.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
+#include "core/exact_sum.hpp"
 #include "solver/contact/contact.hpp"
 #include "solver/contact/segment_geometry.hpp"
 
@@ -187,29 +189,59 @@ InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
   return r;
 }
 
+namespace {
+
+// What one pass sums over its hits: force and moment on side A (0) and B (1), the mass of the A
+// nodes in contact, the work taken from the structure.
+struct Resultants {
+  std::array<core::ExactSum, 12> force_moment;  // per side: force x y z, moment x y z
+  core::ExactSum mass, work;
+  void add(int side, const Vec3& f, const Vec3& m) {
+    for (int k = 0; k < 3; ++k) {
+      force_moment[static_cast<std::size_t>(6 * side + k)].add(f[k]);
+      force_moment[static_cast<std::size_t>(6 * side + 3 + k)].add(m[k]);
+    }
+  }
+  void store(Interface& c) const {
+    auto v = [&](int first) {
+      return Vec3(force_moment[static_cast<std::size_t>(first)].value(),
+                  force_moment[static_cast<std::size_t>(first + 1)].value(),
+                  force_moment[static_cast<std::size_t>(first + 2)].value());
+    };
+    c.force_a = v(0);
+    c.moment_a = v(3);
+    c.force_b = v(6);
+    c.moment_b = v(9);
+    c.mass_in_contact = mass.value();
+    c.energy -= work.value();
+  }
+};
+
+}  // namespace
+
 void interface_pass(State& s, Interface& c) {
   // What the interface took from the structure (penalty springs and friction), the glstat
   // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
   // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
   // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
+  // The work and the resultants are exact sums (core::ExactSum), whose bits will not depend on
+  // how the slave nodes are split over processes (issue 25; every process computes the whole
+  // interface today).
   const double step = s.step;
+  Resultants sums;
   auto charge = [&](Index node, const Vec3& f) {
-    c.energy -= 0.5 * step * f.dot(s.nodes.velocity.col(node));
+    sums.work.add(0.5 * step * f.dot(s.nodes.velocity.col(node)));
   };
   for (const AppliedForce& a : c.applied)
     charge(a.node, a.force);
   c.applied.clear();
-  c.force_a.setZero();
-  c.force_b.setZero();
-  c.moment_a.setZero();
-  c.moment_b.setZero();
-  c.mass_in_contact = 0.0;
   if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
   if (s.time < c.birth || s.time > c.death) {
     for (Pass& p : c.passes) {
       p.friction.setZero();
       p.side.setZero();
     }
+    sums.store(c);
     return;
   }
   if (sort_due(s, c)) sort_buckets(s, c);
@@ -233,13 +265,10 @@ void interface_pass(State& s, Interface& c) {
       s.nodes.force.col(node) += h.force;
       c.applied.push_back({node, h.force});
       charge(node, h.force);
-      Vec3& on_nodes = p.nodes_on_side_a ? c.force_a : c.force_b;
-      Vec3& on_segments = p.nodes_on_side_a ? c.force_b : c.force_a;
-      Vec3& moment_nodes = p.nodes_on_side_a ? c.moment_a : c.moment_b;
-      Vec3& moment_segments = p.nodes_on_side_a ? c.moment_b : c.moment_a;
-      on_nodes += h.force;
-      moment_nodes += x.cross(h.force);
-      if (p.nodes_on_side_a) c.mass_in_contact += s.nodes.mass[static_cast<std::size_t>(node)];
+      const int side_nodes = p.nodes_on_side_a ? 0 : 1;
+      const int side_segments = 1 - side_nodes;
+      sums.add(side_nodes, h.force, x.cross(h.force));
+      if (p.nodes_on_side_a) sums.mass.add(s.nodes.mass[static_cast<std::size_t>(node)]);
       const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
       for (std::size_t j = 0; j < 4; ++j) {
         if (h.weights[j] == 0.0) continue;
@@ -248,11 +277,11 @@ void interface_pass(State& s, Interface& c) {
         s.nodes.force.col(seg[j]) += f;
         c.applied.push_back({seg[j], f});
         charge(seg[j], f);
-        on_segments += f;
-        moment_segments += xj.cross(f);
+        sums.add(side_segments, f, xj.cross(f));
       }
     }
   }
+  sums.store(c);
 }
 
 }  // namespace mcdyna::solver::contact

@@ -207,8 +207,8 @@ std::string Halo::summary() const {
         v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
   }
   out +=
-      "  replicated: nodes of the blocks every process computes whole (SPG parts, rigid bodies,\n"
-      "  contact); each process moves them itself.\n";
+      "  replicated: nodes of the blocks every process computes whole (SPG parts, contact);\n"
+      "  each process moves them itself.\n";
   return out;
 }
 

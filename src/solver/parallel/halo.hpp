@@ -5,7 +5,7 @@
 ///
 /// Every process holds the whole model; what it computes is set by the decomposition. It moves
 /// the nodes it owns and the replicated ones (the nodes of blocks still computed whole on every
-/// process: SPG parts, rigid bodies, contact), and computes every hexahedron with
+/// process: SPG parts, contact), and computes every hexahedron with
 /// a moved node, so each moved node gathers its force from the same corners in the same order
 /// as one process does: the bits do not depend on the process count. A hexahedron on a border
 /// is computed by each process that moves one of its nodes (redundantly, the ghost elements),

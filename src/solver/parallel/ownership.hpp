@@ -12,7 +12,7 @@ struct Ownership {
   /// The run's processes (one by default).
   core::Communicator comm;
   /// Per node: this process advances it, because it owns it or because the node belongs to a
-  /// block every process computes whole (SPG parts, rigid bodies, contact today).
+  /// block every process computes whole (SPG parts and contact today).
   std::vector<std::uint8_t> moves;
   /// Per hexahedron: this process computes it, because one of its nodes is moved here. An
   /// element on a border is computed by every process that moves one of its nodes.

@@ -1,6 +1,8 @@
 // The rigid bodies as one block of the time loop: each body sums its nodes' forces, advances its
 // velocities under constraints and prescribed motion and sets its nodes' velocities; after the
-// other nodes have moved it advances its centre and orientation and places its nodes.
+// other nodes have moved it advances its centre and orientation and places its nodes. Over
+// several processes every process advances every body (a few numbers each) from the exact sum
+// of its owned nodes' forces over the processes, and places all of the body's nodes.
 #include "solver/block.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
 
@@ -16,11 +18,6 @@ class RigidBodiesBlock final : public Block {
     return -1;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    for (const RigidBody& b : s.rigid_bodies)
-      for (const Index n : b.nodes)
-        nodes[static_cast<std::size_t>(n)] = 1;
-  }
 };
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace mcdyna::solver {
 
@@ -73,17 +75,32 @@ Mat3 rotation_increment(const Vec3& omega, double dt) {
   return Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix();
 }
 
+// The resultant force and moment (about the centre) of the forces on a body's nodes, as exact
+// sums (core::ExactSum): each node on the process that owns it, then over the processes, so
+// the bits do not depend on their number (issue 25). Nodes without force are skipped.
+std::pair<Vec3, Vec3> node_resultants(const State& state, const RigidBody& b) {
+  const Nodes& nd = state.nodes;
+  const parallel::Ownership& own = state.ownership;
+  std::vector<core::ExactSum> sums(6);
+  for (const Index n : b.nodes) {
+    const Vec3 f = nd.force.col(n);
+    if (!own.owns_node(n) || f.isZero(0.0)) continue;
+    const Vec3 m = (Vec3(nd.position.col(n)) - b.center).cross(f);
+    for (int k = 0; k < 3; ++k) {
+      sums[static_cast<std::size_t>(k)].add(f[k]);
+      sums[static_cast<std::size_t>(3 + k)].add(m[k]);
+    }
+  }
+  const std::vector<double> total = own.comm.sum(sums);
+  return {Vec3(total[0], total[1], total[2]), Vec3(total[3], total[4], total[5])};
+}
+
 }  // namespace
 
 void advance_rigid_bodies(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
   for (RigidBody& b : state.rigid_bodies) {
-    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
-    for (const Index n : b.nodes) {
-      const Vec3 f = nd.force.col(n);
-      force += f;
-      moment += (Vec3(nd.position.col(n)) - b.center).cross(f);
-    }
+    auto [force, moment] = node_resultants(state, b);
     force += b.body_force;  // at the centre of mass: no moment
     b.force = force;
     b.moment = moment;
