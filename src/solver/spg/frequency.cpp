@@ -15,6 +15,7 @@
 // plastic tangent is softer, so the elastic frequency bounds it.
 #include <cmath>
 
+#include "core/bounded_sum.hpp"
 #include "solver/material/constitutive.hpp"
 #include "solver/spg/spg_solver.hpp"
 
@@ -190,25 +191,36 @@ double start_value(Index i, int k) {
   return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
 }
 
-double norm_in_order(const Eigen::Matrix3Xd& x) {
-  double sum = 0.0;  // serial: the same sum for any thread count
-  for (Eigen::Index i = 0; i < x.cols(); ++i)
-    sum += x.col(i).squaredNorm();
-  return std::sqrt(sum);
+// The power iteration's norms are order-free sums (core::BoundedSum, after a pass for the
+// largest term): the same bits for any thread count and any split of the particles over
+// processes (issue 25), where a serial sum would need every term on one process.
+template <class Term>
+double order_free_sum(Eigen::Index count, Term&& term) {
+  double bound = 0.0;
+  for (Eigen::Index i = 0; i < count; ++i)
+    bound = std::max(bound, std::abs(term(i)));
+  core::BoundedSum sum(bound);
+  for (Eigen::Index i = 0; i < count; ++i)
+    if (const double t = term(i); t != 0.0) sum.add(t);
+  return sum.value();
 }
 
-// sum_i w_i x_i . y_i in order.
-double weighted_dot(const std::vector<double>& w, const Eigen::Matrix3Xd& x,
-                    const Eigen::Matrix3Xd& y) {
-  double sum = 0.0;
-  for (Eigen::Index i = 0; i < x.cols(); ++i)
-    sum += w[static_cast<std::size_t>(i)] * x.col(i).dot(y.col(i));
-  return sum;
+double order_free_norm(const Eigen::Matrix3Xd& x) {
+  return std::sqrt(
+      order_free_sum(x.cols(), [&](Eigen::Index i) { return x.col(i).squaredNorm(); }));
+}
+
+// sum_i w_i x_i . y_i.
+double order_free_weighted_dot(const std::vector<double>& w, const Eigen::Matrix3Xd& x,
+                               const Eigen::Matrix3Xd& y) {
+  return order_free_sum(x.cols(), [&](Eigen::Index i) {
+    return w[static_cast<std::size_t>(i)] * x.col(i).dot(y.col(i));
+  });
 }
 
 // |x| in the product of `w` (empty: the Euclidean norm).
 double length_in(const std::vector<double>& w, const Eigen::Matrix3Xd& x) {
-  return w.empty() ? norm_in_order(x) : std::sqrt(weighted_dot(w, x, x));
+  return w.empty() ? order_free_norm(x) : std::sqrt(order_free_weighted_dot(w, x, x));
 }
 
 // The inner product in which A is self-adjoint, where it is known: without MC smoothing every
@@ -254,7 +266,7 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
   Eigen::Matrix3Xd& x = d.scratch.vector;
   Eigen::Matrix3Xd& ax = d.scratch.product;
   ax.resize(3, n);
-  if (mode && mode->cols() == n && norm_in_order(*mode) > 0.0)
+  if (mode && mode->cols() == n && order_free_norm(*mode) > 0.0)
     x = *mode;
   else
     x = frequency_start(n);
@@ -284,7 +296,7 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
     }
     // |x| = 1: the Rayleigh quotient where the product is known (A x holds the forces' side,
     // -M^-1 K x), else |A x|.
-    const double lambda = w.empty() ? norm_in_order(ax) : -weighted_dot(w, x, ax);
+    const double lambda = w.empty() ? order_free_norm(ax) : -order_free_weighted_dot(w, x, ax);
     r.omega_squared = lambda;
     r.iterations = it + 1;
     r.change = previous > 0.0 ? std::abs(lambda - previous) / lambda : 1.0;
