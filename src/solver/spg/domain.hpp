@@ -192,9 +192,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 /// Buffers the per-cycle passes reuse instead of allocating them at every call. Not dumped:
 /// every call fills what it reads.
 struct Workspace {
-  Eigen::Matrix3Xd acceleration;      ///< advance_velocities: a_J of the smoothed particles
-  std::vector<double> mass_factor;    ///< particle_pass with DT2MS: m / (m - added) per particle
-  std::vector<double> damping_share;  ///< advance_velocities with PDAMP: |PDAMP| / n per row
+  Eigen::Matrix3Xd acceleration;        ///< advance_velocities: a_J of the smoothed particles
+  std::vector<double> mass_factor;      ///< particle_pass with DT2MS: m / (m - added) per particle
+  std::vector<double> damping_share;    ///< advance_velocities with PDAMP: |PDAMP| / n per row
+  std::vector<double> damping_removed;  ///< the same: kinetic energy PDAMP took per particle
   Eigen::Matrix<double, 9, Eigen::Dynamic> stress;  ///< frequency.cpp: linearised w sigma F^-T
   Eigen::Matrix3Xd force, hat, vector, product;     ///< frequency.cpp: f, u-hat, x and A x
 };

@@ -91,10 +91,15 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
   // PDAMP impulses of I's pairs at both ends; a pinned particle takes its share of the smoothed
   // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
-  double removed = 0.0;  // PDAMP: kinetic energy of the unsmoothed velocities taken out
-  if (damping) damping_shares(d);
+  // PDAMP: the kinetic energy of the unsmoothed velocities taken out, per particle, summed in
+  // particle order after the loop (an OpenMP reduction would round differently for each
+  // thread count).
+  if (damping) {
+    damping_shares(d);
+    d.scratch.damping_removed.assign(static_cast<std::size_t>(n), 0.0);
+  }
   if (smooths_velocity(mode)) {
-#pragma omp parallel for schedule(static, 256) reduction(+ : removed) if (n > 512)
+#pragma omp parallel for schedule(static, 256) if (n > 512)
     for (Index i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
       const bool free_i = d.kernel.pinned[ii] == 0;
@@ -128,14 +133,17 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       }
       const Vec3 undamped = d.fields.unsmoothed.col(i);
       d.fields.unsmoothed.col(i) += total / d.particles.mass[ii];
-      removed += 0.5 * d.particles.mass[ii] *
-                 (undamped.squaredNorm() - d.fields.unsmoothed.col(i).squaredNorm());
+      d.scratch.damping_removed[ii] =
+          0.5 * d.particles.mass[ii] *
+          (undamped.squaredNorm() - d.fields.unsmoothed.col(i).squaredNorm());
     }
   } else {
     for (Index i = 0; i < n; ++i)  // plain nodal integration: every particle is pinned
       d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
   }
-  d.fields.damping_energy += removed;
+  if (damping)
+    for (const double removed : d.scratch.damping_removed)
+      d.fields.damping_energy += removed;
 
   // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7),
   // from u-hat only (which holds the pinned particles' node velocities).
