@@ -19,9 +19,11 @@
 
 #include "cli/launcher.hpp"
 #include "cli/load.hpp"
+#include "cli/processes.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "cli/restart_dump.hpp"
+#include "cli/run_timing.hpp"
 #include "cli/step_log.hpp"
 #include "cli/wait_policy.hpp"
 #include "core/communicator.hpp"
@@ -280,38 +282,6 @@ std::string prepare_output_directory(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir, ec))
     return fmt::format("the output directory {} is not a directory", dir.string());
   return {};
-}
-
-// Over several processes a failure one of them meets alone before the time loop: the others
-// would wait for it in the loop's first exchange, so it stops them all (MPI_Abort).
-int stop_all(const core::Communicator& comm, int code, std::ostream& err) {
-  err.flush();
-  if (comm.size() > 1) comm.abort(code);
-  return code;
-}
-
-// Each process of a run over several writes and reads its own restart dump: d3dump01.0000,
-// d3dump01.0001, ... as LS-DYNA MPP names them; one process keeps the plain name.
-std::filesystem::path process_file(const std::filesystem::path& path,
-                                   const core::Communicator& comm) {
-  if (comm.size() == 1) return path;
-  return std::filesystem::path(path.string() + fmt::format(".{:04d}", comm.rank()));
-}
-
-std::string processes_text(const core::Communicator& comm) {
-  return comm.size() > 1 ? fmt::format(" on each of {} processes", comm.size()) : std::string();
-}
-
-// Every process needs a share of the deformable elements and particles.
-std::string process_count_problem(const solver::State& s, const core::Communicator& comm) {
-  long entities = s.solids.count();
-  for (const solver::spg::Domain& d : s.spg)
-    entities += d.count();
-  if (comm.size() <= std::max(entities, 1L)) return {};
-  return fmt::format(
-      "{} processes for {} deformable element(s) and SPG particle(s): each process needs at "
-      "least one; run with mpirun -np {} or fewer",
-      comm.size(), entities, std::max(entities, 1L));
 }
 
 // One process's run of the deck (all of it, or its share over several processes).
@@ -588,35 +558,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
              state->time, state->cycle);
   if (!output_failure.empty()) fmt::print(summary, "  {}\n", output_failure);
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
-  fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s){})\n", omp_get_max_threads(),
-             comm.size() > 1 ? fmt::format(" on each of {} processes; process 0", comm.size())
-                             : std::string());
-  for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
-    const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
-    // SPG rows only for decks with SPG parts, the contact row only for decks with contact.
-    if (p == solver::PhaseTimes::contact) {
-      if (state->contacts.empty()) continue;
-    } else if (p == solver::PhaseTimes::exchange) {
-      if (comm.size() == 1) continue;
-    } else if (p >= solver::PhaseTimes::spg_neighbours && state->spg.empty()) {
-      continue;
-    }
-    fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %\n", solver::PhaseTimes::name(p), sec,
-               result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
-  }
-  fmt::print(summary, "  {:<22}{:10.3f} s\n", "total", result.wall_seconds);
-  // A restarted run may have run its parts on different thread counts: its cost in core time.
-  if (dump)
-    fmt::print(summary, "  {:<22}{:10.3f} s (wall x threads over the run's parts)\n", "core time",
-               result.core_seconds);
-  if (result.element_cycles > 0) {
-    fmt::print(summary, "  {:.3f} million element-cycles/s\n",
-               1e-6 * result.element_cycles / result.wall_seconds);
-  }
-  if (result.particle_cycles > 0) {
-    fmt::print(summary, "  {:.3f} million particle-steps/s\n",
-               1e-6 * result.particle_cycles / result.wall_seconds);
-  }
+  print_timing(summary, result, *state, comm.size(), dump.has_value());
   print_spg_summary(summary, *state);
   print_angular_budgets(summary, *state, budgets);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())

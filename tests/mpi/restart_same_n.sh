@@ -5,6 +5,7 @@
 #
 #   tests/mpi/restart_same_n.sh MCDYNA MPIEXEC N OUT_DIR DECK DUMP_CYCLES STOP_CYCLES
 set -u
+source "$(dirname "$0")/compare_outputs.sh"
 bin=$1 mpiexec=$2 n=$3 out=$4 deck=$5 every=$6 stop=$7
 rm -rf "$out"
 mkdir -p "$out"
@@ -31,19 +32,10 @@ dumps=$(ls "$out/parts" | grep -c "^d3dump01\.")
   cat "$out/second.log"
   exit 1
 }
-differ=""
-files=0
-for f in $(cd "$out/through" && ls | grep -v "d3hsp\|lock\|runrsf\|d3dump"); do
-  files=$((files + 1))
-  if [ "$f" = glstat ]; then
-    cmp -s <(grep -v "time per zone" "$out/through/$f") <(grep -v "time per zone" "$out/parts/$f") ||
-      differ="$differ $f"
-  else
-    cmp -s "$out/through/$f" "$out/parts/$f" || differ="$differ $f"
-  fi
-done
+differing_outputs "$out/through" "$out/parts"
+differ=$DIFFERING
 if [ -n "$differ" ]; then
   echo "$n processes, restarted from $n dumps: DIFFERENT:$differ"
   exit 1
 fi
-echo "$n processes, restarted from $n dumps: $files files byte-identical to the run that went through"
+echo "$n processes, restarted from $n dumps: $OUTPUT_FILES files byte-identical to the run that went through"

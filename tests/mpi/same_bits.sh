@@ -7,6 +7,7 @@
 #
 # Prints one line per process count and exits 1 when any file differs or a run fails.
 set -u
+source "$(dirname "$0")/compare_outputs.sh"
 bin=$1 mpiexec=$2 out=$3 deck=$4
 shift 4
 rm -rf "$out"
@@ -27,21 +28,10 @@ for n in 2 3 4; do
     status=1
     continue
   }
-  differ=""
-  files=0
-  for f in $(cd "$out/np1" && ls | grep -v "d3hsp\|lock\|runrsf\|d3dump"); do
-    files=$((files + 1))
-    if [ "$f" = glstat ]; then
-      cmp -s <(grep -v "time per zone" "$out/np1/$f") <(grep -v "time per zone" "$out/np$n/$f") ||
-        differ="$differ $f"
-    else
-      cmp -s "$out/np1/$f" "$out/np$n/$f" || differ="$differ $f"
-    fi
-  done
-  extra=$(cd "$out/np$n" && ls | grep -v "d3hsp\|lock\|runrsf\|d3dump" | wc -l)
-  [ "$extra" = "$files" ] || differ="$differ (file count $extra, not $files)"
+  differing_outputs "$out/np1" "$out/np$n"
+  differ=$DIFFERING
   if [ -z "$differ" ]; then
-    echo "$n processes: $files files byte-identical to 1 process"
+    echo "$n processes: $OUTPUT_FILES files byte-identical to 1 process"
   else
     echo "$n processes: DIFFERENT:$differ"
     status=1

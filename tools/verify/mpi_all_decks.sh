@@ -7,6 +7,7 @@
 #   [MCDYNA=binary] tools/verify/mpi_all_decks.sh [OUT_DIR] [CYCLES]   (default build/mcdyna, with MPI)
 set -u
 cd "$(dirname "$0")/../.."
+source tests/mpi/compare_outputs.sh
 out=$(realpath -m "${1:-${TMPDIR:-/tmp}/mcdyna_mpi_all}")
 cycles=${2:-200}
 bin=$(realpath "${MCDYNA:-build/mcdyna}")  # MCDYNA: a copy, safe from rebuilds
@@ -35,15 +36,8 @@ while IFS= read -r deck; do
       status=1
       continue
     fi
-    differ=""
-    for f in $(cd "$d/np1" && ls | grep -v "d3hsp\|lock\|runrsf\|d3dump"); do
-      if [ "$f" = glstat ]; then
-        cmp -s <(grep -v "time per zone" "$d/np1/$f") <(grep -v "time per zone" "$d/np$n/$f") ||
-          differ="$differ $f"
-      else
-        cmp -s "$d/np1/$f" "$d/np$n/$f" || differ="$differ $f"
-      fi
-    done
+    differing_outputs "$d/np1" "$d/np$n"
+    differ=$DIFFERING
     if [ -z "$differ" ]; then line="$line $n: same;"; else
       line="$line $n: DIFFERENT$differ;"
       status=1

@@ -1,0 +1,42 @@
+#include "cli/processes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <ostream>
+
+namespace mcdyna::cli {
+
+// Over several processes a failure one of them meets alone before the time loop: the others
+// would wait for it in the loop's first exchange, so it stops them all (MPI_Abort).
+int stop_all(const core::Communicator& comm, int code, std::ostream& err) {
+  err.flush();
+  if (comm.size() > 1) comm.abort(code);
+  return code;
+}
+
+// Each process of a run over several writes and reads its own restart dump: d3dump01.0000,
+// d3dump01.0001, ... as LS-DYNA MPP names them; one process keeps the plain name.
+std::filesystem::path process_file(const std::filesystem::path& path,
+                                   const core::Communicator& comm) {
+  if (comm.size() == 1) return path;
+  return std::filesystem::path(path.string() + fmt::format(".{:04d}", comm.rank()));
+}
+
+std::string processes_text(const core::Communicator& comm) {
+  return comm.size() > 1 ? fmt::format(" on each of {} processes", comm.size()) : std::string();
+}
+
+// Every process needs a share of the deformable elements and particles.
+std::string process_count_problem(const solver::State& s, const core::Communicator& comm) {
+  long entities = s.solids.count();
+  for (const solver::spg::Domain& d : s.spg)
+    entities += d.count();
+  if (comm.size() <= std::max(entities, 1L)) return {};
+  return fmt::format(
+      "{} processes for {} deformable element(s) and SPG particle(s): each process needs at "
+      "least one; run with mpirun -np {} or fewer",
+      comm.size(), entities, std::max(entities, 1L));
+}
+
+}  // namespace mcdyna::cli

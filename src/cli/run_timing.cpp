@@ -1,0 +1,44 @@
+#include "cli/run_timing.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <omp.h>
+
+#include <string>
+
+namespace mcdyna::cli {
+
+void print_timing(std::ostream& summary, const solver::RunResult& result,
+                  const solver::State& state, int processes, bool restarted) {
+  fmt::print(summary, "\nTiming per phase (wall clock, {} thread(s){})\n", omp_get_max_threads(),
+             processes > 1 ? fmt::format(" on each of {} processes; process 0", processes)
+                           : std::string());
+  for (int p = 0; p < solver::PhaseTimes::kCount; ++p) {
+    const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
+    // SPG rows only for decks with SPG parts, the contact row only for decks with contact.
+    if (p == solver::PhaseTimes::contact) {
+      if (state.contacts.empty()) continue;
+    } else if (p == solver::PhaseTimes::exchange) {
+      if (processes == 1) continue;
+    } else if (p >= solver::PhaseTimes::spg_neighbours && state.spg.empty()) {
+      continue;
+    }
+    fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %\n", solver::PhaseTimes::name(p), sec,
+               result.wall_seconds > 0 ? 100.0 * sec / result.wall_seconds : 0.0);
+  }
+  fmt::print(summary, "  {:<22}{:10.3f} s\n", "total", result.wall_seconds);
+  // A restarted run may have run its parts on different thread counts: its cost in core time.
+  if (restarted)
+    fmt::print(summary, "  {:<22}{:10.3f} s (wall x threads over the run's parts)\n", "core time",
+               result.core_seconds);
+  if (result.element_cycles > 0) {
+    fmt::print(summary, "  {:.3f} million element-cycles/s\n",
+               1e-6 * result.element_cycles / result.wall_seconds);
+  }
+  if (result.particle_cycles > 0) {
+    fmt::print(summary, "  {:.3f} million particle-steps/s\n",
+               1e-6 * result.particle_cycles / result.wall_seconds);
+  }
+}
+
+}  // namespace mcdyna::cli
