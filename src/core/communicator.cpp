@@ -123,6 +123,26 @@ std::vector<double> Communicator::all_gather(const std::vector<double>& mine) co
   return all;
 }
 
+std::vector<double> Communicator::all_gather_varying(const std::vector<double>& mine) const {
+#ifdef MCDYNA_WITH_MPI
+  if (mpi_ && size_ > 1) {
+    const int count = static_cast<int>(mine.size());
+    std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size(), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    int total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+      offsets[r] = total;
+      total += counts[r];
+    }
+    std::vector<double> all(static_cast<std::size_t>(total));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                   MPI_DOUBLE, MPI_COMM_WORLD);
+    return all;
+  }
+#endif
+  return mine;
+}
+
 void Communicator::broadcast(std::string& text, int root) const {
 #ifdef MCDYNA_WITH_MPI
   if (mpi_ && size_ > 1) {

@@ -41,6 +41,8 @@ class Communicator {
   [[nodiscard]] unsigned bitwise_or(unsigned flags) const;
   /// Every process's `mine` (all of the same length), in rank order.
   [[nodiscard]] std::vector<double> all_gather(const std::vector<double>& mine) const;
+  /// Every process's `mine` (lengths may differ) on every process, concatenated in rank order.
+  [[nodiscard]] std::vector<double> all_gather_varying(const std::vector<double>& mine) const;
   /// `text` of process `root` on every process.
   void broadcast(std::string& text, int root) const;
   /// Personalised all-to-all: to[r] goes to process r; returns what each process sent here.

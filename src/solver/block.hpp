@@ -62,6 +62,14 @@ class Block {
   /// marks the nodes it reads or moves, which every process then moves itself. Blocks split
   /// over the processes (hexahedra) and node-wise conditions mark nothing.
   virtual void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& /*nodes*/) const {}
+  /// Over several processes, after the decomposition and initialise (or a restart): what a
+  /// block split over the processes needs beyond the node owners (an SPG part's share of
+  /// particles, spg/distribution.hpp). Collective.
+  virtual void distribute(State& /*s*/) {}
+  /// Over several processes, before an output or a restart dump: every process receives the
+  /// values of the block's entities from their owners, so process 0 writes whole files and
+  /// every dump holds the whole block. Collective.
+  virtual void synchronise(State& /*s*/) {}
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}

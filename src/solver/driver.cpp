@@ -234,8 +234,20 @@ class Loop {
       earlier_core_ = resume->core_seconds;
     } else {
       phases_.each([&](Block& b) { b.initialise(s_); });
+    }
+    if (halo_) {
+      for (const std::unique_ptr<Block>& b : blocks_)
+        b->distribute(s_);
+      follow_ownership(true);
+      const std::string summary = halo_->summary();
+      if (hooks_.decomposed && comm_.rank() == 0) hooks_.decomposed(summary);
+    }
+    if (!resume) {
       pass_ = compute_forces(s_, phases_);
-      if (halo_) agree_on_forces(pass_, comm_);
+      if (halo_) {
+        follow_ownership(false);
+        agree_on_forces(pass_, comm_);
+      }
     }
     s_.critical_step = pass_.critical_step;
     first_cycle_ = s_.cycle;
@@ -266,6 +278,7 @@ class Loop {
     if (bad >= 0 || stop) return close(at_end, interrupted);
     pass_ = advance_positions(s_, phases_, t, halo_ ? &*halo_ : nullptr);
     if (halo_) {
+      follow_ownership(false);
       agree_on_forces(pass_, comm_);
       phases_.charge(PhaseTimes::exchange);
     }
@@ -297,8 +310,21 @@ class Loop {
     for (const std::unique_ptr<Block>& b : blocks_)
       b->mark_replicated(s_, replicated);
     halo_.emplace(s_, parallel::decompose(s_, comm_.size()), std::move(replicated), comm_);
-    const std::string summary = halo_->summary();
-    if (hooks_.decomposed && comm_.rank() == 0) hooks_.decomposed(summary);
+  }
+
+  // The halo again when the owners or the SPG rows changed (a renewal re-owns particles,
+  // spg/distribution.hpp), or `always`.
+  void follow_ownership(bool always) {
+    if (!always && halo_generation_ == s_.ownership.generation) return;
+    halo_->rebuild(s_);
+    halo_generation_ = s_.ownership.generation;
+  }
+
+  // Every process receives the owned values of the blocks that split their entities (process 0
+  // writes the outputs, each dump holds the whole state).
+  void synchronise_blocks() {
+    for (const std::unique_ptr<Block>& b : blocks_)
+      b->synchronise(s_);
   }
 
   // Every process stops and writes when any one is asked to (a signal reaches the processes
@@ -334,6 +360,7 @@ class Loop {
         !hooks_.dump_due(s_, interrupted))
       return;
     phases_.charge(PhaseTimes::other);
+    if (halo_) synchronise_blocks();
     const double seconds = elapsed();
     const ResumePoint point{pass_.critical_step,
                             pass_.controlling_element,
@@ -373,7 +400,10 @@ class Loop {
 
   void write_state(Eigen::Matrix3Xd& previous, bool final) {
     // The last write of a run completes every output, d3plot included.
-    if (halo_) halo_->gather_for_output(s_, previous, final || state_due_);
+    if (halo_) {
+      synchronise_blocks();
+      halo_->gather_for_output(s_, previous, final || state_due_);
+    }
     if (hooks_.write) hooks_.write(s_, previous, final);
     phases_.charge(PhaseTimes::output);
   }
@@ -404,6 +434,7 @@ class Loop {
   int threads_;
   core::Communicator comm_;
   std::optional<parallel::Halo> halo_;  ///< over several processes only
+  long halo_generation_ = -1;           ///< s.ownership.generation the halo was built for
   long elements_ = 0, particles_ = 0;
   ForceReport pass_;
   bool state_due_ = false;  ///< the output of this cycle includes a d3plot state

@@ -8,12 +8,10 @@
 #include <mpi.h>
 
 #include <cstdio>
-#include <sstream>
 #include <vector>
 
-#include "cli/load.hpp"
+#include "compiled_deck.hpp"
 #include "core/communicator.hpp"
-#include "solver/compile.hpp"
 #include "solver/driver.hpp"
 
 int main(int argc, char** argv) {
@@ -23,14 +21,7 @@ int main(int argc, char** argv) {
   }
   MPI_Init(&argc, &argv);
   const auto world = mcdyna::core::Communicator::world();
-  std::ostringstream report;
-  mcdyna::cli::LoadedDeck d = mcdyna::cli::load_deck(argv[1], report);
-  mcdyna::core::Diagnostics diags;
-  std::unique_ptr<mcdyna::solver::State> s = mcdyna::solver::compile(d.built.model, diags);
-  if (d.diags.has_errors() || !s) {
-    std::fprintf(stderr, "the deck does not compile\n");
-    MPI_Abort(MPI_COMM_WORLD, 2);
-  }
+  std::unique_ptr<mcdyna::solver::State> s = compiled_deck(argv[1]);
   const mcdyna::solver::RunResult result = mcdyna::solver::run(*s, {});
   const auto n = static_cast<int>(s->solids.count());
   // Per element: how many processes compute it, and how many of them found it eroded.

@@ -1,5 +1,8 @@
 // A contact interface as a block of the time loop: its penalty, friction and damping forces at
 // t^n, after every internal force (contact.hpp).
+#include <algorithm>
+#include <chrono>
+
 #include "solver/block.hpp"
 #include "solver/contact/contact.hpp"
 
@@ -12,11 +15,49 @@ class ContactBlock final : public Block {
   explicit ContactBlock(std::size_t interface) : interface_(interface) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
   void forces(State& s, ForceReport& /*report*/) override {
+    if (s.ownership.comm.size() > 1) {
+      const auto start = std::chrono::steady_clock::now();
+      share_motion(s);
+      exchange_seconds_ += spg::seconds_since(start);
+    }
     contact::interface_pass(s, s.contacts[interface_]);
   }
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+  // The all-gather of the nodes' motion (and the wait for the slowest process) is exchange.
+  void split_times(const State& /*s*/, PhaseTimes& phases) const override {
+    phases.seconds[PhaseTimes::exchange] += exchange_seconds_;
+    phases.seconds[PhaseTimes::contact] -= exchange_seconds_;
+  }
+
+ private:
+  // Over several processes every process computes the whole interface, from the x and v of
+  // every node in it, which their owners send to all (one all-gather per cycle). Rigid-body
+  // nodes are placed alike by every process and are not sent. What each contact force does to
+  // a node counts on the node's owner only (the others' copies of it are not used).
+  void share_motion(State& s) {
+    if (generation_ != s.ownership.generation) list_nodes(s);
+    const int me = s.ownership.comm.rank();
+    std::vector<double> mine;
+    for (const Index n : nodes_)
+      if (s.ownership.owner[static_cast<std::size_t>(n)] == me) {
+        mine.insert(mine.end(), s.nodes.position.col(n).data(), s.nodes.position.col(n).data() + 3);
+        mine.insert(mine.end(), s.nodes.velocity.col(n).data(), s.nodes.velocity.col(n).data() + 3);
+      }
+    const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
+    const double* in = all.data();
+    for (int r = 0; r < s.ownership.comm.size(); ++r)
+      for (const Index n : nodes_) {
+        if (s.ownership.owner[static_cast<std::size_t>(n)] != r) continue;
+        std::copy(in, in + 3, s.nodes.position.col(n).data());
+        std::copy(in + 3, in + 6, s.nodes.velocity.col(n).data());
+        in += 6;
+      }
+  }
+
+  // The interface's deformable nodes, ascending.
+  void list_nodes(const State& s) {
     const contact::Interface& c = s.contacts[interface_];
-    auto mark = [&](Index n) { nodes[static_cast<std::size_t>(n)] = 1; };
+    std::vector<std::uint8_t> in(static_cast<std::size_t>(s.nodes.count()), 0);
+    auto mark = [&](Index n) { in[static_cast<std::size_t>(n)] = 1; };
     for (const Index n : c.tracked)
       mark(n);
     for (const contact::Pass& p : c.passes) {
@@ -26,10 +67,17 @@ class ContactBlock final : public Block {
         for (const Index n : segment)
           mark(n);
     }
+    nodes_.clear();
+    for (Index n = 0; n < s.nodes.count(); ++n)
+      if (in[static_cast<std::size_t>(n)] && s.nodes.rigid_body[static_cast<std::size_t>(n)] < 0)
+        nodes_.push_back(n);
+    generation_ = s.ownership.generation;
   }
 
- private:
   std::size_t interface_;
+  std::vector<Index> nodes_;
+  long generation_ = -1;
+  double exchange_seconds_ = 0.0;
 };
 
 }  // namespace

@@ -217,6 +217,58 @@ struct Resultants {
   }
 };
 
+// A hit as doubles, for the processes to share them (one list packs and unpacks).
+constexpr int kHitValues = 15;
+template <class Visit>
+void hit_values(Hit& h, Visit&& visit) {
+  double segment = h.segment;
+  visit(&segment, 1);
+  h.segment = static_cast<Index>(segment);
+  visit(h.weights.data(), 4);
+  for (Vec3* v : {&h.force, &h.friction, &h.push})
+    visit(v->data(), 3);
+  visit(&h.initial, 1);
+}
+
+// The hits of the pass's nodes near the surface. Over several processes each computes those of
+// the slave nodes it owns and every process receives all of them (one all-gather per pass), so
+// that every process adds them in the same order as one process does; the search and the
+// forces, the costly part, are split.
+std::vector<Hit> pass_hits(const State& s, const Interface& c, const Pass& p) {
+  const auto n = static_cast<Index>(p.near.size());
+  std::vector<Hit> hits(p.near.size());
+  const parallel::Ownership& own = s.ownership;
+  const bool split = own.comm.size() > 1 && !own.owner.empty();
+  const int me = own.comm.rank();
+  auto owner = [&](Index k) {
+    return own.owner[static_cast<std::size_t>(
+        p.nodes[static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)])])];
+  };
+#pragma omp parallel for schedule(static, 64) if (n > 512)
+  for (Index k = 0; k < n; ++k)
+    if (!split || owner(k) == me)
+      hits[static_cast<std::size_t>(k)] =
+          contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
+  if (!split) return hits;
+  std::vector<double> mine;
+  mine.reserve(static_cast<std::size_t>(kHitValues) * hits.size() /
+               static_cast<std::size_t>(own.comm.size()));
+  for (Index k = 0; k < n; ++k)
+    if (owner(k) == me)
+      hit_values(hits[static_cast<std::size_t>(k)],
+                 [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
+  const std::vector<double> all = own.comm.all_gather_varying(mine);
+  const double* in = all.data();
+  for (int r = 0; r < own.comm.size(); ++r)
+    for (Index k = 0; k < n; ++k)
+      if (owner(k) == r)
+        hit_values(hits[static_cast<std::size_t>(k)], [&](double* v, int count) {
+          std::copy(in, in + count, v);
+          in += count;
+        });
+  return hits;
+}
+
 }  // namespace
 
 void interface_pass(State& s, Interface& c) {
@@ -224,9 +276,9 @@ void interface_pass(State& s, Interface& c) {
   // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
   // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
   // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
-  // The work and the resultants are exact sums (core::ExactSum), whose bits will not depend on
-  // how the slave nodes are split over processes (issue 25; every process computes the whole
-  // interface today).
+  // The work and the resultants are exact sums (core::ExactSum). Over several processes the
+  // hits are computed by the slave nodes' owners and shared (pass_hits); every process then
+  // applies all of them, in node order.
   const double step = s.step;
   Resultants sums;
   auto charge = [&](Index node, const Vec3& f) {
@@ -246,12 +298,7 @@ void interface_pass(State& s, Interface& c) {
   }
   if (sort_due(s, c)) sort_buckets(s, c);
   for (Pass& p : c.passes) {
-    const auto n = static_cast<Index>(p.near.size());
-    std::vector<Hit> hits(p.near.size());
-#pragma omp parallel for schedule(static, 64) if (n > 512)
-    for (Index k = 0; k < n; ++k)
-      hits[static_cast<std::size_t>(k)] =
-          contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
+    const std::vector<Hit> hits = pass_hits(s, c, p);
     // Forces added in node order: the same sums for any thread count.
     for (std::size_t k = 0; k < hits.size(); ++k) {
       const Hit& h = hits[k];

@@ -52,21 +52,28 @@ void element_fields(State& s, Index e, bool states, Visit&& visit) {
 
 Halo::Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicated,
            core::Communicator comm)
-    : comm_(comm), output_(static_cast<std::size_t>(comm.size())) {
+    : comm_(comm), replicated_(std::move(replicated)) {
+  s.ownership.comm = comm_;
+  s.ownership.owner = d.owner;
+  rebuild(s);
+}
+
+void Halo::rebuild(State& s) {
   const int me = comm_.rank();
   const Index n_nodes = s.nodes.count();
   const Index n_elements = s.solids.count();
   Ownership& own = s.ownership;
-  own.comm = comm_;
+  size_ = HaloSize{};
+  output_.assign(static_cast<std::size_t>(comm_.size()), OutputShare{});
   own.moves.assign(static_cast<std::size_t>(n_nodes), 0);
   own.owns.assign(static_cast<std::size_t>(n_nodes), 0);
   own.computes.assign(static_cast<std::size_t>(n_elements), 0);
-  auto owner = [&](Index n) { return d.owner[static_cast<std::size_t>(n)]; };
+  auto owner = [&](Index n) { return own.owner[static_cast<std::size_t>(n)]; };
   for (Index n = 0; n < n_nodes; ++n) {
     const auto i = static_cast<std::size_t>(n);
-    own.moves[i] = (owner(n) == me || replicated[i]) ? 1 : 0;
+    own.moves[i] = (owner(n) == me || replicated_[i]) ? 1 : 0;
     own.owns[i] = owner(n) == me ? 1 : 0;
-    if (replicated[i])
+    if (replicated_[i])
       ++size_.replicated_nodes;
     else if (owner(n) == me)
       ++size_.owned_nodes;
@@ -83,64 +90,65 @@ Halo::Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicate
     for (const Index n : corners)
       if (!own.moves_node(n)) ghost[static_cast<std::size_t>(n)] = 1;
   }
-  // Ask each owner for its nodes among the ghosts; what the others ask of this process is what
-  // it sends them.
-  std::vector<std::vector<Index>> wanted(static_cast<std::size_t>(comm_.size()));
-  for (Index n = 0; n < n_nodes; ++n)
-    if (ghost[static_cast<std::size_t>(n)]) wanted[static_cast<std::size_t>(owner(n))].push_back(n);
-  const std::vector<std::vector<Index>> asked = comm_.all_to_all(wanted);
-  for (int r = 0; r < comm_.size(); ++r) {
-    const auto k = static_cast<std::size_t>(r);
-    if (r == me || (wanted[k].empty() && asked[k].empty())) continue;
-    peers_.push_back(r);
-    receive_.push_back(wanted[k]);
-    send_.push_back(asked[k]);
-    receive_buffer_.emplace_back(6 * wanted[k].size());
-    send_buffer_.emplace_back(6 * asked[k].size());
-    size_.ghost_nodes += static_cast<Index>(wanted[k].size());
-    size_.sent_nodes += static_cast<Index>(asked[k].size());
+  // The split SPG parts: the nodes of the rows a process computes (spg/distribution.cpp).
+  for (std::size_t k = 0; k < own.particles.size(); ++k) {
+    const ParticleShare* share = own.split_part(k);
+    if (share == nullptr) continue;
+    const spg::Domain& dom = s.spg[k];
+    size_.particles += static_cast<Index>(share->owned.size());
+    size_.rows += static_cast<Index>(share->stressed.size());
+    size_.particle_ghosts += share->row_ghosts.ghosts() + share->column_ghosts.ghosts();
+    size_.particle_bytes +=
+        share->row_ghosts.received_bytes() + share->column_ghosts.received_bytes();
+    for (const Index j : share->stressed) {
+      const auto jj = static_cast<std::size_t>(j);
+      for (Index p = dom.kernel.list.offsets[jj]; p < dom.kernel.list.offsets[jj + 1]; ++p) {
+        const Index node = dom.particles.nodes[static_cast<std::size_t>(
+            dom.kernel.list.neighbours[static_cast<std::size_t>(p)])];
+        if (!own.moves_node(node)) ghost[static_cast<std::size_t>(node)] = 1;
+      }
+      const Index node = dom.particles.nodes[jj];
+      if (!own.moves_node(node)) ghost[static_cast<std::size_t>(node)] = 1;
+    }
   }
-  size_.peers = static_cast<Index>(peers_.size());
+  motion_ = ExchangePlan(comm_, own.owner, ghost, 6);
+  size_.ghost_nodes = motion_.ghosts();
+  size_.sent_nodes = motion_.sent();
+  size_.peers = motion_.peers();
   // What each process other than 0 sends to 0 at an output: the values it alone computes.
   for (Index n = 0; n < n_nodes; ++n)
-    if (!replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+    if (!replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
       output_[static_cast<std::size_t>(owner(n))].nodes.push_back(n);
   for (Index e = 0; e < n_elements; ++e)
     if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
       output_[static_cast<std::size_t>(r)].elements.push_back(e);
   for (std::size_t k = 0; k < s.constraints.nodes.size(); ++k)
     if (const Index n = s.constraints.nodes[k];
-        !replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+        !replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
       output_[static_cast<std::size_t>(owner(n))].constraints.push_back(static_cast<Index>(k));
   for (std::size_t m = 0; m < s.nodal_motions.size(); ++m)
     for (std::size_t k = 0; k < s.nodal_motions[m].nodes.size(); ++k)
       if (const Index n = s.nodal_motions[m].nodes[k];
-          !replicated[static_cast<std::size_t>(n)] && owner(n) != 0)
+          !replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
         output_[static_cast<std::size_t>(owner(n))].motions.emplace_back(static_cast<Index>(m),
                                                                          static_cast<Index>(k));
 }
 
 void Halo::exchange_motion(State& s) {
   Nodes& nd = s.nodes;
-  for (std::size_t k = 0; k < peers_.size(); ++k) {
-    double* out = send_buffer_[k].data();
-    for (const Index n : send_[k]) {
-      for (int c = 0; c < 3; ++c)
-        *out++ = nd.position(c, n);
-      for (int c = 0; c < 3; ++c)
-        *out++ = nd.velocity(c, n);
-    }
-  }
-  comm_.exchange(peers_, send_buffer_, receive_buffer_);
-  for (std::size_t k = 0; k < peers_.size(); ++k) {
-    const double* in = receive_buffer_[k].data();
-    for (const Index n : receive_[k]) {
-      for (int c = 0; c < 3; ++c)
-        nd.position(c, n) = *in++;
-      for (int c = 0; c < 3; ++c)
-        nd.velocity(c, n) = *in++;
-    }
-  }
+  motion_.exchange(
+      [&](Index n, double* out) {
+        for (int c = 0; c < 3; ++c) {
+          out[c] = nd.position(c, n);
+          out[3 + c] = nd.velocity(c, n);
+        }
+      },
+      [&](Index n, const double* in) {
+        for (int c = 0; c < 3; ++c) {
+          nd.position(c, n) = in[c];
+          nd.velocity(c, n) = in[3 + c];
+        }
+      });
 }
 
 void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) const {
@@ -181,10 +189,7 @@ void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) 
 }
 
 std::size_t Halo::received_bytes() const {
-  std::size_t bytes = 0;
-  for (const auto& b : receive_buffer_)
-    bytes += b.size() * sizeof(double);
-  return bytes;
+  return motion_.received_bytes() + size_.particle_bytes;
 }
 
 std::string Halo::summary() const {
@@ -192,23 +197,28 @@ std::string Halo::summary() const {
       static_cast<double>(size_.owned_nodes),    static_cast<double>(size_.replicated_nodes),
       static_cast<double>(size_.ghost_nodes),    static_cast<double>(size_.sent_nodes),
       static_cast<double>(size_.peers),          static_cast<double>(size_.elements),
-      static_cast<double>(size_.ghost_elements), static_cast<double>(received_bytes())};
+      static_cast<double>(size_.ghost_elements), static_cast<double>(received_bytes()),
+      static_cast<double>(size_.particles),      static_cast<double>(size_.rows),
+      static_cast<double>(size_.particle_ghosts)};
   const std::vector<double> all = comm_.all_gather(mine);
   if (comm_.rank() != 0) return {};
   std::string out = fmt::format(
       "Decomposition over {} processes (recursive coordinate bisection, issue 25)\n"
       "  rank  owned nodes  replicated  ghost nodes  sent nodes  peers  hexahedra  ghost hexa  "
-      "halo bytes/cycle\n",
+      "halo bytes/cycle  particles  SPG rows  particle ghosts\n",
       comm_.size());
   for (int r = 0; r < comm_.size(); ++r) {
     const double* v = &all[static_cast<std::size_t>(r) * mine.size()];
     out += fmt::format(
-        "  {:4d} {:12.0f} {:11.0f} {:12.0f} {:11.0f} {:6.0f} {:10.0f} {:11.0f} {:17.0f}\n", r, v[0],
-        v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+        "  {:4d} {:12.0f} {:11.0f} {:12.0f} {:11.0f} {:6.0f} {:10.0f} {:11.0f} {:17.0f} {:10.0f} "
+        "{:9.0f} {:16.0f}\n",
+        r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
   }
   out +=
-      "  replicated: nodes of the blocks every process computes whole (SPG parts, contact);\n"
-      "  each process moves them itself.\n";
+      "  replicated: nodes of the blocks every process computes whole (contact, SPG parts with\n"
+      "  options not split yet); each process moves them itself. SPG rows: the rows a process\n"
+      "  computes (its particles' and those holding them); particle ghosts: accelerations and\n"
+      "  unsmoothed velocities received per cycle, counted in the halo bytes.\n";
   return out;
 }
 

@@ -28,13 +28,17 @@ namespace mcdyna::solver::parallel {
 
 /// Sizes of one process's share, for the d3hsp decomposition summary.
 struct HaloSize {
-  Index owned_nodes = 0;       ///< owned and not replicated
-  Index replicated_nodes = 0;  ///< moved by every process
-  Index ghost_nodes = 0;       ///< received each cycle
-  Index sent_nodes = 0;        ///< sent each cycle (the sum over peers)
-  Index peers = 0;             ///< processes it exchanges with
-  Index elements = 0;          ///< hexahedra it computes
-  Index ghost_elements = 0;    ///< of them, owned by another process
+  Index owned_nodes = 0;           ///< owned and not replicated
+  Index replicated_nodes = 0;      ///< moved by every process
+  Index ghost_nodes = 0;           ///< received each cycle
+  Index sent_nodes = 0;            ///< sent each cycle (the sum over peers)
+  Index peers = 0;                 ///< processes it exchanges with
+  Index elements = 0;              ///< hexahedra it computes
+  Index ghost_elements = 0;        ///< of them, owned by another process
+  Index particles = 0;             ///< SPG particles it owns (split parts)
+  Index rows = 0;                  ///< SPG rows it computes (its own and those holding its own)
+  Index particle_ghosts = 0;       ///< particle values received per cycle (a and u-hat)
+  std::size_t particle_bytes = 0;  ///< their bytes per cycle
 };
 
 class Halo {
@@ -43,6 +47,10 @@ class Halo {
   /// s.ownership.
   Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicated,
        core::Communicator comm);
+
+  /// After s.ownership.owner or the SPG shares changed (particles re-owned at a renewal): the
+  /// masks, the ghost nodes and the output shares again. Collective.
+  void rebuild(State& s);
 
   /// x and v of the ghost nodes from the processes that own them.
   void exchange_motion(State& s);
@@ -60,9 +68,8 @@ class Halo {
 
  private:
   core::Communicator comm_;
-  std::vector<int> peers_;
-  std::vector<std::vector<Index>> send_, receive_;  ///< per peer, ascending node indices
-  std::vector<std::vector<double>> send_buffer_, receive_buffer_;
+  std::vector<std::uint8_t> replicated_;  ///< per node: moved by every process
+  ExchangePlan motion_;                   ///< x and v of the ghost nodes
   /// Per process other than 0: the nodes, hexahedra, constrained nodes (index into
   /// s.constraints.nodes) and prescribed-motion nodes (motion, index) it sends to process 0.
   struct OutputShare {

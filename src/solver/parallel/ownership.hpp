@@ -5,14 +5,36 @@
 #include <vector>
 
 #include "core/communicator.hpp"
+#include "solver/parallel/exchange_plan.hpp"
 
 namespace mcdyna::solver::parallel {
+
+/// An SPG part split over the processes like the hexahedra (spg/distribution.cpp). A process
+/// owns particles; it computes the stress of the rows its particles' forces need (its own and
+/// every row holding one of them: the transpose), redundantly with the other processes that need
+/// them, and advances the velocities of its own particles only. Rebuilt at kernel renewals.
+struct ParticleShare {
+  bool split = false;      ///< false: every process computes the whole part (replicated)
+  std::vector<int> owner;  ///< process of each particle
+  /// Owned particles, and `stressed`: owned or holding an owned particle in their row, ascending
+  /// with a flag per particle (spg::ParticleSubset's layout, without the dependency).
+  std::vector<std::uint8_t> owns, stresses;
+  std::vector<Index> owned, stressed;
+  /// The particles in the rows of the owned ones that another process owns: their accelerations
+  /// (Eq. 30's scatter) and constraint changes arrive through `row_ghosts`.
+  ExchangePlan row_ghosts;
+  /// The particles whose rows hold an owned one (the transpose) that another process owns: their
+  /// u-hat (Eq. 13's gather) arrives through `column_ghosts`.
+  ExchangePlan column_ghosts;
+};
 
 struct Ownership {
   /// The run's processes (one by default).
   core::Communicator comm;
+  /// Per node: the process that owns it (empty on one process).
+  std::vector<int> owner;
   /// Per node: this process advances it, because it owns it or because the node belongs to a
-  /// block every process computes whole (SPG parts and contact today).
+  /// block every process computes whole (contact today).
   std::vector<std::uint8_t> moves;
   /// Per hexahedron: this process computes it, because one of its nodes is moved here. An
   /// element on a border is computed by every process that moves one of its nodes.
@@ -20,6 +42,11 @@ struct Ownership {
   /// Per node: this process owns it. A sum over nodes (a rigid wall's force) takes each node on
   /// its owner only, then sums over the processes (core::ExactSum: the same bits for any count).
   std::vector<std::uint8_t> owns;
+  /// Per SPG part (State::spg), how its particles are shared (empty on one process).
+  std::vector<ParticleShare> particles;
+  /// Counts the changes of `owner` (particles re-owned at renewals): the halo and the contact
+  /// plans are rebuilt when it moves.
+  long generation = 0;
 
   [[nodiscard]] bool moves_node(std::int32_t n) const {
     return moves.empty() || moves[static_cast<std::size_t>(n)] != 0;
@@ -29,6 +56,13 @@ struct Ownership {
   }
   [[nodiscard]] bool computes_element(std::int32_t e) const {
     return computes.empty() || computes[static_cast<std::size_t>(e)] != 0;
+  }
+  /// The share of SPG part `domain` when it is split, else null.
+  [[nodiscard]] ParticleShare* split_part(std::size_t domain) {
+    return domain < particles.size() && particles[domain].split ? &particles[domain] : nullptr;
+  }
+  [[nodiscard]] const ParticleShare* split_part(std::size_t domain) const {
+    return domain < particles.size() && particles[domain].split ? &particles[domain] : nullptr;
   }
 };
 

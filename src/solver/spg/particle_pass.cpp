@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "solver/material/constitutive.hpp"
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -64,11 +65,13 @@ void mass_factors(Domain& d) {
   }
 }
 
-// Every particle takes the largest factor asked for by the rows it is in (over the transpose).
-void grow_row_masses(Domain& d) {
-  const Index n = d.count();
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index k = 0; k < n; ++k) {
+// Every particle takes the largest factor asked for by the rows it is in (over the transpose);
+// over several processes each takes its own particles (`owned`), then they share the masses.
+void grow_row_masses(Domain& d, const std::vector<Index>* owned) {
+  const std::size_t count = owned ? owned->size() : static_cast<std::size_t>(d.count());
+#pragma omp parallel for schedule(static, 256) if (count > 512)
+  for (std::size_t m = 0; m < count; ++m) {
+    const Index k = owned ? (*owned)[m] : static_cast<Index>(m);
     const auto kk = static_cast<std::size_t>(k);
     double factor = 0.0;
     for (Index t = d.kernel.transpose.offsets[kk]; t < d.kernel.transpose.offsets[kk + 1]; ++t)
@@ -207,6 +210,42 @@ Outcome particle_update(State& s, Domain& d, const Material& mat, const Model& m
   return o;
 }
 
+// Over several processes each pass saw its own rows: all take the smallest step with the lowest
+// particle (as one process's ascending loop keeps it), the lowest inverted and non-finite
+// particles, the sum of the releases (owned particles only) and whether any mass was added.
+void agree_on_pass(const core::Communicator& comm, double& best, Index& controlling,
+                   double& best_physical, Index& controlling_physical, Index& inverted,
+                   Index& non_finite, long& released, int& mass_added) {
+  const std::vector<double> mine = {best,
+                                    static_cast<double>(controlling),
+                                    best_physical,
+                                    static_cast<double>(controlling_physical),
+                                    static_cast<double>(inverted),
+                                    static_cast<double>(non_finite),
+                                    static_cast<double>(released),
+                                    static_cast<double>(mass_added)};
+  const std::vector<double> all = comm.all_gather(mine);
+  auto lower = [](double value, double index, double& best_value, Index& best_index) {
+    if (value < best_value ||
+        (value == best_value && index >= 0.0 && (best_index < 0 || index < best_index))) {
+      best_value = value;
+      best_index = static_cast<Index>(index);
+    }
+  };
+  best = best_physical = std::numeric_limits<double>::infinity();
+  controlling = controlling_physical = -1;
+  released = 0;
+  mass_added = 0;
+  for (std::size_t p = 0; p < all.size(); p += mine.size()) {
+    lower(all[p], all[p + 1], best, controlling);
+    lower(all[p + 2], all[p + 3], best_physical, controlling_physical);
+    inverted = std::min(inverted, static_cast<Index>(all[p + 4]));
+    non_finite = std::min(non_finite, static_cast<Index>(all[p + 5]));
+    released += static_cast<long>(all[p + 6]);
+    mass_added = std::max(mass_added, static_cast<int>(all[p + 7]));
+  }
+}
+
 }  // namespace
 
 ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j, double half_step) {
@@ -241,8 +280,12 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
 }
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step) {
+  const std::size_t domain = domain_index(s, d);
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
   if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
+    // Over several processes each first receives every particle's values, so the check and the
+    // renewal run whole and alike everywhere (distribution.hpp).
+    synchronise(s, domain);
     const auto bonds_start = Clock::now();
     const long broke = break_bonds(s, d);
     d.times.bonds += seconds_since(bonds_start);
@@ -254,7 +297,15 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     else
       d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
+    if (due > 0 && s.ownership.split_part(domain)) {
+      reown_particles(s, domain);
+      share_particles(s, domain);
+      ++s.ownership.generation;  // the halo follows the new rows and owners
+    }
   }
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const std::vector<Index>* stressed = share ? &share->stressed : nullptr;
+  const std::vector<Index>* owned = share ? &share->owned : nullptr;
   if (d.settings.step_estimate == StepEstimate::eigenvalue) {
     const auto estimate_start = Clock::now();
     recalibrate_stiffness_length(s, d, renewed);
@@ -274,10 +325,11 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   int mass_added = 0;
   const bool control = d.settings.mode_control > 0.0;
   if (s.mass_scaling_dt > 0.0) mass_factors(d);
+  const std::size_t rows = stressed ? stressed->size() : static_cast<std::size_t>(n);
   // The material's deviatoric model, visited once for the whole pass.
   std::visit(
       [&](const auto& model) {
-#pragma omp parallel if (n > 512) reduction(+ : released) reduction(max : mass_added)
+#pragma omp parallel if (rows > 512) reduction(+ : released) reduction(max : mass_added)
         {
           double local_best = std::numeric_limits<double>::infinity();
           Index local_controlling = -1;
@@ -286,11 +338,12 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
           Index local_inverted = std::numeric_limits<Index>::max();
           Index local_non_finite = std::numeric_limits<Index>::max();
 #pragma omp for schedule(static, 128) nowait
-          for (Index j = 0; j < n; ++j) {
+          for (std::size_t m = 0; m < rows; ++m) {
+            const Index j = stressed ? (*stressed)[m] : static_cast<Index>(m);
             const Outcome o = particle_update(s, d, mat, model, j, step);
             d.fields.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
             if (control) mode_control_update(s, d, j);
-            released += o.released ? 1 : 0;
+            if (o.released && (!share || share->owns[static_cast<std::size_t>(j)])) ++released;
             if (o.mass_added) mass_added = 1;
             if (o.inverted) {
               local_inverted = std::min(local_inverted, j);
@@ -324,9 +377,13 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
         }
       },
       mat.model);
+  if (share)
+    agree_on_pass(s.ownership.comm, best, controlling, best_physical, controlling_physical,
+                  inverted, non_finite, released, mass_added);
   d.diagnostics.released += released;
   if (mass_added) {
-    grow_row_masses(d);
+    grow_row_masses(d, owned);
+    synchronise(s, domain, true);
     smooth_masses(s, d);
   }
   d.times.stress += seconds_since(start);
@@ -339,8 +396,10 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 
   // Internal forces, gathered per particle over the pairs (J, I) of its transpose, with the
   // mode-control force -(g_I - sum_J phi_I(X_J) g_J) = -(D^T g)_I (mode_control.cpp).
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
+  const std::size_t forced = owned ? owned->size() : static_cast<std::size_t>(n);
+#pragma omp parallel for schedule(static, 256) if (forced > 512)
+  for (std::size_t m = 0; m < forced; ++m) {
+    const Index i = owned ? (*owned)[m] : static_cast<Index>(m);
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
     for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {

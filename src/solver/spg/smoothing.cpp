@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -62,12 +63,41 @@ inline Vec3 pair_impulse(const PairEnd& i, const PairEnd& j) {
   return (i.share * i.mass * j.mass * along / ((i.mass + j.mass) * r2)) * r;
 }
 
+// The particles a process advances: its own over several processes (distribution.hpp), else all.
+struct Advanced {
+  const std::vector<Index>* list = nullptr;
+  std::size_t count = 0;
+  [[nodiscard]] Index operator[](std::size_t m) const {
+    return list ? (*list)[m] : static_cast<Index>(m);
+  }
+};
+
+Advanced advanced_particles(const parallel::ParticleShare* share, Index n) {
+  if (share) return {&share->owned, share->owned.size()};
+  return {nullptr, static_cast<std::size_t>(n)};
+}
+
+// Columns of a 3 x count field from the particles' owners into their ghosts.
+void exchange_columns(parallel::ExchangePlan& plan, Eigen::Matrix3Xd& field) {
+  plan.exchange(
+      [&](Index j, double* out) {
+        for (int c = 0; c < 3; ++c)
+          out[c] = field(c, j);
+      },
+      [&](Index j, const double* in) {
+        for (int c = 0; c < 3; ++c)
+          field(c, j) = in[c];
+      });
+}
+
 }  // namespace
 
 Index advance_velocities(State& s, Domain& d, double dt) {
   const auto start = std::chrono::steady_clock::now();
   Nodes& nd = s.nodes;
   const Index n = d.count();
+  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const Advanced mine = advanced_particles(share, n);
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
   const bool damping = d.settings.damping > 0.0 && smooths_velocity(mode);
@@ -76,8 +106,9 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   Eigen::Matrix3Xd& acc = d.scratch.acceleration;
   acc.resize(3, n);
   if (smooths_velocity(mode)) {
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-    for (Index i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
+    for (std::size_t m = 0; m < mine.count; ++m) {
+      const Index i = mine[m];
       const auto ii = static_cast<std::size_t>(i);
       if (d.kernel.pinned[ii]) {
         acc.col(i).setZero();
@@ -87,20 +118,22 @@ Index advance_velocities(State& s, Domain& d, double dt) {
                    (mc ? d.kernel.smoothed_mass[ii] : d.particles.mass[ii]);
       nd.acceleration.col(d.particles.nodes[ii]) = acc.col(i);
     }
+    if (share) exchange_columns(share->row_ghosts, acc);  // a_J of Eq. 30 over the rows
   }
   // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
   // PDAMP impulses of I's pairs at both ends; a pinned particle takes its share of the smoothed
   // accelerations into its one (node) velocity, which is also its u-hat in the smoothing.
   // PDAMP: the kinetic energy of the unsmoothed velocities taken out, per particle, summed in
   // particle order after the loop (an OpenMP reduction would round differently for each
-  // thread count).
+  // thread count) with core::ExactSum (over processes as well).
   if (damping) {
     damping_shares(d);
     d.scratch.damping_removed.assign(static_cast<std::size_t>(n), 0.0);
   }
   if (smooths_velocity(mode)) {
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-    for (Index i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
+    for (std::size_t m = 0; m < mine.count; ++m) {
+      const Index i = mine[m];
       const auto ii = static_cast<std::size_t>(i);
       const bool free_i = d.kernel.pinned[ii] == 0;
       const bool damp_i = damping && free_i;
@@ -138,19 +171,26 @@ Index advance_velocities(State& s, Domain& d, double dt) {
           (undamped.squaredNorm() - d.fields.unsmoothed.col(i).squaredNorm());
     }
   } else {
-    for (Index i = 0; i < n; ++i)  // plain nodal integration: every particle is pinned
+    for (std::size_t m = 0; m < mine.count; ++m) {  // plain nodal integration: all pinned
+      const Index i = mine[m];
       d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
+    }
   }
-  if (damping)
-    for (const double removed : d.scratch.damping_removed)
-      d.fields.damping_energy += removed;
+  if (share) exchange_columns(share->column_ghosts, d.fields.unsmoothed);  // Eq. 13's u-hat_J
+  if (damping) {  // an exact sum: the same bits whichever process holds which particle
+    core::ExactSum removed;
+    for (std::size_t m = 0; m < mine.count; ++m)
+      removed.add(d.scratch.damping_removed[static_cast<std::size_t>(mine[m])]);
+    d.fields.damping_energy += share ? s.ownership.comm.sum(removed) : removed.value();
+  }
 
   // Smoothing: the node velocity of every smoothed particle (Eq. 13 or, for `direct`, Eq. 7),
   // from u-hat only (which holds the pinned particles' node velocities).
   const Eigen::Matrix3Xd& source = d.fields.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static, 256) reduction(min : bad) if (n > 512)
-  for (Index i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static, 256) reduction(min : bad) if (mine.count > 512)
+  for (std::size_t m = 0; m < mine.count; ++m) {
+    const Index i = mine[m];
     const auto ii = static_cast<std::size_t>(i);
     Vec3 u = source.col(i);
     if (!d.kernel.pinned[ii] && mc) {
@@ -173,11 +213,14 @@ Index advance_velocities(State& s, Domain& d, double dt) {
 void absorb_constraints(State& s, Domain& d) {
   const Nodes& nd = s.nodes;
   const Index n = d.count();
+  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const Advanced mine = advanced_particles(share, n);
   // The change each constraint or wall made to a smoothed particle's velocity, as an impulse
   // p_I = m_I change_I on that particle.
   Eigen::Matrix3Xd change = Eigen::Matrix3Xd::Zero(3, n);
   bool any = false;
-  for (Index i = 0; i < n; ++i) {
+  for (std::size_t m = 0; m < mine.count; ++m) {
+    const Index i = mine[m];
     const auto ii = static_cast<std::size_t>(i);
     const Vec3 v = nd.velocity.col(d.particles.nodes[ii]);
     if (d.kernel.pinned[ii]) {
@@ -188,7 +231,18 @@ void absorb_constraints(State& s, Domain& d) {
     }
     d.fields.smoothed.col(i) = v;
   }
-  if (!any) return;
+  if (share) {  // every process takes part in the exchange when any particle changed
+    any = s.ownership.comm.bitwise_or(any ? 1U : 0U) != 0;
+    if (any) exchange_columns(share->row_ghosts, change);
+  }
+  // PDAMP's pairs read next cycle the row partners' u-hat as this cycle leaves it: the ghosts'
+  // again from their owners, after what the conditions changed (pinned and smoothed).
+  const bool damping =
+      share && d.settings.damping > 0.0 && smooths_velocity(d.settings.stabilization);
+  if (!any) {
+    if (damping) exchange_columns(share->column_ghosts, d.fields.unsmoothed);
+    return;
+  }
   if (d.settings.stabilization == Stabilization::direct) {
     d.fields.unsmoothed += change;
     return;
@@ -198,8 +252,9 @@ void absorb_constraints(State& s, Domain& d) {
   // takes. The smoothed velocity follows over the next steps; this step the particle moves
   // with the constrained velocity (no penetration). The share that falls on pinned particles
   // is not applied (they have their own constraints and FE forces).
-#pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index j = 0; j < n; ++j) {
+#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
+  for (std::size_t m = 0; m < mine.count; ++m) {
+    const Index j = mine[m];
     const auto jj = static_cast<std::size_t>(j);
     if (d.kernel.pinned[jj]) continue;
     Vec3 sum = Vec3::Zero();
@@ -209,6 +264,7 @@ void absorb_constraints(State& s, Domain& d) {
     }
     d.fields.unsmoothed.col(j) += sum;
   }
+  if (damping) exchange_columns(share->column_ghosts, d.fields.unsmoothed);
 }
 
 SmoothedKinetic smoothed_kinetic(const State& s, const Domain& d) {

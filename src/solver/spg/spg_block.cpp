@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver {
@@ -51,10 +52,19 @@ class SpgBlock final : public Block {
 
   void after_constraints(State& s) override { spg::absorb_constraints(s, s.spg[domain_]); }
 
+  // A part with options that read the whole part every cycle (distribution.hpp splittable) is
+  // computed whole on every process.
   void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    if (spg::splittable(s.spg[domain_])) return;
     for (const Index n : s.spg[domain_].particles.nodes)
       nodes[static_cast<std::size_t>(n)] = 1;
   }
+
+  void distribute(State& s) override {
+    if (spg::splittable(s.spg[domain_])) spg::share_particles(s, domain_);
+  }
+
+  void synchronise(State& s) override { spg::synchronise(s, domain_); }
 
   void split_times(const State& s, PhaseTimes& phases) const override {
     const spg::SpgTimes& t = s.spg[domain_].times;
