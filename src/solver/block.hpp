@@ -66,10 +66,13 @@ class Block {
   /// block split over the processes needs beyond the node owners (an SPG part's share of
   /// particles, spg/distribution.hpp). Collective.
   virtual void distribute(State& /*s*/) {}
-  /// Over several processes, before an output or a restart dump: every process receives the
-  /// values of the block's entities from their owners, so process 0 writes whole files and
-  /// every dump holds the whole block. Collective.
-  virtual void synchronise(State& /*s*/) {}
+  /// What a synchronisation is for: the histories or a d3plot state (written by process 0), or
+  /// a restart dump (every process dumps the whole block).
+  enum class Gather { histories, state, dump };
+  /// Over several processes, before an output or a restart dump: the values of the block's
+  /// entities from their owners, to process 0 what the output reads or to every process all of
+  /// them. Collective.
+  virtual void synchronise(State& /*s*/, Gather /*what*/) {}
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}

@@ -320,11 +320,11 @@ class Loop {
     halo_generation_ = s_.ownership.generation;
   }
 
-  // Every process receives the owned values of the blocks that split their entities (process 0
-  // writes the outputs, each dump holds the whole state).
-  void synchronise_blocks() {
+  // The owned values of the blocks that split their entities: to process 0, which writes the
+  // outputs, or to every process before a dump (each dump holds the whole state).
+  void synchronise_blocks(Block::Gather what) {
     for (const std::unique_ptr<Block>& b : blocks_)
-      b->synchronise(s_);
+      b->synchronise(s_, what);
   }
 
   // Every process stops and writes when any one is asked to (a signal reaches the processes
@@ -360,7 +360,7 @@ class Loop {
         !hooks_.dump_due(s_, interrupted))
       return;
     phases_.charge(PhaseTimes::other);
-    if (halo_) synchronise_blocks();
+    if (halo_) synchronise_blocks(Block::Gather::dump);
     const double seconds = elapsed();
     const ResumePoint point{pass_.critical_step,
                             pass_.controlling_element,
@@ -401,7 +401,7 @@ class Loop {
   void write_state(Eigen::Matrix3Xd& previous, bool final) {
     // The last write of a run completes every output, d3plot included.
     if (halo_) {
-      synchronise_blocks();
+      synchronise_blocks(final || state_due_ ? Block::Gather::state : Block::Gather::histories);
       halo_->gather_for_output(s_, previous, final || state_due_);
     }
     if (hooks_.write) hooks_.write(s_, previous, final);

@@ -2,6 +2,7 @@
 // after renewals (distribution.hpp).
 #include "solver/spg/distribution.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "solver/parallel/decomposition.hpp"
@@ -10,21 +11,50 @@ namespace mcdyna::solver::spg {
 
 namespace {
 
-// Every value of particle j that one process computes for the others between kernel checks,
-// as (first value, count); one list serves packing and unpacking. A byte flag travels as a
-// double.
+// The values of particle j that a synchronisation carries (distribution.hpp, Scope), as
+// (first value, count); one list serves packing and unpacking. A byte flag travels as a double.
 template <class Visit>
-void particle_values(State& s, Domain& d, Index j, bool masses_only, Visit&& visit) {
+void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit) {
   const auto jj = static_cast<std::size_t>(j);
   ParticleSet& p = d.particles;
-  visit(&p.mass[jj], 1);
-  visit(&p.base_mass[jj], 1);
-  visit(&p.added_mass[jj], 1);
-  if (masses_only) return;
+  ParticleFields& f = d.fields;
+  auto flags = [&](std::initializer_list<std::vector<std::uint8_t>*> list) {
+    for (std::vector<std::uint8_t>* v : list) {
+      double flag = (*v)[jj];
+      visit(&flag, 1);
+      (*v)[jj] = static_cast<std::uint8_t>(flag);
+    }
+  };
   const Index node = p.nodes[jj];
+  if (scope == Scope::masses) {
+    for (std::vector<double>* v : {&p.mass, &p.base_mass, &p.added_mass})
+      visit(&(*v)[jj], 1);
+    return;
+  }
+  if (scope == Scope::histories) {  // energy.cpp and the ASCII histories
+    for (std::vector<double>* v : {&p.mass, &p.added_mass, &f.internal_energy, &f.mode_energy})
+      if (!v->empty()) visit(&(*v)[jj], 1);
+    visit(f.unsmoothed.col(j).data(), 3);
+    visit(f.unsmoothed_previous.col(j).data(), 3);
+    return;
+  }
+  if (scope == Scope::check) {  // what bond failure and the renewal read (renewal.cpp)
+    visit(s.nodes.position.col(node).data(), 3);
+    visit(f.deformation.col(j).data(), 9);
+    visit(&f.pressure[jj], 1);
+    visit(&f.volume[jj], 1);
+    if (!f.points.plastic_strain.empty()) visit(&f.points.plastic_strain[jj], 1);
+    flags({&f.debris});
+    return;
+  }
+  for (std::vector<double>* v : {&p.mass, &p.base_mass, &p.added_mass})
+    visit(&(*v)[jj], 1);
   visit(s.nodes.position.col(node).data(), 3);
   visit(s.nodes.velocity.col(node).data(), 3);
-  ParticleFields& f = d.fields;
+  // The force at the top of a cycle (a restart dump's, which the next cycle starts from) and
+  // the acceleration of the last.
+  visit(s.nodes.force.col(node).data(), 3);
+  visit(s.nodes.acceleration.col(node).data(), 3);
   for (std::vector<double>* v : {&f.volume, &f.step, &f.pressure, &f.eos_energy, &f.temperature,
                                  &f.viscosity, &f.internal_energy, &f.mode_stiffness,
                                  &f.mode_energy, &f.points.plastic_strain, &f.points.damage})
@@ -36,11 +66,7 @@ void particle_values(State& s, Domain& d, Index j, bool masses_only, Visit&& vis
   if (f.points.back_stress.cols() > 0) visit(f.points.back_stress.col(j).data(), 6);
   visit(f.deformation.col(j).data(), 9);
   visit(f.stress_gradient.col(j).data(), 9);
-  for (std::vector<std::uint8_t>* flags : {&f.failed, &f.debris}) {
-    double flag = (*flags)[jj];
-    visit(&flag, 1);
-    (*flags)[jj] = static_cast<std::uint8_t>(flag);
-  }
+  flags({&f.failed, &f.debris});
 }
 
 parallel::ParticleShare& share_of(State& s, std::size_t domain) {
@@ -105,27 +131,155 @@ void share_particles(State& s, std::size_t domain) {
   share.column_ghosts = parallel::ExchangePlan(comm, share.owner, column_ghost, 3);
 }
 
-void synchronise(State& s, std::size_t domain, bool masses_only) {
+void synchronise(State& s, std::size_t domain, Scope scope) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   if (share == nullptr) return;
   Domain& d = s.spg[domain];
+  const core::Communicator& comm = s.ownership.comm;
   std::vector<double> mine;
-  for (const Index j : share->owned)
-    particle_values(s, d, j, masses_only,
-                    [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
-  const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
+  const bool to_root = scope == Scope::to_root || scope == Scope::histories;
+  if (!to_root || comm.rank() != 0)
+    for (const Index j : share->owned)
+      particle_values(s, d, j, scope,
+                      [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
+  std::vector<int> counts;
+  const std::vector<double> all =
+      to_root ? comm.gather_to_root(mine, counts) : comm.all_gather_varying(mine);
+  if (to_root && comm.rank() != 0) return;
   // Unpacked in the order they were packed: process by process, each one's particles ascending.
   const double* in = all.data();
-  for (int r = 0; r < s.ownership.comm.size(); ++r)
+  for (int r = to_root ? 1 : 0; r < comm.size(); ++r)
     for (Index j = 0; j < d.count(); ++j) {
       if (share->owner[static_cast<std::size_t>(j)] != r) continue;
-      particle_values(s, d, j, masses_only, [&](double* v, int count) {
+      particle_values(s, d, j, scope, [&](double* v, int count) {
         std::copy(in, in + count, v);
         in += count;
       });
     }
   if (in != all.data() + all.size())
     throw std::logic_error("spg::synchronise: the processes' shares do not match");
+}
+
+void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner) {
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  Domain& d = s.spg[domain];
+  const int me = s.ownership.comm.rank();
+  const auto n = static_cast<std::size_t>(d.count());
+  // What this process reads from now on: its stressed rows and the particles in them (their
+  // nodes' x and v, and for its own particles' rows the accelerations and u-hat).
+  std::vector<std::uint8_t> wanted(share->stresses);
+  for (const Index i : share->stressed)
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p)
+      wanted[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])] = 1;
+  for (std::size_t j = 0; j < n; ++j)
+    if (previous_owner[j] == me) wanted[j] = 0;  // held whole here until now
+  int width = 0;
+  particle_values(s, d, 0, Scope::everything, [&](const double*, int count) { width += count; });
+  parallel::ExchangePlan plan(s.ownership.comm, previous_owner, wanted, width);
+  plan.exchange(
+      [&](Index j, double* out) {
+        particle_values(s, d, j, Scope::everything,
+                        [&](const double* v, int count) { out = std::copy(v, v + count, out); });
+      },
+      [&](Index j, const double* in) {
+        particle_values(s, d, j, Scope::everything, [&](double* v, int count) {
+          std::copy(in, in + count, v);
+          in += count;
+        });
+      });
+}
+
+void share_columns(const State& s, std::size_t domain, double* values, int width) {
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<double> mine;
+  mine.reserve(share->owned.size() * w);
+  for (const Index j : share->owned)
+    mine.insert(mine.end(), values + w * static_cast<std::size_t>(j),
+                values + w * (static_cast<std::size_t>(j) + 1));
+  const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
+  const double* in = all.data();
+  for (int r = 0; r < s.ownership.comm.size(); ++r)
+    for (std::size_t j = 0; j < share->owner.size(); ++j)
+      if (share->owner[j] == r) {
+        std::copy(in, in + w, values + w * j);
+        in += w;
+      }
+}
+
+std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int processes) {
+  const auto count = static_cast<std::size_t>(std::count(flagged.begin(), flagged.end(), 1));
+  std::vector<int> builder(flagged.size(), -1);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < flagged.size(); ++i)
+    if (flagged[i])
+      builder[i] = static_cast<int>(k++ * static_cast<std::size_t>(processes) / count);
+  return builder;
+}
+
+void share_rows(const State& s, const std::vector<int>& builder, NeighbourList& fresh,
+                ShapeFunctions& shape, std::vector<Index>& degenerate) {
+  const auto n = static_cast<Index>(builder.size());
+  const int me = s.ownership.comm.rank();
+  auto flagged = [&](Index i) { return builder[static_cast<std::size_t>(i)] >= 0; };
+  // Per row built here: its count, then per pair the neighbour, phi and grad phi; then the
+  // degenerate rows.
+  std::vector<double> mine;
+  for (Index i = 0; i < n; ++i) {
+    if (builder[static_cast<std::size_t>(i)] != me) continue;
+    mine.push_back(fresh.count(i));
+    for (Index p = fresh.offsets[static_cast<std::size_t>(i)];
+         p < fresh.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const auto pp = static_cast<std::size_t>(p);
+      mine.push_back(fresh.neighbours[pp]);
+      mine.push_back(shape.value[pp]);
+      mine.insert(mine.end(), shape.gradient.col(p).data(), shape.gradient.col(p).data() + 3);
+    }
+  }
+  mine.push_back(static_cast<double>(degenerate.size()));
+  mine.insert(mine.end(), degenerate.begin(), degenerate.end());
+  const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
+  // Where each row starts in `all` (process by process, rows ascending), then the rows in
+  // particle order.
+  std::vector<std::size_t> start(static_cast<std::size_t>(n), 0);
+  degenerate.clear();
+  std::size_t at = 0;
+  for (int r = 0; r < s.ownership.comm.size(); ++r) {
+    for (Index i = 0; i < n; ++i) {
+      if (builder[static_cast<std::size_t>(i)] != r) continue;
+      start[static_cast<std::size_t>(i)] = at;
+      at += 1 + 5 * static_cast<std::size_t>(all[at]);
+    }
+    const auto count = static_cast<std::size_t>(all[at++]);
+    for (std::size_t k = 0; k < count; ++k)
+      degenerate.push_back(static_cast<Index>(all[at++]));
+  }
+  if (at != all.size()) throw std::logic_error("spg::share_rows: the processes' rows do not match");
+  std::sort(degenerate.begin(), degenerate.end());
+  NeighbourList list;
+  list.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (Index i = 0; i < n; ++i)
+    list.offsets[static_cast<std::size_t>(i) + 1] =
+        list.offsets[static_cast<std::size_t>(i)] +
+        (flagged(i) ? static_cast<Index>(all[start[static_cast<std::size_t>(i)]]) : 0);
+  const auto pairs = static_cast<std::size_t>(list.offsets.back());
+  list.neighbours.resize(pairs);
+  ShapeFunctions out;
+  out.value.resize(pairs);
+  out.gradient.resize(3, static_cast<Eigen::Index>(pairs));
+  for (Index i = 0; i < n; ++i) {
+    if (!flagged(i)) continue;
+    const double* in = &all[start[static_cast<std::size_t>(i)] + 1];
+    for (Index q = list.offsets[static_cast<std::size_t>(i)];
+         q < list.offsets[static_cast<std::size_t>(i) + 1]; ++q, in += 5) {
+      list.neighbours[static_cast<std::size_t>(q)] = static_cast<Index>(in[0]);
+      out.value[static_cast<std::size_t>(q)] = in[1];
+      out.gradient.col(q) = Eigen::Vector3d(in[2], in[3], in[4]);
+    }
+  }
+  fresh = std::move(list);
+  shape = std::move(out);
 }
 
 void reown_particles(State& s, std::size_t domain) {

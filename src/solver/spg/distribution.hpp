@@ -9,11 +9,13 @@
 ///     particles in their rows (`row_ghosts`) and then the u-hat of the particles whose rows hold
 ///     them (`column_ghosts`) arrived from their owners.
 /// The x and v of the nodes the stressed rows read come with the hexahedra's ghost nodes
-/// (parallel::Halo). At a kernel check every process first receives every particle's values
-/// from its owner (`synchronise`), so the bond failure, the renewal and the smoothed masses run
-/// whole and alike on every process; after a renewal the free particles are bisected again by
-/// their current positions (`reown_particles`): particles that flowed across a border change
-/// process there, with everything they carry, because every process already holds it.
+/// (parallel::Halo). At a kernel check every process first receives what the check reads of
+/// every particle (`synchronise`, Scope::check: positions, F-hat, pressure, ...), so bond
+/// failure, the choice of rows and the smoothed masses run whole and alike on every process;
+/// each process builds an equal share of the renewed rows and all share them (`share_rows`).
+/// After a renewal the free particles are bisected again by their current positions
+/// (`reown_particles`): particles that flowed across a border change process there, and each
+/// process receives everything the particles it now reads carry (`migrate`).
 #include <cstddef>
 
 #include "solver/state.hpp"
@@ -34,10 +36,37 @@ std::size_t domain_index(const State& s, const Domain& d);
 /// Collective.
 void share_particles(State& s, std::size_t domain);
 
-/// Every process receives every particle's values (node x and v, masses, velocities, material
-/// point, kernel fields of the last pass) from the particle's owner. With `masses_only`, the
-/// masses alone (after DT2MS added mass on owned rows). Collective.
-void synchronise(State& s, std::size_t domain, bool masses_only = false);
+/// What a synchronisation carries, from each particle's owner.
+enum class Scope {
+  masses,      ///< to every process: the masses (after DT2MS added mass on owned rows)
+  check,       ///< to every process: what a kernel check and renewal read (x, F-hat, p, V, ...)
+  everything,  ///< to every process: every value (before a restart dump)
+  to_root,     ///< every value, to process 0 only (before a d3plot state)
+  histories    ///< to process 0 only, what the histories read: masses, energies, u-hat
+};
+
+/// Every process (process 0 for `to_root`) receives the values of `scope` of every particle
+/// from its owner. Collective.
+void synchronise(State& s, std::size_t domain, Scope scope);
+
+/// After the share was rebuilt with new owners or rows: each process receives every value of
+/// the particles it now reads (its stressed rows and the particles in them) from their
+/// `previous_owner`, who held them whole. Collective.
+void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner);
+
+/// `width` values per particle, stored one particle after the other from `values`: every
+/// process receives those of each particle from its owner. Collective.
+void share_columns(const State& s, std::size_t domain, double* values, int width);
+
+/// The process that builds each of a renewal's flagged rows (-1: not flagged): the flagged
+/// rows in particle order, in equal consecutive shares.
+std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int processes);
+
+/// A renewal's fresh rows (renewal.cpp): `fresh`, `shape` and `degenerate` hold the rows this
+/// process built (`builder`, from row_builders); on return they hold every flagged row, in
+/// particle order, as one process builds them (the other rows empty). Collective.
+void share_rows(const State& s, const std::vector<int>& builder, NeighbourList& fresh,
+                ShapeFunctions& shape, std::vector<Index>& degenerate);
 
 /// After a renewal (with every process holding every value): the particles whose node no hexa,
 /// SPC or prescribed motion shares are bisected again by their current positions over the

@@ -283,9 +283,9 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   const std::size_t domain = domain_index(s, d);
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
   if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
-    // Over several processes each first receives every particle's values, so the check and the
-    // renewal run whole and alike everywhere (distribution.hpp).
-    synchronise(s, domain);
+    // Over several processes each first receives what the check reads of every particle, so
+    // the check and the renewal run whole and alike everywhere (distribution.hpp).
+    synchronise(s, domain, Scope::check);
     const auto bonds_start = Clock::now();
     const long broke = break_bonds(s, d);
     d.times.bonds += seconds_since(bonds_start);
@@ -298,8 +298,10 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
     if (due > 0 && s.ownership.split_part(domain)) {
+      const std::vector<int> previous_owner = s.ownership.split_part(domain)->owner;
       reown_particles(s, domain);
       share_particles(s, domain);
+      migrate(s, domain, previous_owner);
       ++s.ownership.generation;  // the halo follows the new rows and owners
     }
   }
@@ -383,7 +385,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   d.diagnostics.released += released;
   if (mass_added) {
     grow_row_masses(d, owned);
-    synchronise(s, domain, true);
+    synchronise(s, domain, Scope::masses);
     smooth_masses(s, d);
   }
   d.times.stress += seconds_since(start);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -35,12 +36,17 @@ Eigen::Map<Mat3> mat(Eigen::Matrix<double, 9, Eigen::Dynamic>& m, Index i) {
 // to the particle spacing, which deforms the same way: compression along the axis of a Taylor bar
 // shrinks it there (a support fixed in size would span many compressed layers and let them collapse
 // unseen), and it widens where the material spreads. KERNEL 1 (Eulerian): the initial supports.
-Supports current_supports(const Domain& d) {
+// Over several processes each computes the supports of its own particles and all share them.
+Supports current_supports(const State& s, const Domain& d) {
   if (d.settings.kernel_update == KernelUpdate::eulerian)
     return deformed(d.settings.shape, d.particles.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
-#pragma omp parallel for schedule(static) if (d.count() > 4096)
-  for (Index i = 0; i < d.count(); ++i) {
+  const std::size_t domain = domain_index(s, d);
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const std::size_t count = share ? share->owned.size() : static_cast<std::size_t>(d.count());
+#pragma omp parallel for schedule(static) if (count > 4096)
+  for (std::size_t m = 0; m < count; ++m) {
+    const Index i = share ? share->owned[m] : static_cast<Index>(m);
     const Mat3 f = Eigen::Map<const Mat3>(d.fields.deformation.col(i).data()) *
                    Eigen::Map<const Mat3>(d.kernel.reference_deformation.col(i).data());
     const Eigen::Map<const Mat3> a0(d.particles.initial_support.col(i).data());
@@ -53,6 +59,7 @@ Supports current_supports(const Domain& d) {
       half[k] = std::clamp(half[k], kSupportMinimumStretch * scale, kSupportMaximumStretch * scale);
     mat(shapes, i) = eig.eigenvectors() * half.asDiagonal() * eig.eigenvectors().transpose();
   }
+  if (share) share_columns(s, domain, shapes.data(), 9);
   return deformed(d.settings.shape, shapes);
 }
 
@@ -266,7 +273,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     mat(d.kernel.reference_deformation, i) = total;
     mat(d.fields.deformation, i).setIdentity();
   }
-  if (all) d.kernel.support = current_supports(d);  // a partial renewal has them from rows_to_renew
+  if (all)
+    d.kernel.support = current_supports(s, d);  // a partial renewal has them from rows_to_renew
   std::vector<Index> degenerate;
   std::vector<std::uint8_t> damaged;  // particles that lost bonds: the stricter conditioning
   if (d.diagnostics.broken_bonds > 0) {
@@ -274,7 +282,29 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     for (Index i = 0; i < n; ++i)
       damaged[static_cast<std::size_t>(i)] = d.kernel.bonds.damage(i) > 0.0 ? 1 : 0;
   }
-  if (all) {
+  const std::size_t domain = domain_index(s, d);
+  if (s.ownership.split_part(domain)) {
+    // Over several processes each builds an equal share of the flagged rows, and all share them
+    // (distribution.hpp): the same rows as one process builds. Not by owner: the rows due
+    // gather where the material flows (the impact end of a Taylor bar), on one process.
+    std::vector<std::uint8_t> flagged(static_cast<std::size_t>(n));
+    for (Index i = 0; i < n; ++i)
+      flagged[static_cast<std::size_t>(i)] = renewed(i) ? 1 : 0;
+    const std::vector<int> builder = row_builders(flagged, s.ownership.comm.size());
+    std::vector<std::uint8_t> mine(static_cast<std::size_t>(n), 0);
+    for (std::size_t i = 0; i < mine.size(); ++i)
+      mine[i] = builder[i] == s.ownership.comm.rank() ? 1 : 0;
+    NeighbourList fresh = find_neighbours(x, d.kernel.support, d.settings.shape, {}, mine);
+    remove_broken_pairs(d, fresh);
+    d.times.neighbours += seconds_since(start);
+    start = Clock::now();
+    ShapeFunctions fresh_shape = shape_functions(x, d.kernel.support, d.settings.shape, fresh,
+                                                 degenerate, damaged, second_derivatives(d));
+    share_rows(s, builder, fresh, fresh_shape, degenerate);
+    merge_rows(d, fresh, fresh_shape, flagged);
+    for (Index i = 0; i < n; ++i)
+      if (renewed(i)) d.kernel.isolated[static_cast<std::size_t>(i)] = 0;
+  } else if (all) {
     d.kernel.list = find_neighbours(x, d.kernel.support, d.settings.shape);
     remove_broken_pairs(d, d.kernel.list);
     d.times.neighbours += seconds_since(start);
@@ -382,13 +412,18 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
   const double limit = d.settings.renewal_strain;
   // Renewing folds F-hat into F^n, which leaves F-hat F^n and so these supports as they are:
   // the partial renewal that may follow uses them.
-  d.kernel.support = current_supports(d);
+  d.kernel.support = current_supports(s, d);
   const Supports& support = d.kernel.support;
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const KernelShape shape = d.settings.shape;
-  Index count = 0;
-#pragma omp parallel for schedule(static) reduction(+ : count) if (n > 4096)
-  for (Index i = 0; i < n; ++i) {
+  // Over several processes each decides for its own rows, and all share the decisions.
+  const std::size_t domain = domain_index(s, d);
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const std::size_t decided = share ? share->owned.size() : static_cast<std::size_t>(n);
+  std::vector<double> decision(static_cast<std::size_t>(n), 0.0);
+#pragma omp parallel for schedule(static) if (decided > 4096)
+  for (std::size_t m = 0; m < decided; ++m) {
+    const Index i = share ? share->owned[m] : static_cast<Index>(m);
     const auto ii = static_cast<std::size_t>(i);
     const Eigen::Map<const Mat3> f(d.fields.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());
@@ -412,8 +447,13 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
       renew =
           unit_distance(shape, z) > 1.0 + limit || (bonds_broke && d.kernel.bonds.is_broken(i, j));
     }
-    rows[ii] = renew ? 1 : 0;
-    count += renew ? 1 : 0;
+    decision[ii] = renew ? 1.0 : 0.0;
+  }
+  if (share) share_columns(s, domain, decision.data(), 1);
+  Index count = 0;
+  for (Index i = 0; i < n; ++i) {
+    rows[static_cast<std::size_t>(i)] = decision[static_cast<std::size_t>(i)] != 0.0 ? 1 : 0;
+    count += rows[static_cast<std::size_t>(i)];
   }
   d.times.neighbours += seconds_since(start);
   return count;

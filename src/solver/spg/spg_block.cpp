@@ -64,7 +64,12 @@ class SpgBlock final : public Block {
     if (spg::splittable(s.spg[domain_])) spg::share_particles(s, domain_);
   }
 
-  void synchronise(State& s) override { spg::synchronise(s, domain_); }
+  void synchronise(State& s, Gather what) override {
+    spg::synchronise(s, domain_,
+                     what == Gather::dump    ? spg::Scope::everything
+                     : what == Gather::state ? spg::Scope::to_root
+                                             : spg::Scope::histories);
+  }
 
   void split_times(const State& s, PhaseTimes& phases) const override {
     const spg::SpgTimes& t = s.spg[domain_].times;
