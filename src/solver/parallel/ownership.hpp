@@ -26,6 +26,8 @@ struct ParticleShare {
   /// The particles whose rows hold an owned one (the transpose) that another process owns: their
   /// u-hat (Eq. 13's gather) arrives through `column_ghosts`.
   ExchangePlan column_ghosts;
+  /// Wall seconds in this part's exchanges and synchronisations (the timing's "exchange" row).
+  double exchange_seconds = 0.0;
 };
 
 struct Ownership {

@@ -16,6 +16,7 @@
 /// After a renewal the free particles are bisected again by their current positions
 /// (`reown_particles`): particles that flowed across a border change process there, and each
 /// process receives everything the particles it now reads carry (`migrate`).
+#include <chrono>
 #include <cstddef>
 
 #include "solver/state.hpp"
@@ -35,6 +36,15 @@ std::size_t domain_index(const State& s, const Domain& d);
 /// The share of part `domain` from the node owners (s.ownership.owner), with its exchange plans.
 /// Collective.
 void share_particles(State& s, std::size_t domain);
+
+/// Runs `exchange` and charges its wall time to the part's exchange seconds (when split).
+template <class Exchange>
+void timed_exchange(State& s, std::size_t domain, Exchange&& exchange) {
+  const auto start = std::chrono::steady_clock::now();
+  exchange();
+  if (parallel::ParticleShare* share = s.ownership.split_part(domain))
+    share->exchange_seconds += seconds_since(start);
+}
 
 /// What a synchronisation carries, from each particle's owner.
 enum class Scope {

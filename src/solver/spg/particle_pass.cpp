@@ -285,7 +285,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
     // Over several processes each first receives what the check reads of every particle, so
     // the check and the renewal run whole and alike everywhere (distribution.hpp).
-    synchronise(s, domain, Scope::check);
+    timed_exchange(s, domain, [&] { synchronise(s, domain, Scope::check); });
     const auto bonds_start = Clock::now();
     const long broke = break_bonds(s, d);
     d.times.bonds += seconds_since(bonds_start);
@@ -301,7 +301,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       const std::vector<int> previous_owner = s.ownership.split_part(domain)->owner;
       reown_particles(s, domain);
       share_particles(s, domain);
-      migrate(s, domain, previous_owner);
+      timed_exchange(s, domain, [&] { migrate(s, domain, previous_owner); });
       ++s.ownership.generation;  // the halo follows the new rows and owners
     }
   }

@@ -77,8 +77,10 @@ Advanced advanced_particles(const parallel::ParticleShare* share, Index n) {
   return {nullptr, static_cast<std::size_t>(n)};
 }
 
-// Columns of a 3 x count field from the particles' owners into their ghosts.
-void exchange_columns(parallel::ExchangePlan& plan, Eigen::Matrix3Xd& field) {
+// Columns of a 3 x count field from the particles' owners into their ghosts, timed as exchange.
+void exchange_columns(parallel::ParticleShare& share, parallel::ExchangePlan& plan,
+                      Eigen::Matrix3Xd& field) {
+  const auto start = std::chrono::steady_clock::now();
   plan.exchange(
       [&](Index j, double* out) {
         for (int c = 0; c < 3; ++c)
@@ -88,6 +90,7 @@ void exchange_columns(parallel::ExchangePlan& plan, Eigen::Matrix3Xd& field) {
         for (int c = 0; c < 3; ++c)
           field(c, j) = in[c];
       });
+  share.exchange_seconds += seconds_since(start);
 }
 
 }  // namespace
@@ -98,6 +101,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   const Index n = d.count();
   parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
   const Advanced mine = advanced_particles(share, n);
+  const double exchanged = share ? share->exchange_seconds : 0.0;  // before this update
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
   const bool damping = d.settings.damping > 0.0 && smooths_velocity(mode);
@@ -118,7 +122,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
                    (mc ? d.kernel.smoothed_mass[ii] : d.particles.mass[ii]);
       nd.acceleration.col(d.particles.nodes[ii]) = acc.col(i);
     }
-    if (share) exchange_columns(share->row_ghosts, acc);  // a_J of Eq. 30 over the rows
+    if (share) exchange_columns(*share, share->row_ghosts, acc);  // a_J of Eq. 30 over the rows
   }
   // Over the rows: u-hat_I += dt sum_J phi_J(X_I) a_J (Eqs. 29-30; `direct`: dt a_I), and the
   // PDAMP impulses of I's pairs at both ends; a pinned particle takes its share of the smoothed
@@ -176,7 +180,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
     }
   }
-  if (share) exchange_columns(share->column_ghosts, d.fields.unsmoothed);  // Eq. 13's u-hat_J
+  if (share)
+    exchange_columns(*share, share->column_ghosts, d.fields.unsmoothed);  // Eq. 13's u-hat_J
   if (damping) {  // an exact sum: the same bits whichever process holds which particle
     core::ExactSum removed;
     for (std::size_t m = 0; m < mine.count; ++m)
@@ -206,7 +211,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     nd.velocity.col(d.particles.nodes[ii]) = u;
     if (!std::isfinite(u.sum())) bad = std::min(bad, d.particles.nodes[ii]);
   }
-  d.times.smoothing += seconds_since(start);
+  d.times.smoothing += seconds_since(start) - (share ? share->exchange_seconds - exchanged : 0.0);
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
 }
 
@@ -233,14 +238,14 @@ void absorb_constraints(State& s, Domain& d) {
   }
   if (share) {  // every process takes part in the exchange when any particle changed
     any = s.ownership.comm.bitwise_or(any ? 1U : 0U) != 0;
-    if (any) exchange_columns(share->row_ghosts, change);
+    if (any) exchange_columns(*share, share->row_ghosts, change);
   }
   // PDAMP's pairs read next cycle the row partners' u-hat as this cycle leaves it: the ghosts'
   // again from their owners, after what the conditions changed (pinned and smoothed).
   const bool damping =
       share && d.settings.damping > 0.0 && smooths_velocity(d.settings.stabilization);
   if (!any) {
-    if (damping) exchange_columns(share->column_ghosts, d.fields.unsmoothed);
+    if (damping) exchange_columns(*share, share->column_ghosts, d.fields.unsmoothed);
     return;
   }
   if (d.settings.stabilization == Stabilization::direct) {
@@ -264,7 +269,7 @@ void absorb_constraints(State& s, Domain& d) {
     }
     d.fields.unsmoothed.col(j) += sum;
   }
-  if (damping) exchange_columns(share->column_ghosts, d.fields.unsmoothed);
+  if (damping) exchange_columns(*share, share->column_ghosts, d.fields.unsmoothed);
 }
 
 SmoothedKinetic smoothed_kinetic(const State& s, const Domain& d) {

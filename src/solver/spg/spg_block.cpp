@@ -80,6 +80,10 @@ class SpgBlock final : public Block {
       phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
       phases.seconds[PhaseTimes::elements] -= split[k];
     }
+    if (const parallel::ParticleShare* share = s.ownership.split_part(domain_)) {
+      phases.seconds[PhaseTimes::exchange] += share->exchange_seconds;
+      phases.seconds[PhaseTimes::elements] -= share->exchange_seconds;
+    }
   }
 
  private:
