@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <malloc.h>
+
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -91,6 +93,11 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
 
 int main(int argc, char** argv) {
   mcdyna::cli::adopt_passive_wait(argv);  // first: it may start the program again
+  // Buffers of a particle's size and more are allocated and freed every cycle (SPG velocity
+  // changes, contact hits, exchange buffers). Given back to the system each time, they come
+  // back as fresh pages: page faults were 4.7 % of an FDS h 0.15 run (perf). Keep freed memory.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string error;
   if (!translate_lsdyna_arguments(args, error)) {
