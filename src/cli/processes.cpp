@@ -28,7 +28,12 @@ std::string processes_text(const core::Communicator& comm) {
 }
 
 // Every process needs a share of the deformable elements and particles.
-std::string process_count_problem(const solver::State& s, const core::Communicator& comm) {
+std::string process_problem(const solver::State& s, const core::Communicator& comm,
+                            bool angular_budget) {
+  // The budget reads every particle's velocities every cycle; over several processes each
+  // holds current values for its own particles only (spg/distribution.hpp).
+  if (angular_budget && comm.size() > 1)
+    return "--spg-angular-budget runs on one process only; run it without mpirun";
   long entities = s.solids.count();
   for (const solver::spg::Domain& d : s.spg)
     entities += d.count();

@@ -18,7 +18,9 @@ std::filesystem::path process_file(const std::filesystem::path& path,
                                    const core::Communicator& comm);
 /// " on each of N processes", or "" on one process.
 std::string processes_text(const core::Communicator& comm);
-/// A problem when there are more processes than deformable elements and particles, or "".
-std::string process_count_problem(const solver::State& s, const core::Communicator& comm);
+/// Why the run cannot go over these processes, or "": more processes than deformable elements
+/// and particles, or `--spg-angular-budget` (`angular_budget`) over several.
+std::string process_problem(const solver::State& s, const core::Communicator& comm,
+                            bool angular_budget);
 
 }  // namespace mcdyna::cli

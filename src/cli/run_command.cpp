@@ -370,16 +370,8 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
       dom.settings.step_estimate = options.spg_step == "eigen"
                                        ? solver::spg::StepEstimate::eigenvalue
                                        : solver::spg::StepEstimate::nearest_neighbour;
-  if (options.spg_angular_budget && comm.size() > 1) {
-    // The budget reads every particle's velocities every cycle; over several processes each
-    // holds current values for its own particles only (spg/distribution.hpp).
-    fmt::print(err,
-               "mcdyna: error: --spg-angular-budget runs on one process only; run it without "
-               "mpirun\nmcdyna: {} not run\n",
-               options.deck.string());
-    return kRunUsage;
-  }
-  if (const std::string problem = process_count_problem(*state, comm); !problem.empty()) {
+  if (const std::string problem = process_problem(*state, comm, options.spg_angular_budget);
+      !problem.empty()) {
     fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", problem, options.deck.string());
     return kRunUsage;
   }

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   for (int j = 0; j < n && share != nullptr; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     if (share->owner[jj] != start.owner[static_cast<std::size_t>(dom.particles.nodes[jj])]) ++moved;
-    owners[jj] = share->owns[jj];
+    owners[jj] = share->owned.flag[jj];
   }
   MPI_Allreduce(MPI_IN_PLACE, owners.data(), n, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   for (const int k : owners)

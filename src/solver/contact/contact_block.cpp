@@ -5,6 +5,7 @@
 
 #include "solver/block.hpp"
 #include "solver/contact/contact.hpp"
+#include "solver/parallel/owned_gather.hpp"
 
 namespace mcdyna::solver {
 
@@ -35,22 +36,20 @@ class ContactBlock final : public Block {
   // a node counts on the node's owner only (the others' copies of it are not used).
   void share_motion(State& s) {
     if (generation_ != s.ownership.generation) list_nodes(s);
-    const int me = s.ownership.comm.rank();
-    std::vector<double> mine;
-    for (const Index n : nodes_)
-      if (s.ownership.owner[static_cast<std::size_t>(n)] == me) {
-        mine.insert(mine.end(), s.nodes.position.col(n).data(), s.nodes.position.col(n).data() + 3);
-        mine.insert(mine.end(), s.nodes.velocity.col(n).data(), s.nodes.velocity.col(n).data() + 3);
-      }
-    const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
-    const double* in = all.data();
-    for (int r = 0; r < s.ownership.comm.size(); ++r)
-      for (const Index n : nodes_) {
-        if (s.ownership.owner[static_cast<std::size_t>(n)] != r) continue;
-        std::copy(in, in + 3, s.nodes.position.col(n).data());
-        std::copy(in + 3, in + 6, s.nodes.velocity.col(n).data());
-        in += 6;
-      }
+    Eigen::Matrix3Xd& x = s.nodes.position;
+    Eigen::Matrix3Xd& v = s.nodes.velocity;
+    parallel::gather_owned(
+        s.ownership.comm, nodes_.size(),
+        [&](std::size_t k) { return s.ownership.owner[static_cast<std::size_t>(nodes_[k])]; },
+        [&](std::size_t k, std::vector<double>& out) {
+          out.insert(out.end(), x.col(nodes_[k]).data(), x.col(nodes_[k]).data() + 3);
+          out.insert(out.end(), v.col(nodes_[k]).data(), v.col(nodes_[k]).data() + 3);
+        },
+        [&](std::size_t k, const double*& in) {
+          std::copy(in, in + 3, x.col(nodes_[k]).data());
+          std::copy(in + 3, in + 6, v.col(nodes_[k]).data());
+          in += 6;
+        });
   }
 
   // The interface's deformable nodes, ascending.

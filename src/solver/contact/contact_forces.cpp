@@ -11,6 +11,7 @@
 #include "core/exact_sum.hpp"
 #include "solver/contact/contact.hpp"
 #include "solver/contact/segment_geometry.hpp"
+#include "solver/parallel/owned_gather.hpp"
 
 namespace mcdyna::solver::contact {
 
@@ -218,7 +219,6 @@ struct Resultants {
 };
 
 // A hit as doubles, for the processes to share them (one list packs and unpacks).
-constexpr int kHitValues = 15;
 template <class Visit>
 void hit_values(Hit& h, Visit&& visit) {
   double segment = h.segment;
@@ -250,22 +250,18 @@ std::vector<Hit> pass_hits(const State& s, const Interface& c, const Pass& p) {
       hits[static_cast<std::size_t>(k)] =
           contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
   if (!split) return hits;
-  std::vector<double> mine;
-  mine.reserve(static_cast<std::size_t>(kHitValues) * hits.size() /
-               static_cast<std::size_t>(own.comm.size()));
-  for (Index k = 0; k < n; ++k)
-    if (owner(k) == me)
-      hit_values(hits[static_cast<std::size_t>(k)],
-                 [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
-  const std::vector<double> all = own.comm.all_gather_varying(mine);
-  const double* in = all.data();
-  for (int r = 0; r < own.comm.size(); ++r)
-    for (Index k = 0; k < n; ++k)
-      if (owner(k) == r)
-        hit_values(hits[static_cast<std::size_t>(k)], [&](double* v, int count) {
+  parallel::gather_owned(
+      own.comm, hits.size(), [&](std::size_t k) { return owner(static_cast<Index>(k)); },
+      [&](std::size_t k, std::vector<double>& out) {
+        hit_values(hits[k],
+                   [&](const double* v, int count) { out.insert(out.end(), v, v + count); });
+      },
+      [&](std::size_t k, const double*& in) {
+        hit_values(hits[k], [&](double* v, int count) {
           std::copy(in, in + count, v);
           in += count;
         });
+      });
   return hits;
 }
 

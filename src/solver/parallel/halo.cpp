@@ -95,12 +95,12 @@ void Halo::rebuild(State& s) {
     const ParticleShare* share = own.split_part(k);
     if (share == nullptr) continue;
     const spg::Domain& dom = s.spg[k];
-    size_.particles += static_cast<Index>(share->owned.size());
-    size_.rows += static_cast<Index>(share->stressed.size());
+    size_.particles += static_cast<Index>(share->owned.index.size());
+    size_.rows += static_cast<Index>(share->stressed.index.size());
     size_.particle_ghosts += share->row_ghosts.ghosts() + share->column_ghosts.ghosts();
     size_.particle_bytes +=
         share->row_ghosts.received_bytes() + share->column_ghosts.received_bytes();
-    for (const Index j : share->stressed) {
+    for (const Index j : share->stressed.index) {
       const auto jj = static_cast<std::size_t>(j);
       for (Index p = dom.kernel.list.offsets[jj]; p < dom.kernel.list.offsets[jj + 1]; ++p) {
         const Index node = dom.particles.nodes[static_cast<std::size_t>(

@@ -6,6 +6,7 @@
 
 #include "core/communicator.hpp"
 #include "solver/parallel/exchange_plan.hpp"
+#include "solver/spg/particle_subset.hpp"
 
 namespace mcdyna::solver::parallel {
 
@@ -16,10 +17,9 @@ namespace mcdyna::solver::parallel {
 struct ParticleShare {
   bool split = false;      ///< false: every process computes the whole part (replicated)
   std::vector<int> owner;  ///< process of each particle
-  /// Owned particles, and `stressed`: owned or holding an owned particle in their row, ascending
-  /// with a flag per particle (spg::ParticleSubset's layout, without the dependency).
-  std::vector<std::uint8_t> owns, stresses;
-  std::vector<Index> owned, stressed;
+  /// The particles it owns, and those it computes the stress of: owned or holding an owned
+  /// particle in their row.
+  spg::ParticleSubset owned, stressed;
   /// The particles in the rows of the owned ones that another process owns: their accelerations
   /// (Eq. 30's scatter) and constraint changes arrive through `row_ghosts`.
   ExchangePlan row_ghosts;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solver/parallel/decomposition.hpp"
+#include "solver/parallel/owned_gather.hpp"
 
 namespace mcdyna::solver::spg {
 
@@ -94,31 +95,31 @@ void share_particles(State& s, std::size_t domain) {
   const auto n = static_cast<std::size_t>(d.count());
   share.split = true;
   share.owner.resize(n);
-  share.owns.assign(n, 0);
-  share.stresses.assign(n, 0);
-  share.owned.clear();
-  share.stressed.clear();
+  share.owned.flag.assign(n, 0);
+  share.stressed.flag.assign(n, 0);
+  share.owned.index.clear();
+  share.stressed.index.clear();
   for (std::size_t j = 0; j < n; ++j) {
     share.owner[j] = s.ownership.owner[static_cast<std::size_t>(d.particles.nodes[j])];
     if (share.owner[j] == me) {
-      share.owns[j] = 1;
-      share.stresses[j] = 1;
-      share.owned.push_back(static_cast<Index>(j));
+      share.owned.flag[j] = 1;
+      share.stressed.flag[j] = 1;
+      share.owned.index.push_back(static_cast<Index>(j));
     }
   }
   // The rows holding an owned particle (its transpose), and the two ghost layers.
   std::vector<std::uint8_t> row_ghost(n, 0), column_ghost(n, 0);
-  for (const Index i : share.owned) {
+  for (const Index i : share.owned.index) {
     const auto ii = static_cast<std::size_t>(i);
     for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto j = static_cast<std::size_t>(d.kernel.transpose.rows[static_cast<std::size_t>(t)]);
-      share.stresses[j] = 1;
-      if (!share.owns[j]) column_ghost[j] = 1;
+      share.stressed.flag[j] = 1;
+      if (!share.owned.flag[j]) column_ghost[j] = 1;
     }
     for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
       const auto j =
           static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
-      if (!share.owns[j]) row_ghost[j] = 1;
+      if (!share.owned.flag[j]) row_ghost[j] = 1;
     }
   }
   // PDAMP's pairs read the previous u-hat of the row partners as well.
@@ -126,7 +127,7 @@ void share_particles(State& s, std::size_t domain) {
     for (std::size_t j = 0; j < n; ++j)
       column_ghost[j] = column_ghost[j] | row_ghost[j];
   for (std::size_t j = 0; j < n; ++j)
-    if (share.stresses[j]) share.stressed.push_back(static_cast<Index>(j));
+    if (share.stressed.flag[j]) share.stressed.index.push_back(static_cast<Index>(j));
   share.row_ghosts = parallel::ExchangePlan(comm, share.owner, row_ghost, 3);
   share.column_ghosts = parallel::ExchangePlan(comm, share.owner, column_ghost, 3);
 }
@@ -135,29 +136,19 @@ void synchronise(State& s, std::size_t domain, Scope scope) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   if (share == nullptr) return;
   Domain& d = s.spg[domain];
-  const core::Communicator& comm = s.ownership.comm;
-  std::vector<double> mine;
-  const bool to_root = scope == Scope::to_root || scope == Scope::histories;
-  if (!to_root || comm.rank() != 0)
-    for (const Index j : share->owned)
-      particle_values(s, d, j, scope,
-                      [&](const double* v, int count) { mine.insert(mine.end(), v, v + count); });
-  std::vector<int> counts;
-  const std::vector<double> all =
-      to_root ? comm.gather_to_root(mine, counts) : comm.all_gather_varying(mine);
-  if (to_root && comm.rank() != 0) return;
-  // Unpacked in the order they were packed: process by process, each one's particles ascending.
-  const double* in = all.data();
-  for (int r = to_root ? 1 : 0; r < comm.size(); ++r)
-    for (Index j = 0; j < d.count(); ++j) {
-      if (share->owner[static_cast<std::size_t>(j)] != r) continue;
-      particle_values(s, d, j, scope, [&](double* v, int count) {
-        std::copy(in, in + count, v);
-        in += count;
-      });
-    }
-  if (in != all.data() + all.size())
-    throw std::logic_error("spg::synchronise: the processes' shares do not match");
+  parallel::gather_owned(
+      s.ownership.comm, share->owner.size(), [&](std::size_t j) { return share->owner[j]; },
+      [&](std::size_t j, std::vector<double>& out) {
+        particle_values(s, d, static_cast<Index>(j), scope,
+                        [&](const double* v, int count) { out.insert(out.end(), v, v + count); });
+      },
+      [&](std::size_t j, const double*& in) {
+        particle_values(s, d, static_cast<Index>(j), scope, [&](double* v, int count) {
+          std::copy(in, in + count, v);
+          in += count;
+        });
+      },
+      scope == Scope::to_root || scope == Scope::histories);
 }
 
 void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner) {
@@ -167,8 +158,8 @@ void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owne
   const auto n = static_cast<std::size_t>(d.count());
   // What this process reads from now on: its stressed rows and the particles in them (their
   // nodes' x and v, and for its own particles' rows the accelerations and u-hat).
-  std::vector<std::uint8_t> wanted(share->stresses);
-  for (const Index i : share->stressed)
+  std::vector<std::uint8_t> wanted(share->stressed.flag);
+  for (const Index i : share->stressed.index)
     for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
          p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p)
       wanted[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])] = 1;
@@ -193,19 +184,15 @@ void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owne
 void share_columns(const State& s, std::size_t domain, double* values, int width) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   const auto w = static_cast<std::size_t>(width);
-  std::vector<double> mine;
-  mine.reserve(share->owned.size() * w);
-  for (const Index j : share->owned)
-    mine.insert(mine.end(), values + w * static_cast<std::size_t>(j),
-                values + w * (static_cast<std::size_t>(j) + 1));
-  const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
-  const double* in = all.data();
-  for (int r = 0; r < s.ownership.comm.size(); ++r)
-    for (std::size_t j = 0; j < share->owner.size(); ++j)
-      if (share->owner[j] == r) {
+  parallel::gather_owned(
+      s.ownership.comm, share->owner.size(), [&](std::size_t j) { return share->owner[j]; },
+      [&](std::size_t j, std::vector<double>& out) {
+        out.insert(out.end(), values + w * j, values + w * (j + 1));
+      },
+      [&](std::size_t j, const double*& in) {
         std::copy(in, in + w, values + w * j);
         in += w;
-      }
+      });
 }
 
 std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int processes) {

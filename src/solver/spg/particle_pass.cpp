@@ -67,11 +67,11 @@ void mass_factors(Domain& d) {
 
 // Every particle takes the largest factor asked for by the rows it is in (over the transpose);
 // over several processes each takes its own particles (`owned`), then they share the masses.
-void grow_row_masses(Domain& d, const std::vector<Index>* owned) {
-  const std::size_t count = owned ? owned->size() : static_cast<std::size_t>(d.count());
+void grow_row_masses(Domain& d, const ParticleSubset* owned) {
+  const std::size_t count = members(owned, d.count());
 #pragma omp parallel for schedule(static, 256) if (count > 512)
   for (std::size_t m = 0; m < count; ++m) {
-    const Index k = owned ? (*owned)[m] : static_cast<Index>(m);
+    const Index k = member(owned, m);
     const auto kk = static_cast<std::size_t>(k);
     double factor = 0.0;
     for (Index t = d.kernel.transpose.offsets[kk]; t < d.kernel.transpose.offsets[kk + 1]; ++t)
@@ -306,8 +306,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     }
   }
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
-  const std::vector<Index>* stressed = share ? &share->stressed : nullptr;
-  const std::vector<Index>* owned = share ? &share->owned : nullptr;
+  const ParticleSubset* stressed = share ? &share->stressed : nullptr;
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
   if (d.settings.step_estimate == StepEstimate::eigenvalue) {
     const auto estimate_start = Clock::now();
     recalibrate_stiffness_length(s, d, renewed);
@@ -327,7 +327,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
   int mass_added = 0;
   const bool control = d.settings.mode_control > 0.0;
   if (s.mass_scaling_dt > 0.0) mass_factors(d);
-  const std::size_t rows = stressed ? stressed->size() : static_cast<std::size_t>(n);
+  const std::size_t rows = members(stressed, n);
   // The material's deviatoric model, visited once for the whole pass.
   std::visit(
       [&](const auto& model) {
@@ -341,11 +341,12 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
           Index local_non_finite = std::numeric_limits<Index>::max();
 #pragma omp for schedule(static, 128) nowait
           for (std::size_t m = 0; m < rows; ++m) {
-            const Index j = stressed ? (*stressed)[m] : static_cast<Index>(m);
+            const Index j = member(stressed, m);
             const Outcome o = particle_update(s, d, mat, model, j, step);
             d.fields.step[static_cast<std::size_t>(j)] = std::isfinite(o.step) ? o.step : 0.0;
             if (control) mode_control_update(s, d, j);
-            if (o.released && (!share || share->owns[static_cast<std::size_t>(j)])) ++released;
+            if (o.released && (!share || share->owned.flag[static_cast<std::size_t>(j)]))
+              ++released;
             if (o.mass_added) mass_added = 1;
             if (o.inverted) {
               local_inverted = std::min(local_inverted, j);
@@ -398,10 +399,10 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
 
   // Internal forces, gathered per particle over the pairs (J, I) of its transpose, with the
   // mode-control force -(g_I - sum_J phi_I(X_J) g_J) = -(D^T g)_I (mode_control.cpp).
-  const std::size_t forced = owned ? owned->size() : static_cast<std::size_t>(n);
+  const std::size_t forced = members(owned, n);
 #pragma omp parallel for schedule(static, 256) if (forced > 512)
   for (std::size_t m = 0; m < forced; ++m) {
-    const Index i = owned ? (*owned)[m] : static_cast<Index>(m);
+    const Index i = member(owned, m);
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
     for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {

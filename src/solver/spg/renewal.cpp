@@ -43,10 +43,11 @@ Supports current_supports(const State& s, const Domain& d) {
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
   const std::size_t domain = domain_index(s, d);
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
-  const std::size_t count = share ? share->owned.size() : static_cast<std::size_t>(d.count());
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
+  const std::size_t count = members(owned, d.count());
 #pragma omp parallel for schedule(static) if (count > 4096)
   for (std::size_t m = 0; m < count; ++m) {
-    const Index i = share ? share->owned[m] : static_cast<Index>(m);
+    const Index i = member(owned, m);
     const Mat3 f = Eigen::Map<const Mat3>(d.fields.deformation.col(i).data()) *
                    Eigen::Map<const Mat3>(d.kernel.reference_deformation.col(i).data());
     const Eigen::Map<const Mat3> a0(d.particles.initial_support.col(i).data());
@@ -419,11 +420,12 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
   // Over several processes each decides for its own rows, and all share the decisions.
   const std::size_t domain = domain_index(s, d);
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
-  const std::size_t decided = share ? share->owned.size() : static_cast<std::size_t>(n);
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
+  const std::size_t decided = members(owned, n);
   std::vector<double> decision(static_cast<std::size_t>(n), 0.0);
 #pragma omp parallel for schedule(static) if (decided > 4096)
   for (std::size_t m = 0; m < decided; ++m) {
-    const Index i = share ? share->owned[m] : static_cast<Index>(m);
+    const Index i = member(owned, m);
     const auto ii = static_cast<std::size_t>(i);
     const Eigen::Map<const Mat3> f(d.fields.deformation.col(i).data());
     const Mat3 green = 0.5 * (f.transpose() * f - Mat3::Identity());

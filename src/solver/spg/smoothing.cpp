@@ -63,18 +63,10 @@ inline Vec3 pair_impulse(const PairEnd& i, const PairEnd& j) {
   return (i.share * i.mass * j.mass * along / ((i.mass + j.mass) * r2)) * r;
 }
 
-// The particles a process advances: its own over several processes (distribution.hpp), else all.
-struct Advanced {
-  const std::vector<Index>* list = nullptr;
-  std::size_t count = 0;
-  [[nodiscard]] Index operator[](std::size_t m) const {
-    return list ? (*list)[m] : static_cast<Index>(m);
-  }
-};
-
-Advanced advanced_particles(const parallel::ParticleShare* share, Index n) {
-  if (share) return {&share->owned, share->owned.size()};
-  return {nullptr, static_cast<std::size_t>(n)};
+// The particles a process advances: its own over several processes (distribution.hpp), else all
+// (null).
+const ParticleSubset* advanced_particles(const parallel::ParticleShare* share) {
+  return share ? &share->owned : nullptr;
 }
 
 // Columns of a 3 x count field from the particles' owners into their ghosts, timed as exchange.
@@ -100,7 +92,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   Nodes& nd = s.nodes;
   const Index n = d.count();
   parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
-  const Advanced mine = advanced_particles(share, n);
+  const ParticleSubset* mine = advanced_particles(share);
+  const std::size_t advanced = members(mine, n);
   const double exchanged = share ? share->exchange_seconds : 0.0;  // before this update
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
@@ -110,9 +103,9 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   Eigen::Matrix3Xd& acc = d.scratch.acceleration;
   acc.resize(3, n);
   if (smooths_velocity(mode)) {
-#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
-    for (std::size_t m = 0; m < mine.count; ++m) {
-      const Index i = mine[m];
+#pragma omp parallel for schedule(static, 256) if (advanced > 512)
+    for (std::size_t m = 0; m < advanced; ++m) {
+      const Index i = member(mine, m);
       const auto ii = static_cast<std::size_t>(i);
       if (d.kernel.pinned[ii]) {
         acc.col(i).setZero();
@@ -135,9 +128,9 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     d.scratch.damping_removed.assign(static_cast<std::size_t>(n), 0.0);
   }
   if (smooths_velocity(mode)) {
-#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
-    for (std::size_t m = 0; m < mine.count; ++m) {
-      const Index i = mine[m];
+#pragma omp parallel for schedule(static, 256) if (advanced > 512)
+    for (std::size_t m = 0; m < advanced; ++m) {
+      const Index i = member(mine, m);
       const auto ii = static_cast<std::size_t>(i);
       const bool free_i = d.kernel.pinned[ii] == 0;
       const bool damp_i = damping && free_i;
@@ -175,8 +168,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
           (undamped.squaredNorm() - d.fields.unsmoothed.col(i).squaredNorm());
     }
   } else {
-    for (std::size_t m = 0; m < mine.count; ++m) {  // plain nodal integration: all pinned
-      const Index i = mine[m];
+    for (std::size_t m = 0; m < advanced; ++m) {  // plain nodal integration: all pinned
+      const Index i = member(mine, m);
       d.fields.unsmoothed.col(i) = nd.velocity.col(d.particles.nodes[static_cast<std::size_t>(i)]);
     }
   }
@@ -184,8 +177,8 @@ Index advance_velocities(State& s, Domain& d, double dt) {
     exchange_columns(*share, share->column_ghosts, d.fields.unsmoothed);  // Eq. 13's u-hat_J
   if (damping) {  // an exact sum: the same bits whichever process holds which particle
     core::ExactSum removed;
-    for (std::size_t m = 0; m < mine.count; ++m)
-      removed.add(d.scratch.damping_removed[static_cast<std::size_t>(mine[m])]);
+    for (std::size_t m = 0; m < advanced; ++m)
+      removed.add(d.scratch.damping_removed[static_cast<std::size_t>(member(mine, m))]);
     d.fields.damping_energy += share ? s.ownership.comm.sum(removed) : removed.value();
   }
 
@@ -193,9 +186,9 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // from u-hat only (which holds the pinned particles' node velocities).
   const Eigen::Matrix3Xd& source = d.fields.unsmoothed;
   Index bad = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static, 256) reduction(min : bad) if (mine.count > 512)
-  for (std::size_t m = 0; m < mine.count; ++m) {
-    const Index i = mine[m];
+#pragma omp parallel for schedule(static, 256) reduction(min : bad) if (advanced > 512)
+  for (std::size_t m = 0; m < advanced; ++m) {
+    const Index i = member(mine, m);
     const auto ii = static_cast<std::size_t>(i);
     Vec3 u = source.col(i);
     if (!d.kernel.pinned[ii] && mc) {
@@ -219,13 +212,14 @@ void absorb_constraints(State& s, Domain& d) {
   const Nodes& nd = s.nodes;
   const Index n = d.count();
   parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
-  const Advanced mine = advanced_particles(share, n);
+  const ParticleSubset* mine = advanced_particles(share);
+  const std::size_t advanced = members(mine, n);
   // The change each constraint or wall made to a smoothed particle's velocity, as an impulse
   // p_I = m_I change_I on that particle.
   Eigen::Matrix3Xd change = Eigen::Matrix3Xd::Zero(3, n);
   bool any = false;
-  for (std::size_t m = 0; m < mine.count; ++m) {
-    const Index i = mine[m];
+  for (std::size_t m = 0; m < advanced; ++m) {
+    const Index i = member(mine, m);
     const auto ii = static_cast<std::size_t>(i);
     const Vec3 v = nd.velocity.col(d.particles.nodes[ii]);
     if (d.kernel.pinned[ii]) {
@@ -257,9 +251,9 @@ void absorb_constraints(State& s, Domain& d) {
   // takes. The smoothed velocity follows over the next steps; this step the particle moves
   // with the constrained velocity (no penetration). The share that falls on pinned particles
   // is not applied (they have their own constraints and FE forces).
-#pragma omp parallel for schedule(static, 256) if (mine.count > 512)
-  for (std::size_t m = 0; m < mine.count; ++m) {
-    const Index j = mine[m];
+#pragma omp parallel for schedule(static, 256) if (advanced > 512)
+  for (std::size_t m = 0; m < advanced; ++m) {
+    const Index j = member(mine, m);
     const auto jj = static_cast<std::size_t>(j);
     if (d.kernel.pinned[jj]) continue;
     Vec3 sum = Vec3::Zero();

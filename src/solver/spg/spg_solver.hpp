@@ -13,6 +13,7 @@
 /// velocity is integrated like an FE node's (one velocity for the node), they take part in the
 /// smoothing of their neighbours as an unsmoothed value, and receive their share of the
 /// neighbours' accelerations so that total momentum is kept exactly (see smoothing.cpp).
+#include "solver/spg/particle_subset.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::spg {
@@ -167,20 +168,6 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
 /// stabilisation stresses (Eq. 10) from the strain gradient of the current positions in each
 /// row's reference, their forces (Eq. 9) added to the nodes, their work to d.fields.mode_energy.
 void strain_gradient_stabilization(State& s, Domain& d);
-
-/// A subset of a domain's particles: a flag per particle and the flagged ones ascending.
-struct ParticleSubset {
-  std::vector<std::uint8_t> flag;
-  std::vector<Index> index;
-};
-/// The k-th particle of `subset`, or k itself for the whole domain (subset null).
-inline Index member(const ParticleSubset* subset, std::size_t k) {
-  return subset != nullptr ? subset->index[k] : static_cast<Index>(k);
-}
-/// How many particles a loop over `subset` (null: all `count`) visits.
-inline std::size_t members(const ParticleSubset* subset, Index count) {
-  return subset != nullptr ? subset->index.size() : static_cast<std::size_t>(count);
-}
 
 /// ITB 1's stabilisation linearised with the elastic tangent (for the power iteration of
 /// frequency.cpp): the forces of a displacement field x (3 x count, per particle). With `rows`
