@@ -29,11 +29,14 @@ std::string processes_text(const core::Communicator& comm) {
 
 // Every process needs a share of the deformable elements and particles.
 std::string process_problem(const solver::State& s, const core::Communicator& comm,
-                            bool angular_budget) {
-  // The budget reads every particle's velocities every cycle; over several processes each
-  // holds current values for its own particles only (spg/distribution.hpp).
+                            bool angular_budget, bool step_log) {
+  // The budget reads every particle's velocities every cycle and the step log any particle's
+  // kernel row; over several processes each holds current values for its own particles and
+  // the rows it reads only (spg/distribution.hpp).
   if (angular_budget && comm.size() > 1)
     return "--spg-angular-budget runs on one process only; run it without mpirun";
+  if (step_log && comm.size() > 1)
+    return "--step-log runs on one process only; run it without mpirun";
   long entities = s.solids.count();
   for (const solver::spg::Domain& d : s.spg)
     entities += d.count();

@@ -19,8 +19,9 @@ std::filesystem::path process_file(const std::filesystem::path& path,
 /// " on each of N processes", or "" on one process.
 std::string processes_text(const core::Communicator& comm);
 /// Why the run cannot go over these processes, or "": more processes than deformable elements
-/// and particles, or `--spg-angular-budget` (`angular_budget`) over several.
+/// and particles, or `--spg-angular-budget` (`angular_budget`) or `--step-log` (`step_log`) over
+/// several.
 std::string process_problem(const solver::State& s, const core::Communicator& comm,
-                            bool angular_budget);
+                            bool angular_budget, bool step_log);
 
 }  // namespace mcdyna::cli

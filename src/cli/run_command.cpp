@@ -35,6 +35,7 @@
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
 #include "solver/spg/angular_budget.hpp"
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::cli {
@@ -191,8 +192,13 @@ void print_angular_budgets(std::ostream& out, const solver::State& s,
 }
 
 // After the run: what the particle kernels did (neighbours, renewals, bonds, degeneracy).
+// Collective over several processes: process 0 receives the rows it does not keep itself.
 void print_spg_summary(std::ostream& out, const solver::State& s) {
-  for (const solver::spg::Domain& d : s.spg) {
+  for (std::size_t k = 0; k < s.spg.size(); ++k) {
+    const solver::spg::Domain& d = s.spg[k];
+    const solver::spg::NeighbourList gathered =
+        s.ownership.split_part(k) ? solver::spg::rows_on_root(s, k) : solver::spg::NeighbourList{};
+    const solver::spg::NeighbourList& rows = s.ownership.split_part(k) ? gathered : d.kernel.list;
     if (d.kernel.step_bound.initial_critical > 0.0) {
       fmt::print(out,
                  "  SPG part {}: critical step of the initial arrangement {:.4e} s (largest "
@@ -211,7 +217,7 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
                            : 0);
       fmt::print(out, "\n");
     }
-    const double pairs = static_cast<double>(d.kernel.list.neighbours.size());
+    const double pairs = static_cast<double>(rows.neighbours.size());
     fmt::print(out,
                "  SPG part {}: {} particles, {:.1f} neighbours per particle, {} kernel renewals "
                "({:.1f} % of the rows per renewal), {} bonds broken\n",
@@ -223,7 +229,7 @@ void print_spg_summary(std::ostream& out, const solver::State& s) {
                    : 0.0,
                d.diagnostics.broken_bonds);
     if (d.diagnostics.broken_bonds > 0) {
-      const solver::spg::Pieces p = solver::spg::count_pieces(d);
+      const solver::spg::Pieces p = solver::spg::count_pieces(rows);
       fmt::print(out,
                  "  SPG part {}: {} separate piece(s) with no neighbours across ({} of them "
                  "single particles; the largest has {} particles)\n",
@@ -370,7 +376,8 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
       dom.settings.step_estimate = options.spg_step == "eigen"
                                        ? solver::spg::StepEstimate::eigenvalue
                                        : solver::spg::StepEstimate::nearest_neighbour;
-  if (const std::string problem = process_problem(*state, comm, options.spg_angular_budget);
+  if (const std::string problem =
+          process_problem(*state, comm, options.spg_angular_budget, !options.step_log.empty());
       !problem.empty()) {
     fmt::print(err, "mcdyna: error: {}\nmcdyna: {} not run\n", problem, options.deck.string());
     return kRunUsage;

@@ -157,15 +157,28 @@ void Communicator::broadcast(std::string& text, int root) const {
 #endif
 }
 
-std::vector<std::vector<std::int32_t>> Communicator::all_to_all(
-    const std::vector<std::vector<std::int32_t>>& to) const {
-  std::vector<std::vector<std::int32_t>> from(static_cast<std::size_t>(size_));
+namespace {
+
 #ifdef MCDYNA_WITH_MPI
-  if (mpi_ && size_ > 1) {
-    std::vector<int> send_counts(static_cast<std::size_t>(size_)), recv_counts(send_counts.size());
+MPI_Datatype mpi_type(std::int32_t) {
+  return MPI_INT32_T;
+}
+MPI_Datatype mpi_type(double) {
+  return MPI_DOUBLE;
+}
+#endif
+
+// Personalised all-to-all of lists of any length: the counts first, then the lists.
+template <class T>
+std::vector<std::vector<T>> all_to_all_lists(bool mpi, int size,
+                                             const std::vector<std::vector<T>>& to) {
+  std::vector<std::vector<T>> from(static_cast<std::size_t>(size));
+#ifdef MCDYNA_WITH_MPI
+  if (mpi && size > 1) {
+    std::vector<int> send_counts(static_cast<std::size_t>(size)), recv_counts(send_counts.size());
     std::vector<int> send_offsets(send_counts.size()), recv_offsets(send_counts.size());
-    std::vector<std::int32_t> send;
-    for (int r = 0; r < size_; ++r) {
+    std::vector<T> send;
+    for (int r = 0; r < size; ++r) {
       const auto& list = to[static_cast<std::size_t>(r)];
       send_offsets[static_cast<std::size_t>(r)] = static_cast<int>(send.size());
       send_counts[static_cast<std::size_t>(r)] = static_cast<int>(list.size());
@@ -173,24 +186,38 @@ std::vector<std::vector<std::int32_t>> Communicator::all_to_all(
     }
     MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
     int total = 0;
-    for (int r = 0; r < size_; ++r) {
+    for (int r = 0; r < size; ++r) {
       recv_offsets[static_cast<std::size_t>(r)] = total;
       total += recv_counts[static_cast<std::size_t>(r)];
     }
-    std::vector<std::int32_t> received(static_cast<std::size_t>(total));
-    MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_INT32_T,
-                  received.data(), recv_counts.data(), recv_offsets.data(), MPI_INT32_T,
+    std::vector<T> received(static_cast<std::size_t>(total));
+    MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), mpi_type(T{}),
+                  received.data(), recv_counts.data(), recv_offsets.data(), mpi_type(T{}),
                   MPI_COMM_WORLD);
-    for (int r = 0; r < size_; ++r) {
+    for (int r = 0; r < size; ++r) {
       const auto begin = received.begin() + recv_offsets[static_cast<std::size_t>(r)];
       from[static_cast<std::size_t>(r)].assign(begin,
                                                begin + recv_counts[static_cast<std::size_t>(r)]);
     }
     return from;
   }
+#else
+  (void)mpi;
 #endif
   from[0] = to[0];
   return from;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::int32_t>> Communicator::all_to_all(
+    const std::vector<std::vector<std::int32_t>>& to) const {
+  return all_to_all_lists(mpi_, size_, to);
+}
+
+std::vector<std::vector<double>> Communicator::all_to_all(
+    const std::vector<std::vector<double>>& to) const {
+  return all_to_all_lists(mpi_, size_, to);
 }
 
 void Communicator::exchange(const std::vector<int>& peers,

@@ -48,6 +48,8 @@ class Communicator {
   /// Personalised all-to-all: to[r] goes to process r; returns what each process sent here.
   [[nodiscard]] std::vector<std::vector<std::int32_t>> all_to_all(
       const std::vector<std::vector<std::int32_t>>& to) const;
+  [[nodiscard]] std::vector<std::vector<double>> all_to_all(
+      const std::vector<std::vector<double>>& to) const;
   /// Point-to-point with the given peers at once: send[k] to peers[k], receive[k] (already
   /// sized) from peers[k]. Returns when every message has arrived.
   void exchange(const std::vector<int>& peers, const std::vector<std::vector<double>>& send,

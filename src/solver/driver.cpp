@@ -219,7 +219,7 @@ class Loop {
       elements_ += b->elements();
       particles_ += b->particles();
     }
-    if (comm_.size() > 1) decompose();
+    if (comm_.size() > 1) decompose(resume != nullptr);
     if (resume) {
       // The dump was taken at the top of a cycle: its forces and step estimate are in the
       // state and the resume point; computing them again would advance the stresses again.
@@ -305,11 +305,15 @@ class Loop {
 
  private:
   // Over several processes: the decomposition and this process's halo (parallel/halo.hpp).
-  void decompose() {
+  // A restart takes the owners its dumps were written with: the particles were owned again at
+  // kernel renewals, and each dump holds the kernel rows its process read (spg/distribution.hpp).
+  void decompose(bool resume) {
     std::vector<std::uint8_t> replicated(static_cast<std::size_t>(s_.nodes.count()), 0);
     for (const std::unique_ptr<Block>& b : blocks_)
       b->mark_replicated(s_, replicated);
-    halo_.emplace(s_, parallel::decompose(s_, comm_.size()), std::move(replicated), comm_);
+    parallel::Decomposition d = parallel::decompose(s_, comm_.size());
+    if (resume && s_.ownership.owner.size() == d.owner.size()) d.owner = s_.ownership.owner;
+    halo_.emplace(s_, d, std::move(replicated), comm_);
   }
 
   // The halo again when the owners or the SPG rows changed (a renewal re-owns particles,

@@ -235,8 +235,9 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 6:
       return ar(s.contacts);
     case 7:
-      // s.ownership is left out: the time loop rebuilds it from the deck and the process count.
-      return ar(s.time, s.cycle, s.step, s.critical_step, s.controlling_element,
+      // Of s.ownership only the owners: a restart on the same process count takes them (each
+      // dump holds the SPG rows its process read); the time loop rebuilds the rest.
+      return ar(s.ownership.owner, s.time, s.cycle, s.step, s.critical_step, s.controlling_element,
                 s.controlling_domain, s.controlling_particle, s.external_work, s.eroded_kinetic,
                 s.eroded_internal, s.eroded_hourglass, s.initial_energy, s.initial_mass);
     default:

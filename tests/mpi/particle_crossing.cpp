@@ -3,8 +3,10 @@
 // current positions at every kernel renewal (spg/distribution.hpp), so as the bar shortens and
 // spreads on the wall the particles near a cut move to the other process with their rows, bonds and
 // material state. The test passes when particles changed process during the run, every particle has
-// exactly one owner at the end, and the run ended normally. tests/mpi/same_bits.sh checks that the
-// histories of the same deck keep the bits of one process.
+// exactly one owner at the end, each process keeps exactly the kernel rows it reads (its stressed
+// rows, fewer than all), the transposes of its own particles are complete (as many pairs as the
+// rows of all processes' own particles hold them), and the run ended normally.
+// tests/mpi/same_bits.sh checks that the histories of the same deck keep the bits of one process.
 #include <mpi.h>
 
 #include <cstdio>
@@ -46,13 +48,40 @@ int main(int argc, char** argv) {
   MPI_Allreduce(MPI_IN_PLACE, owners.data(), n, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   for (const int k : owners)
     if (k == 1) ++owned;
+  // Rows kept here against rows read here, and how often each particle sits in an own row.
+  int kept = 0, misplaced = 0;
+  std::vector<int> in_rows(static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n && share != nullptr; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const bool has_row = dom.kernel.list.count(j) > 0;
+    kept += has_row ? 1 : 0;
+    if (has_row != (share->stressed.flag[jj] != 0)) ++misplaced;
+    if (!share->owned.flag[jj]) continue;
+    for (int p = dom.kernel.list.offsets[jj]; p < dom.kernel.list.offsets[jj + 1]; ++p)
+      ++in_rows[static_cast<std::size_t>(dom.kernel.list.neighbours[static_cast<std::size_t>(p)])];
+  }
+  MPI_Allreduce(MPI_IN_PLACE, in_rows.data(), n, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  int incomplete = 0;
+  for (int j = 0; j < n && share != nullptr; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (share->owned.flag[jj] &&
+        dom.kernel.transpose.offsets[jj + 1] - dom.kernel.transpose.offsets[jj] != in_rows[jj])
+      ++incomplete;
+  }
+  int largest_kept = kept;
+  MPI_Allreduce(MPI_IN_PLACE, &misplaced, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &incomplete, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &largest_kept, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   const bool ok = result.reason == mcdyna::solver::StopReason::end_cycle && share != nullptr &&
-                  moved > 0 && owned == n && world.size() > 1;
+                  moved > 0 && owned == n && world.size() > 1 && misplaced == 0 &&
+                  incomplete == 0 && largest_kept < n;
   if (world.rank() == 0)
     std::printf(
         "%d processes, %ld cycles: %d of %d particles on another process than at the start, %d "
-        "with exactly one owner: %s\n",
-        world.size(), s->cycle, moved, n, owned, ok ? "pass" : "FAIL");
+        "with exactly one owner; at most %d rows kept per process, %d rows kept but not read or "
+        "read but not kept, %d own particles with an incomplete transpose: %s\n",
+        world.size(), s->cycle, moved, n, owned, largest_kept, misplaced, incomplete,
+        ok ? "pass" : "FAIL");
   MPI_Finalize();
   return ok ? 0 : 1;
 }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -53,17 +54,24 @@ Bonds initial_bonds(const Domain& d) {
   return b;
 }
 
+// Over several processes each decides the bonds of its own particles (the pair's lower end),
+// from the positions and plastic strains every process received for the check, and all share
+// the bonds that broke: every process then holds the same bonds.
 long break_bonds(const State& s, Domain& d) {
   const SpgSettings& st = d.settings;
   if (!st.bond_failure) return 0;
   Bonds& b = d.kernel.bonds;
   const auto& ep = d.fields.points.plastic_strain;
   const Eigen::Matrix3Xd& x = s.nodes.position;
-  long broken = 0;
-  // Each bond is stored at both ends; decide it once (i < j) and mark both entries, so the
-  // result is the same for any thread count.
-#pragma omp parallel for schedule(dynamic, 512) reduction(+ : broken) if (d.count() > 4096)
-  for (Index i = 0; i < d.count(); ++i) {
+  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
+  const std::size_t count = members(owned, d.count());
+  // Each bond is stored at both ends; it is decided once, at its lower end (i < j), and its
+  // entry (i, j) listed in particle order, so the result is the same for any thread count.
+  std::vector<std::vector<Index>> broke_at(count);
+#pragma omp parallel for schedule(dynamic, 512) if (count > 4096)
+  for (std::size_t m = 0; m < count; ++m) {
+    const Index i = member(owned, m);
     for (Index k = b.offsets[static_cast<std::size_t>(i)];
          k < b.offsets[static_cast<std::size_t>(i) + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
@@ -76,22 +84,33 @@ long break_bonds(const State& s, Domain& d) {
                               x.col(d.particles.nodes[static_cast<std::size_t>(i)]))
                                  .norm() /
                              b.length[kk];
-      if (!(stretch > st.failure_stretch)) continue;
-      b.broken[kk] = 1;
-      // The mirror entry (j, i): written by this thread only, as (i, j) with i < j is owned here.
-      const auto first = b.partners.begin() + b.offsets[static_cast<std::size_t>(j)];
-      const auto last = b.partners.begin() + b.offsets[static_cast<std::size_t>(j) + 1];
-      b.broken[static_cast<std::size_t>(std::lower_bound(first, last, i) - b.partners.begin())] = 1;
-      ++broken;
+      if (stretch > st.failure_stretch) broke_at[m].push_back(k);
     }
   }
-  d.diagnostics.broken_bonds += broken;
-  return broken;
+  std::vector<double> broken;
+  for (const std::vector<Index>& entries : broke_at)
+    broken.insert(broken.end(), entries.begin(), entries.end());
+  if (share) broken = s.ownership.comm.all_gather_varying(broken);
+  for (const double entry : broken) {
+    const auto kk = static_cast<std::size_t>(entry);
+    b.broken[kk] = 1;
+    // The mirror entry (j, i).
+    const Index i = static_cast<Index>(
+        std::upper_bound(b.offsets.begin(), b.offsets.end(), static_cast<Index>(kk)) -
+        b.offsets.begin() - 1);
+    const Index j = b.partners[kk];
+    const auto first = b.partners.begin() + b.offsets[static_cast<std::size_t>(j)];
+    const auto last = b.partners.begin() + b.offsets[static_cast<std::size_t>(j) + 1];
+    b.broken[static_cast<std::size_t>(std::lower_bound(first, last, i) - b.partners.begin())] = 1;
+  }
+  d.diagnostics.broken_bonds += static_cast<long>(broken.size());
+  return static_cast<long>(broken.size());
 }
 
-Pieces count_pieces(const Domain& d) {
+Pieces count_pieces(const NeighbourList& list) {
+  const auto n = static_cast<Index>(list.offsets.size() - 1);
   // Union-find over the neighbour pairs, with path halving.
-  std::vector<Index> root(static_cast<std::size_t>(d.count()));
+  std::vector<Index> root(static_cast<std::size_t>(n));
   std::iota(root.begin(), root.end(), 0);
   auto find = [&](Index i) {
     while (root[static_cast<std::size_t>(i)] != i) {
@@ -101,14 +120,14 @@ Pieces count_pieces(const Domain& d) {
     }
     return i;
   };
-  for (Index i = 0; i < d.count(); ++i)
-    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
-         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-      const Index a = find(i), c = find(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+  for (Index i = 0; i < n; ++i)
+    for (Index p = list.offsets[static_cast<std::size_t>(i)];
+         p < list.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
+      const Index a = find(i), c = find(list.neighbours[static_cast<std::size_t>(p)]);
       if (a != c) root[static_cast<std::size_t>(std::max(a, c))] = std::min(a, c);
     }
-  std::vector<Index> size(static_cast<std::size_t>(d.count()), 0);
-  for (Index i = 0; i < d.count(); ++i)
+  std::vector<Index> size(static_cast<std::size_t>(n), 0);
+  for (Index i = 0; i < n; ++i)
     ++size[static_cast<std::size_t>(find(i))];
   Pieces p;
   for (const Index s : size) {

@@ -205,68 +205,171 @@ std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int proc
   return builder;
 }
 
-void share_rows(const State& s, const std::vector<int>& builder, NeighbourList& fresh,
-                ShapeFunctions& shape, std::vector<Index>& degenerate) {
-  const auto n = static_cast<Index>(builder.size());
-  const int me = s.ownership.comm.rank();
-  auto flagged = [&](Index i) { return builder[static_cast<std::size_t>(i)] >= 0; };
-  // Per row built here: its count, then per pair the neighbour, phi and grad phi; then the
-  // degenerate rows.
-  std::vector<double> mine;
-  for (Index i = 0; i < n; ++i) {
-    if (builder[static_cast<std::size_t>(i)] != me) continue;
-    mine.push_back(fresh.count(i));
-    for (Index p = fresh.offsets[static_cast<std::size_t>(i)];
-         p < fresh.offsets[static_cast<std::size_t>(i) + 1]; ++p) {
-      const auto pp = static_cast<std::size_t>(p);
-      mine.push_back(fresh.neighbours[pp]);
-      mine.push_back(shape.value[pp]);
-      mine.insert(mine.end(), shape.gradient.col(p).data(), shape.gradient.col(p).data() + 3);
-    }
+namespace {
+
+// The processes that read row `row` of `list` under `owner`: the owner of the row and of every
+// particle in it, ascending, once each.
+void readers_of(const NeighbourList& list, Index row, const std::vector<int>& owner,
+                std::vector<int>& readers) {
+  readers.assign(1, owner[static_cast<std::size_t>(row)]);
+  for (Index p = list.offsets[static_cast<std::size_t>(row)];
+       p < list.offsets[static_cast<std::size_t>(row) + 1]; ++p)
+    readers.push_back(
+        owner[static_cast<std::size_t>(list.neighbours[static_cast<std::size_t>(p)])]);
+  std::sort(readers.begin(), readers.end());
+  readers.erase(std::unique(readers.begin(), readers.end()), readers.end());
+}
+
+bool reads(const std::vector<int>& readers, int process) {
+  return std::binary_search(readers.begin(), readers.end(), process);
+}
+
+// A row in a message: its particle, its pair count, its per-row values, then per pair the
+// neighbour, phi and grad phi.
+constexpr std::size_t kRowHeader = 7, kPairValues = 5;
+
+void pack_row(const Domain& d, const NeighbourList& list, const ShapeFunctions& shape, Index row,
+              std::vector<double>& out) {
+  const auto r = static_cast<std::size_t>(row);
+  out.insert(out.end(),
+             {static_cast<double>(row), static_cast<double>(list.count(row)), d.kernel.length[r],
+              d.kernel.renewal_volume[r], d.fields.mode_residual(0, row),
+              d.fields.mode_residual(1, row), d.fields.mode_residual(2, row)});
+  for (Index p = list.offsets[r]; p < list.offsets[r + 1]; ++p) {
+    const auto pp = static_cast<std::size_t>(p);
+    out.insert(out.end(), {static_cast<double>(list.neighbours[pp]), shape.value[pp],
+                           shape.gradient(0, p), shape.gradient(1, p), shape.gradient(2, p)});
   }
-  mine.push_back(static_cast<double>(degenerate.size()));
-  mine.insert(mine.end(), degenerate.begin(), degenerate.end());
-  const std::vector<double> all = s.ownership.comm.all_gather_varying(mine);
-  // Where each row starts in `all` (process by process, rows ascending), then the rows in
-  // particle order.
-  std::vector<std::size_t> start(static_cast<std::size_t>(n), 0);
-  degenerate.clear();
-  std::size_t at = 0;
-  for (int r = 0; r < s.ownership.comm.size(); ++r) {
-    for (Index i = 0; i < n; ++i) {
-      if (builder[static_cast<std::size_t>(i)] != r) continue;
-      start[static_cast<std::size_t>(i)] = at;
-      at += 1 + 5 * static_cast<std::size_t>(all[at]);
-    }
-    const auto count = static_cast<std::size_t>(all[at++]);
-    for (std::size_t k = 0; k < count; ++k)
-      degenerate.push_back(static_cast<Index>(all[at++]));
-  }
-  if (at != all.size()) throw std::logic_error("spg::share_rows: the processes' rows do not match");
+}
+
+}  // namespace
+
+std::vector<Index> share_degenerate(const State& s, const std::vector<Index>& mine) {
+  const std::vector<double> all =
+      s.ownership.comm.all_gather_varying(std::vector<double>(mine.begin(), mine.end()));
+  std::vector<Index> degenerate(all.begin(), all.end());
   std::sort(degenerate.begin(), degenerate.end());
-  NeighbourList list;
-  list.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (Index i = 0; i < n; ++i)
-    list.offsets[static_cast<std::size_t>(i) + 1] =
-        list.offsets[static_cast<std::size_t>(i)] +
-        (flagged(i) ? static_cast<Index>(all[start[static_cast<std::size_t>(i)]]) : 0);
-  const auto pairs = static_cast<std::size_t>(list.offsets.back());
-  list.neighbours.resize(pairs);
-  ShapeFunctions out;
-  out.value.resize(pairs);
-  out.gradient.resize(3, static_cast<Eigen::Index>(pairs));
-  for (Index i = 0; i < n; ++i) {
-    if (!flagged(i)) continue;
-    const double* in = &all[start[static_cast<std::size_t>(i)] + 1];
-    for (Index q = list.offsets[static_cast<std::size_t>(i)];
-         q < list.offsets[static_cast<std::size_t>(i) + 1]; ++q, in += 5) {
-      list.neighbours[static_cast<std::size_t>(q)] = static_cast<Index>(in[0]);
-      out.value[static_cast<std::size_t>(q)] = in[1];
-      out.gradient.col(q) = Eigen::Vector3d(in[2], in[3], in[4]);
+  return degenerate;
+}
+
+void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& previous_owner,
+                       const std::vector<int>& builder, const NeighbourList& fresh,
+                       const ShapeFunctions& fresh_shape, NeighbourList& incoming,
+                       ShapeFunctions& incoming_shape, std::vector<std::uint8_t>& take) {
+  Domain& d = s.spg[domain];
+  const core::Communicator& comm = s.ownership.comm;
+  const int me = comm.rank();
+  const auto n = static_cast<std::size_t>(d.count());
+  std::vector<int> owner(n);
+  for (std::size_t j = 0; j < n; ++j)
+    owner[j] = s.ownership.owner[static_cast<std::size_t>(d.particles.nodes[j])];
+  // Rows out: a built row to every other process that reads it; an unchanged row, from its
+  // previous owner, to the processes that read it now and did not before.
+  const ParticleSubset& was_read = s.ownership.split_part(domain)->stressed;  // the old share
+  std::vector<std::vector<double>> to(static_cast<std::size_t>(comm.size()));
+  std::vector<int> readers, before;
+  std::vector<std::uint8_t> keep(n, 0);  // read here before and now, unchanged
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto row = static_cast<Index>(j);
+    if (builder[j] >= 0) {
+      if (builder[j] != me) continue;
+      readers_of(fresh, row, owner, readers);
+      for (const int r : readers)
+        if (r != me) pack_row(d, fresh, fresh_shape, row, to[static_cast<std::size_t>(r)]);
+      continue;
+    }
+    if (!was_read.flag[j]) continue;
+    readers_of(d.kernel.list, row, owner, readers);
+    keep[j] = reads(readers, me) ? 1 : 0;
+    if (previous_owner[j] != me) continue;
+    readers_of(d.kernel.list, row, previous_owner, before);
+    for (const int r : readers)
+      if (!reads(before, r))
+        pack_row(d, d.kernel.list, d.kernel.shape, row, to[static_cast<std::size_t>(r)]);
+  }
+  const std::vector<std::vector<double>> from = comm.all_to_all(to);
+  std::vector<const double*> arrived(n, nullptr);
+  for (const std::vector<double>& message : from)
+    for (std::size_t at = 0; at < message.size();) {
+      arrived[static_cast<std::size_t>(message[at])] = &message[at];
+      at += kRowHeader + kPairValues * static_cast<std::size_t>(message[at + 1]);
+    }
+  // Rows in: the merge takes every row from `incoming` but the kept ones.
+  std::vector<std::uint8_t> built_here(n, 0);
+  take.assign(n, 1);
+  incoming.offsets.assign(n + 1, 0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto row = static_cast<Index>(j);
+    Index count = 0;
+    if (arrived[j] != nullptr) {
+      count = static_cast<Index>(arrived[j][1]);
+    } else if (builder[j] == me) {
+      readers_of(fresh, row, owner, readers);
+      built_here[j] = reads(readers, me) ? 1 : 0;
+      if (built_here[j]) count = fresh.count(row);
+    } else if (keep[j]) {
+      take[j] = 0;
+    }
+    incoming.offsets[j + 1] = incoming.offsets[j] + count;
+  }
+  const auto pairs = static_cast<std::size_t>(incoming.offsets.back());
+  incoming.neighbours.resize(pairs);
+  incoming_shape.value.resize(pairs);
+  incoming_shape.gradient.resize(3, static_cast<Eigen::Index>(pairs));
+  incoming_shape.hessian.resize(6, 0);  // a split part has no second derivatives (splittable)
+  for (std::size_t j = 0; j < n; ++j) {
+    Index q = incoming.offsets[j];
+    if (const double* in = arrived[j]) {
+      if (builder[j] < 0) {  // an unchanged row keeps the values of its renewal
+        d.kernel.length[j] = in[2];
+        d.kernel.renewal_volume[j] = in[3];
+        d.fields.mode_residual.col(static_cast<Eigen::Index>(j)) = Vec3(in[4], in[5], in[6]);
+      }
+      in += kRowHeader;
+      for (; q < incoming.offsets[j + 1]; ++q, in += kPairValues) {
+        incoming.neighbours[static_cast<std::size_t>(q)] = static_cast<Index>(in[0]);
+        incoming_shape.value[static_cast<std::size_t>(q)] = in[1];
+        incoming_shape.gradient.col(q) = Vec3(in[2], in[3], in[4]);
+      }
+    } else if (built_here[j]) {
+      for (Index p = fresh.offsets[j]; p < fresh.offsets[j + 1]; ++p, ++q) {
+        incoming.neighbours[static_cast<std::size_t>(q)] =
+            fresh.neighbours[static_cast<std::size_t>(p)];
+        incoming_shape.value[static_cast<std::size_t>(q)] =
+            fresh_shape.value[static_cast<std::size_t>(p)];
+        incoming_shape.gradient.col(q) = fresh_shape.gradient.col(p);
+      }
     }
   }
-  fresh = std::move(list);
-  shape = std::move(out);
+}
+
+NeighbourList rows_on_root(const State& s, std::size_t domain) {
+  const Domain& d = s.spg[domain];
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const auto n = static_cast<std::size_t>(d.count());
+  std::vector<double> mine;  // per own row: the row, its count, its neighbours
+  for (const Index i : share->owned.index) {
+    mine.push_back(i);
+    mine.push_back(d.kernel.list.count(i));
+    for (Index p = d.kernel.list.offsets[static_cast<std::size_t>(i)];
+         p < d.kernel.list.offsets[static_cast<std::size_t>(i) + 1]; ++p)
+      mine.push_back(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+  }
+  std::vector<int> counts;
+  const std::vector<double> all = s.ownership.comm.gather_to_root(mine, counts);
+  std::vector<const double*> start(n, nullptr);
+  for (std::size_t at = 0; at < all.size(); at += 2 + static_cast<std::size_t>(all[at + 1]))
+    start[static_cast<std::size_t>(all[at])] = &all[at];
+  NeighbourList list;
+  list.offsets.assign(n + 1, 0);
+  for (std::size_t j = 0; j < n; ++j)
+    list.offsets[j + 1] = list.offsets[j] + (start[j] ? static_cast<Index>(start[j][1]) : 0);
+  list.neighbours.reserve(static_cast<std::size_t>(list.offsets.back()));
+  for (std::size_t j = 0; j < n; ++j)
+    if (start[j])
+      list.neighbours.insert(list.neighbours.end(), start[j] + 2,
+                             start[j] + 2 + static_cast<std::size_t>(start[j][1]));
+  return list;
 }
 
 void reown_particles(State& s, std::size_t domain) {

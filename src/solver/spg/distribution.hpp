@@ -1,6 +1,6 @@
 #pragma once
-/// An SPG part over several processes (issue 25, manual/architecture.md "Many processes"). Every
-/// process holds the whole part; parallel::ParticleShare says what it computes:
+/// An SPG part over several processes (issue 25, manual/architecture.md "Many processes").
+/// parallel::ParticleShare says what a process computes:
 ///   - the stress of its `stressed` rows: those of its own particles and every row that holds one
 ///     of them (the transpose), since f_I = -sum_J (w sigma F^-T)_J grad phi_I(X_J) runs over
 ///     the rows J holding I. Rows on a border are computed by each process that needs them,
@@ -8,14 +8,17 @@
 ///   - the velocities of its own particles (Eqs. 29-30 and 13), after the accelerations of the
 ///     particles in their rows (`row_ghosts`) and then the u-hat of the particles whose rows hold
 ///     them (`column_ghosts`) arrived from their owners.
-/// The x and v of the nodes the stressed rows read come with the hexahedra's ghost nodes
-/// (parallel::Halo). At a kernel check every process first receives what the check reads of
-/// every particle (`synchronise`, Scope::check: positions, F-hat, pressure, ...), so bond
-/// failure, the choice of rows and the smoothed masses run whole and alike on every process;
-/// each process builds an equal share of the renewed rows and all share them (`share_rows`).
-/// After a renewal the free particles are bisected again by their current positions
-/// (`reown_particles`): particles that flowed across a border change process there, and each
-/// process receives everything the particles it now reads carry (`migrate`).
+/// A process keeps the kernel rows (lists, shape functions) of its stressed rows only; the other
+/// rows are empty there, and the transposes are complete for its own particles only. The
+/// per-particle values (masses, smoothed masses, pinned, supports, bonds) are the same on every
+/// process. The x and v of the nodes the stressed rows read come with the hexahedra's ghost
+/// nodes (parallel::Halo). At a kernel check every process first receives what the check reads
+/// of every particle (`synchronise`, Scope::check: positions, F-hat, pressure, ...); each decides
+/// the renewal of its own rows; the free particles are bisected again by their current positions
+/// (`reown_particles`); each process builds an equal share of the renewed rows and sends each to
+/// the processes that read it under the new owners, which also receive the unchanged rows they
+/// read from now on from the rows' previous owners (`redistribute_rows`); each process then
+/// receives everything the particles it now reads carry (`migrate`).
 #include <chrono>
 #include <cstddef>
 
@@ -72,16 +75,35 @@ void share_columns(const State& s, std::size_t domain, double* values, int width
 /// rows in particle order, in equal consecutive shares.
 std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int processes);
 
-/// A renewal's fresh rows (renewal.cpp): `fresh`, `shape` and `degenerate` hold the rows this
-/// process built (`builder`, from row_builders); on return they hold every flagged row, in
-/// particle order, as one process builds them (the other rows empty). Collective.
-void share_rows(const State& s, const std::vector<int>& builder, NeighbourList& fresh,
-                ShapeFunctions& shape, std::vector<Index>& degenerate);
+/// The degenerate rows (shape_functions) of every process, ascending. Collective.
+std::vector<Index> share_degenerate(const State& s, const std::vector<Index>& mine);
 
-/// After a renewal (with every process holding every value): the particles whose node no hexa,
-/// SPC or prescribed motion shares are bisected again by their current positions over the
-/// processes; their nodes' owners change in s.ownership.owner. The caller rebuilds the share
-/// and moves s.ownership.generation on, after which the time loop rebuilds the halo.
+/// The rows this process reads after a renewal (s.ownership.owner is already the new owners'),
+/// into `incoming` with `take` set for each row the renewal's merge takes from it: the flagged
+/// rows (builder >= 0) it reads, from their builders (`fresh` holds the rows built here); the
+/// unchanged rows it reads from now on, from their `previous_owner`, with their per-row values
+/// (kernel length, renewal volume, mode residual); and empty rows where it no longer reads a
+/// row. Rows it read before and still reads, unchanged, are left to the current lists
+/// (take 0). Collective.
+void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& previous_owner,
+                       const std::vector<int>& builder, const NeighbourList& fresh,
+                       const ShapeFunctions& fresh_shape, NeighbourList& incoming,
+                       ShapeFunctions& incoming_shape, std::vector<std::uint8_t>& take);
+
+/// After the share was first built (or rebuilt on a restart): drops the rows this process does
+/// not read and rebuilds the transposes, complete for its own particles (renewal.cpp).
+/// Collective.
+void keep_read_rows(State& s, Domain& d);
+
+/// The rows of every process's own particles, on process 0 (empty rows elsewhere), for the
+/// run's summary (neighbour pairs and separate pieces). Collective.
+NeighbourList rows_on_root(const State& s, std::size_t domain);
+
+/// At a renewal (after Scope::check: every process holds every position): the particles whose
+/// node no hexa, SPC or prescribed motion shares are bisected again by their current positions
+/// over the processes; their nodes' owners change in s.ownership.owner. The renewal then
+/// redistributes the rows and rebuilds the share; the caller migrates the particle values and
+/// moves s.ownership.generation on, after which the time loop rebuilds the halo.
 void reown_particles(State& s, std::size_t domain);
 
 }  // namespace mcdyna::solver::spg

@@ -290,6 +290,10 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     const long broke = break_bonds(s, d);
     d.times.bonds += seconds_since(bonds_start);
     const Index due = rows_to_renew(s, d, broke > 0, renewed);  // timed as neighbour search
+    // A renewal over several processes owns the particles again (distribution.hpp); each then
+    // receives what the particles it now reads carry from their previous owners.
+    const std::vector<int> previous_owner =
+        s.ownership.split_part(domain) ? s.ownership.split_part(domain)->owner : std::vector<int>{};
     if (due == d.count())
       renew_kernel(s, d);
     else if (due > 0)
@@ -298,9 +302,6 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
     if (due > 0 && s.ownership.split_part(domain)) {
-      const std::vector<int> previous_owner = s.ownership.split_part(domain)->owner;
-      reown_particles(s, domain);
-      share_particles(s, domain);
       timed_exchange(s, domain, [&] { migrate(s, domain, previous_owner); });
       ++s.ownership.generation;  // the halo follows the new rows and owners
     }
@@ -384,12 +385,14 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     agree_on_pass(s.ownership.comm, best, controlling, best_physical, controlling_physical,
                   inverted, non_finite, released, mass_added);
   d.diagnostics.released += released;
+  const double exchanged_before = share ? share->exchange_seconds : 0.0;
   if (mass_added) {
     grow_row_masses(d, owned);
-    synchronise(s, domain, Scope::masses);
+    timed_exchange(s, domain, [&] { synchronise(s, domain, Scope::masses); });
     smooth_masses(s, d);
   }
-  d.times.stress += seconds_since(start);
+  d.times.stress +=
+      seconds_since(start) - (share ? share->exchange_seconds - exchanged_before : 0.0);
   if (d.settings.stabilization == Stabilization::strain_gradient) {
     start = Clock::now();
     strain_gradient_stabilization(s, d);

@@ -106,6 +106,18 @@ Transpose transpose_of(const NeighbourList& l, Index n) {
   return t;
 }
 
+// grad phi_I(X_J) in transpose order, for the internal force.
+void copy_transpose_gradients(Domain& d) {
+  const Index n = d.count();
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t)
+      d.kernel.transpose.gradient.col(t) =
+          d.kernel.shape.gradient.col(d.kernel.transpose.pairs[static_cast<std::size_t>(t)]);
+  }
+}
+
 // The renewed rows of `fresh` (lists and shape functions computed for them alone) replace
 // those of the current lists; the other rows are kept as they are, in their own reference.
 // ITB 1 integrates the strain gradient with the second-derivative functions.
@@ -155,10 +167,17 @@ void merge_rows(Domain& d, const NeighbourList& fresh, const ShapeFunctions& fre
 // Measured on the FDS plate at h 0.15 (manual/verification.md): the run blew up from a torn
 // particle whose smoothed mass had fallen to 0.1 m-hat (just above kMinimumSmoothedMassShare),
 // at a sixth of the step its length and sound speed gave; with this factor it ran through.
-void update_mobility(Domain& d, double time) {
+// Over several processes each computes r for its own particles (their transposes are complete
+// there) from the rows it reads, and the mobility of the rows it reads once every process has
+// every r; the run's largest mobility is agreed on (the largest, at the lowest particle).
+void update_mobility(State& s, Domain& d) {
   const Index n = d.count();
   d.kernel.mobility.assign(static_cast<std::size_t>(n), 1.0);
   if (d.settings.stabilization != Stabilization::momentum_consistent) return;
+  const std::size_t domain = domain_index(s, d);
+  parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
+  const std::size_t count = members(owned, n);
   std::vector<double> inverse_mass_sum(static_cast<std::size_t>(n), 0.0), r(d.kernel.mobility);
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index k = 0; k < n; ++k) {
@@ -173,9 +192,9 @@ void update_mobility(Domain& d, double time) {
     }
     inverse_mass_sum[static_cast<std::size_t>(k)] = sum;
   }
-#pragma omp parallel for schedule(static) if (n > 4096)
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
+#pragma omp parallel for schedule(static) if (count > 4096)
+  for (std::size_t m = 0; m < count; ++m) {
+    const auto ii = static_cast<std::size_t>(member(owned, m));
     if (d.kernel.pinned[ii]) continue;
     double sum = 0.0;
     for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
@@ -185,6 +204,7 @@ void update_mobility(Domain& d, double time) {
     }
     r[ii] = d.particles.mass[ii] * sum;
   }
+  if (share) timed_exchange(s, domain, [&] { share_columns(s, domain, r.data(), 1); });
   // Normalised by the largest bound of the initial particle arrangement, where length / c is
   // the stable step (verified); Gershgorin alone overestimates at free surfaces, whose shape
   // functions have negative lobes (r up to 1.36 on the elastic-wave rod: 16 % more cycles for
@@ -201,11 +221,23 @@ void update_mobility(Domain& d, double time) {
           r[static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)])]);
     d.kernel.mobility[ii] = std::max(1.0, worst / d.kernel.mobility_scale);
   }
+  // The largest over the rows read here (first of equals: the lowest particle), then over the
+  // processes; a row's mobility is the same wherever it is read.
   const auto top = std::max_element(d.kernel.mobility.begin(), d.kernel.mobility.end());
-  if (*top > d.diagnostics.largest_mobility) {
-    d.diagnostics.largest_mobility = *top;
-    d.diagnostics.largest_mobility_particle = static_cast<Index>(top - d.kernel.mobility.begin());
-    d.diagnostics.largest_mobility_time = time;
+  double largest = *top;
+  auto at = static_cast<Index>(top - d.kernel.mobility.begin());
+  if (share) {
+    const std::vector<double> all = s.ownership.comm.all_gather({largest, static_cast<double>(at)});
+    for (std::size_t k = 0; k < all.size(); k += 2)
+      if (all[k] > largest || (all[k] == largest && static_cast<Index>(all[k + 1]) < at)) {
+        largest = all[k];
+        at = static_cast<Index>(all[k + 1]);
+      }
+  }
+  if (largest > d.diagnostics.largest_mobility) {
+    d.diagnostics.largest_mobility = largest;
+    d.diagnostics.largest_mobility_particle = at;
+    d.diagnostics.largest_mobility_time = s.time;
   }
 }
 
@@ -214,12 +246,18 @@ void update_mobility(Domain& d, double time) {
 // Smoothed masses (Eq. 20), gathered over the transpose: m_I = sum_J m-hat_J phi_I(X_J), the
 // gather weights psi_I(X_J) = m-hat_J phi_I(X_J) / m_I (Eq. 14), which particles are pinned, and
 // the node masses. Run at every renewal and whenever mass scaling changed a particle mass.
+// Over several processes each computes them for its own particles (their transposes are
+// complete there) and every process receives every particle's.
 void smooth_masses(State& s, Domain& d) {
   const Index n = d.count();
   const Stabilization mode = d.settings.stabilization;
-#pragma omp parallel for schedule(static) if (n > 4096)
-  for (Index i = 0; i < n; ++i) {
-    const auto ii = static_cast<std::size_t>(i);
+  const std::size_t domain = domain_index(s, d);
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  const ParticleSubset* owned = share ? &share->owned : nullptr;
+  const std::size_t count = members(owned, n);
+#pragma omp parallel for schedule(static) if (count > 4096)
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto ii = static_cast<std::size_t>(member(owned, k));
     double m = 0.0;
     for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
       const auto tt = static_cast<std::size_t>(t);
@@ -237,15 +275,31 @@ void smooth_masses(State& s, Domain& d) {
                      (mode == Stabilization::momentum_consistent &&
                       !(m > kMinimumSmoothedMassShare * d.particles.mass[ii]));
     d.kernel.pinned[ii] = pin ? 1 : 0;
-    const auto node = static_cast<std::size_t>(d.particles.nodes[ii]);
+  }
+  if (share) {
+    std::vector<double> shared(2 * static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+      shared[2 * i] = d.kernel.smoothed_mass[i];
+      shared[2 * i + 1] = d.kernel.pinned[i];
+    }
+    timed_exchange(s, domain, [&] { share_columns(s, domain, shared.data(), 2); });
+    for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+      d.kernel.smoothed_mass[i] = shared[2 * i];
+      d.kernel.pinned[i] = static_cast<std::uint8_t>(shared[2 * i + 1]);
+    }
+  }
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+    const bool pin = d.kernel.pinned[i] != 0;
+    const auto node = static_cast<std::size_t>(d.particles.nodes[i]);
     s.nodes.smoothed[node] = pin ? 0 : (mode == Stabilization::momentum_consistent ? 1 : 2);
     // Impulses of walls and constraints on a smoothed particle act on its smoothed momentum
     // m_I u_I (Eq. 19), so they see the smoothed mass.
     s.nodes.mass[node] =
-        pin ? d.particles.base_mass[ii]
-            : (mode == Stabilization::momentum_consistent ? m : d.particles.mass[ii]);
+        pin ? d.particles.base_mass[i]
+            : (mode == Stabilization::momentum_consistent ? d.kernel.smoothed_mass[i]
+                                                          : d.particles.mass[i]);
   }
-  update_mobility(d, s.time);
+  update_mobility(s, d);
 }
 
 Eigen::Matrix3Xd particle_positions(const State& s, const Domain& d) {
@@ -284,10 +338,15 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
       damaged[static_cast<std::size_t>(i)] = d.kernel.bonds.damage(i) > 0.0 ? 1 : 0;
   }
   const std::size_t domain = domain_index(s, d);
-  if (s.ownership.split_part(domain)) {
-    // Over several processes each builds an equal share of the flagged rows, and all share them
-    // (distribution.hpp): the same rows as one process builds. Not by owner: the rows due
-    // gather where the material flows (the impact end of a Taylor bar), on one process.
+  const double exchanged_before =
+      s.ownership.split_part(domain) ? s.ownership.split_part(domain)->exchange_seconds : 0.0;
+  if (const parallel::ParticleShare* share = s.ownership.split_part(domain)) {
+    // Over several processes (distribution.hpp): the particles are owned again by their current
+    // positions; each process builds an equal share of the flagged rows (not by owner: the
+    // rows due gather where the material flows, at the impact end of a Taylor bar, on one
+    // process) and sends each to the processes that read it under the new owners.
+    const std::vector<int> previous_owner = share->owner;
+    reown_particles(s, domain);
     std::vector<std::uint8_t> flagged(static_cast<std::size_t>(n));
     for (Index i = 0; i < n; ++i)
       flagged[static_cast<std::size_t>(i)] = renewed(i) ? 1 : 0;
@@ -299,10 +358,17 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     remove_broken_pairs(d, fresh);
     d.times.neighbours += seconds_since(start);
     start = Clock::now();
-    ShapeFunctions fresh_shape = shape_functions(x, d.kernel.support, d.settings.shape, fresh,
-                                                 degenerate, damaged, second_derivatives(d));
-    share_rows(s, builder, fresh, fresh_shape, degenerate);
-    merge_rows(d, fresh, fresh_shape, flagged);
+    const ShapeFunctions fresh_shape = shape_functions(x, d.kernel.support, d.settings.shape, fresh,
+                                                       degenerate, damaged, second_derivatives(d));
+    NeighbourList incoming;
+    ShapeFunctions incoming_shape;
+    std::vector<std::uint8_t> take;
+    timed_exchange(s, domain, [&] {
+      degenerate = share_degenerate(s, degenerate);
+      redistribute_rows(s, domain, previous_owner, builder, fresh, fresh_shape, incoming,
+                        incoming_shape, take);
+    });
+    merge_rows(d, incoming, incoming_shape, take);
     for (Index i = 0; i < n; ++i)
       if (renewed(i)) d.kernel.isolated[static_cast<std::size_t>(i)] = 0;
   } else if (all) {
@@ -326,14 +392,21 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   }
   for (Index i = 0; i < n; ++i)
     if (renewed(i)) d.fields.debris[static_cast<std::size_t>(i)] = 0;
+  d.kernel.transpose = transpose_of(d.kernel.list, n);
+  // Over several processes the shares follow the new owners and rows; the per-row values of
+  // the renewed rows are computed where the rows are read.
+  if (s.ownership.split_part(domain)) share_particles(s, domain);
+  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  auto read_here = [&](Index i) {
+    return share == nullptr || share->stressed.flag[static_cast<std::size_t>(i)] != 0;
+  };
   // The new row sees the same positions through new shape functions: its residual changes
   // without any motion, which is not work done (mode_control.cpp).
   if (d.settings.mode_control > 0.0)
     for (Index i = 0; i < n; ++i)
-      if (renewed(i)) d.fields.mode_residual.col(i) = mode_residual(s, d, i);
+      if (renewed(i) && read_here(i)) d.fields.mode_residual.col(i) = mode_residual(s, d, i);
   d.diagnostics.renewed_rows +=
       all ? n : static_cast<long>(std::count(rows.begin(), rows.end(), 1));
-  d.kernel.transpose = transpose_of(d.kernel.list, n);
   if (!degenerate.empty()) {
     ++d.diagnostics.degenerate_events;
     if (d.diagnostics.first_degenerate < 0) {
@@ -350,13 +423,11 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   // as 1 / h, but a row left with a few neighbours on one side (torn material under the screw)
   // has gradients many times larger at the same spacing.
   std::vector<double> gradient_norm(static_cast<std::size_t>(n), 0.0);
+  copy_transpose_gradients(d);
 #pragma omp parallel for schedule(static) if (n > 4096)
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t)
-      d.kernel.transpose.gradient.col(t) =
-          d.kernel.shape.gradient.col(d.kernel.transpose.pairs[static_cast<std::size_t>(t)]);
-    if (renewed(i)) {
+    if (renewed(i) && read_here(i)) {
       double nearest = std::numeric_limits<double>::infinity(), g2 = 0.0;
       for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
         const Index j = d.kernel.list.neighbours[static_cast<std::size_t>(p)];
@@ -377,7 +448,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     }
   for (Index i = 0; i < n; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (renewed(i) && gradient_norm[ii] > 0.0)
+    if (renewed(i) && read_here(i) && gradient_norm[ii] > 0.0)
       d.kernel.length[ii] =
           std::min(d.kernel.length[ii], d.kernel.gradient_length_scale / gradient_norm[ii]);
   }
@@ -390,7 +461,24 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     d.kernel.step_bound.initial_critical = calibrate_stiffness_length(s, d);
   d.kernel.steps_since_renewal = 0;
   ++d.diagnostics.renewals;
-  d.times.shape_functions += seconds_since(start);
+  d.times.shape_functions +=
+      seconds_since(start) - (share ? share->exchange_seconds - exchanged_before : 0.0);
+}
+
+void keep_read_rows(State& s, Domain& d) {
+  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const Index n = d.count();
+  std::vector<std::uint8_t> dropped(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < dropped.size(); ++i)
+    dropped[i] = share->stressed.flag[i] ? 0 : 1;
+  NeighbourList none;
+  none.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  ShapeFunctions no_shape;
+  no_shape.gradient.resize(3, 0);
+  merge_rows(d, none, no_shape, dropped);
+  d.kernel.transpose = transpose_of(d.kernel.list, n);
+  copy_transpose_gradients(d);
+  smooth_masses(s, d);
 }
 
 // Why the updated-Lagrangian kernel is not renewed at every check: a renewal takes the current

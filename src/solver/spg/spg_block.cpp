@@ -61,7 +61,9 @@ class SpgBlock final : public Block {
   }
 
   void distribute(State& s) override {
-    if (spg::splittable(s.spg[domain_])) spg::share_particles(s, domain_);
+    if (!spg::splittable(s.spg[domain_])) return;
+    spg::share_particles(s, domain_);
+    spg::keep_read_rows(s, s.spg[domain_]);
   }
 
   void synchronise(State& s, Gather what) override {

@@ -142,7 +142,7 @@ struct Pieces {
   Index single = 0;   ///< of them, single particles
   Index largest = 0;  ///< particles in the largest
 };
-Pieces count_pieces(const Domain& d);
+Pieces count_pieces(const NeighbourList& list);
 
 /// Low-energy-mode control (MSC = 1): residual and force g_J of particle j into d.fields.mode_force
 /// (the internal-force gather applies -(D^T g)), their work into d.fields.mode_energy. Run by the
