@@ -78,9 +78,16 @@ class Phases {
 };
 
 // Forces at t^n from every block, and the critical step of them all.
+// Over several processes only the nodes this process moves: the forces of the others are never
+// read here (their owners integrate them; outputs and dumps take them from the owners).
 ForceReport compute_forces(State& s, Phases& phases) {
   ForceReport r;
-  s.nodes.force.setZero();
+  if (s.ownership.moves.empty()) {
+    s.nodes.force.setZero();
+  } else {
+    for (const Index n : s.ownership.moved_nodes)
+      s.nodes.force.col(n).setZero();
+  }
   phases.each([&](Block& b) { b.forces(s, r); });
   return r;
 }
@@ -96,11 +103,12 @@ std::string controlling_name(const State& s, const ForceReport& r) {
 Index free_velocity_update(State& s, double dt) {
   Nodes& nd = s.nodes;
   Index bad = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static) reduction(min : bad) if (nd.count() > 2048)
-  for (Index n = 0; n < nd.count(); ++n) {
+  const std::size_t count = s.ownership.moved_count(nd.count());  // another process moves the rest
+#pragma omp parallel for schedule(static) reduction(min : bad) if (count > 2048)
+  for (std::size_t k = 0; k < count; ++k) {
+    const Index n = s.ownership.moved_node(k);
     const auto i = static_cast<std::size_t>(n);
     if (nd.rigid_body[i] >= 0 || nd.smoothed[i]) continue;  // smoothed: spg::advance_velocities
-    if (!s.ownership.moves_node(n)) continue;               // another process moves it
     const double m = nd.mass[i] + nd.added_mass[i];
     if (!(m > 0.0)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -116,9 +124,11 @@ Index free_velocity_update(State& s, double dt) {
 // x^n -> x^{n+1} for the nodes that are not rigid.
 void advance_free_positions(State& s, double dt) {
   Nodes& nd = s.nodes;
-#pragma omp parallel for schedule(static) if (nd.count() > 2048)
-  for (Index n = 0; n < nd.count(); ++n) {
-    if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0 || !s.ownership.moves_node(n)) continue;
+  const std::size_t count = s.ownership.moved_count(nd.count());
+#pragma omp parallel for schedule(static) if (count > 2048)
+  for (std::size_t k = 0; k < count; ++k) {
+    const Index n = s.ownership.moved_node(k);
+    if (nd.rigid_body[static_cast<std::size_t>(n)] >= 0) continue;
     nd.position.col(n) += dt * nd.velocity.col(n);
   }
 }

@@ -410,10 +410,11 @@ void gather_solid_forces(State& state) {
   const Nodes& nd = state.nodes;
   const double* cf = state.solids.corner_force.data();
   double* f = state.nodes.force.data();
-  const Index n_nodes = nd.count();
-#pragma omp parallel for schedule(static) if (n_nodes > 4 * kParallelMinimum)
-  for (Index n = 0; n < n_nodes; ++n) {
-    if (!state.ownership.moves_node(n)) continue;  // another process gathers it
+  // Another process gathers the nodes this one does not move.
+  const std::size_t count = state.ownership.moved_count(nd.count());
+#pragma omp parallel for schedule(static) if (count > 4 * kParallelMinimum)
+  for (std::size_t k = 0; k < count; ++k) {
+    const Index n = state.ownership.moved_node(k);
     double fx = 0.0, fy = 0.0, fz = 0.0;
     for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
          k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k) {

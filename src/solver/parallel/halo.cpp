@@ -69,9 +69,11 @@ void Halo::rebuild(State& s) {
   own.owns.assign(static_cast<std::size_t>(n_nodes), 0);
   own.computes.assign(static_cast<std::size_t>(n_elements), 0);
   auto owner = [&](Index n) { return own.owner[static_cast<std::size_t>(n)]; };
+  own.moved_nodes.clear();
   for (Index n = 0; n < n_nodes; ++n) {
     const auto i = static_cast<std::size_t>(n);
     own.moves[i] = (owner(n) == me || replicated_[i]) ? 1 : 0;
+    if (own.moves[i]) own.moved_nodes.push_back(n);
     own.owns[i] = owner(n) == me ? 1 : 0;
     if (replicated_[i])
       ++size_.replicated_nodes;

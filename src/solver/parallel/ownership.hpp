@@ -20,6 +20,8 @@ struct ParticleShare {
   /// The particles it owns, and those it computes the stress of: owned or holding an owned
   /// particle in their row.
   spg::ParticleSubset owned, stressed;
+  /// The particles whose u-hat this process keeps current: its own and the column ghosts.
+  spg::ParticleSubset current;
   /// The particles in the rows of the owned ones that another process owns: their accelerations
   /// (Eq. 30's scatter) and constraint changes arrive through `row_ghosts`.
   ExchangePlan row_ghosts;
@@ -38,6 +40,9 @@ struct Ownership {
   /// Per node: this process advances it, because it owns it or because the node belongs to a
   /// block every process computes whole (contact today).
   std::vector<std::uint8_t> moves;
+  /// The nodes of `moves`, ascending: the per-cycle node loops visit these only, so a process's
+  /// share of them shrinks with the process count (a mask alone is still read whole).
+  std::vector<std::int32_t> moved_nodes;
   /// Per hexahedron: this process computes it, because one of its nodes is moved here. An
   /// element on a border is computed by every process that moves one of its nodes.
   std::vector<std::uint8_t> computes;
@@ -50,6 +55,13 @@ struct Ownership {
   /// plans are rebuilt when it moves.
   long generation = 0;
 
+  /// How many nodes a per-cycle node loop visits (all `count` on one process), and the k-th.
+  [[nodiscard]] std::size_t moved_count(std::int32_t count) const {
+    return moves.empty() ? static_cast<std::size_t>(count) : moved_nodes.size();
+  }
+  [[nodiscard]] std::int32_t moved_node(std::size_t k) const {
+    return moves.empty() ? static_cast<std::int32_t>(k) : moved_nodes[k];
+  }
   [[nodiscard]] bool moves_node(std::int32_t n) const {
     return moves.empty() || moves[static_cast<std::size_t>(n)] != 0;
   }

@@ -128,6 +128,13 @@ void share_particles(State& s, std::size_t domain) {
       column_ghost[j] = column_ghost[j] | row_ghost[j];
   for (std::size_t j = 0; j < n; ++j)
     if (share.stressed.flag[j]) share.stressed.index.push_back(static_cast<Index>(j));
+  share.current.flag.assign(n, 0);
+  share.current.index.clear();
+  for (std::size_t j = 0; j < n; ++j)
+    if (share.owned.flag[j] || column_ghost[j]) {
+      share.current.flag[j] = 1;
+      share.current.index.push_back(static_cast<Index>(j));
+    }
   share.row_ghosts = parallel::ExchangePlan(comm, share.owner, row_ghost, 3);
   share.column_ghosts = parallel::ExchangePlan(comm, share.owner, column_ghost, 3);
 }

@@ -192,7 +192,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 /// Buffers the per-cycle passes reuse instead of allocating them at every call. Not dumped:
 /// every call fills what it reads.
 struct Workspace {
-  Eigen::Matrix3Xd acceleration;        ///< advance_velocities: a_J of the smoothed particles
+  Eigen::Matrix3Xd acceleration;  ///< advance_velocities: a_J of the smoothed particles
+  Eigen::Matrix3Xd change;  ///< absorb_constraints: what conditions changed, own and row ghosts
   std::vector<double> mass_factor;      ///< particle_pass with DT2MS: m / (m - added) per particle
   std::vector<double> damping_share;    ///< advance_velocities with PDAMP: |PDAMP| / n per row
   std::vector<double> damping_removed;  ///< the same: kinetic energy PDAMP took per particle

@@ -98,7 +98,13 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   const Stabilization mode = d.settings.stabilization;
   const bool mc = mode == Stabilization::momentum_consistent;
   const bool damping = d.settings.damping > 0.0 && smooths_velocity(mode);
-  d.fields.unsmoothed_previous = d.fields.unsmoothed;
+  // The previous u-hat of the particles whose u-hat is current here (all on one process).
+  const ParticleSubset* current = share ? &share->current : nullptr;
+  const std::size_t kept = members(current, n);
+  for (std::size_t m = 0; m < kept; ++m) {
+    const Index i = member(current, m);
+    d.fields.unsmoothed_previous.col(i) = d.fields.unsmoothed.col(i);
+  }
   // Accelerations of the smoothed particles (zero for pinned ones).
   Eigen::Matrix3Xd& acc = d.scratch.acceleration;
   acc.resize(3, n);
@@ -215,8 +221,10 @@ void absorb_constraints(State& s, Domain& d) {
   const ParticleSubset* mine = advanced_particles(share);
   const std::size_t advanced = members(mine, n);
   // The change each constraint or wall made to a smoothed particle's velocity, as an impulse
-  // p_I = m_I change_I on that particle.
-  Eigen::Matrix3Xd change = Eigen::Matrix3Xd::Zero(3, n);
+  // p_I = m_I change_I on that particle: set for its own particles (zero for pinned ones), and
+  // for the row ghosts by the exchange below; no other entry is read.
+  Eigen::Matrix3Xd& change = d.scratch.change;
+  change.resize(3, n);
   bool any = false;
   for (std::size_t m = 0; m < advanced; ++m) {
     const Index i = member(mine, m);
@@ -224,6 +232,7 @@ void absorb_constraints(State& s, Domain& d) {
     const Vec3 v = nd.velocity.col(d.particles.nodes[ii]);
     if (d.kernel.pinned[ii]) {
       d.fields.unsmoothed.col(i) = v;
+      change.col(i).setZero();
     } else {
       change.col(i) = v - d.fields.smoothed.col(i);
       any = any || change.col(i).squaredNorm() > 0.0;
@@ -243,7 +252,10 @@ void absorb_constraints(State& s, Domain& d) {
     return;
   }
   if (d.settings.stabilization == Stabilization::direct) {
-    d.fields.unsmoothed += change;
+    for (std::size_t m = 0; m < advanced; ++m) {
+      const Index i = member(mine, m);
+      d.fields.unsmoothed.col(i) += change.col(i);
+    }
     return;
   }
   // MC-SPG: an impulse enters like a force (Eq. 30), u-hat_J += sum_I phi_I(X_J) p_I / m_I, so
