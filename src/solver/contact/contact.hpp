@@ -10,10 +10,12 @@ namespace mcdyna::solver::contact {
 
 /// Adds the interface's contact forces at t^n to s.nodes.force (positions at t^n, velocities at
 /// t^{n-1/2}) and updates its resultants and energy.
-void interface_pass(State& s, Interface& c);
+/// `sort`: whether the candidate lists are rebuilt first (sort_due).
+void interface_pass(State& s, Interface& c, bool sort);
 
 /// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
-/// last sort, or a node has moved more than half the search margin.
+/// last sort, or a node has moved more than half the search margin. Over several processes
+/// each looks at the nodes it owns and all agree (collective).
 bool sort_due(const State& s, const Interface& c);
 
 /// Rebuilds the candidate segments of every node of every pass: the segments whose bounding box,

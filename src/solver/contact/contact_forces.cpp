@@ -267,7 +267,7 @@ std::vector<Hit> pass_hits(const State& s, const Interface& c, const Pass& p) {
 
 }  // namespace
 
-void interface_pass(State& s, Interface& c) {
+void interface_pass(State& s, Interface& c, bool sort) {
   // What the interface took from the structure (penalty springs and friction), the glstat
   // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
   // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
@@ -292,7 +292,7 @@ void interface_pass(State& s, Interface& c) {
     sums.store(c);
     return;
   }
-  if (sort_due(s, c)) sort_buckets(s, c);
+  if (sort) sort_buckets(s, c);
   for (Pass& p : c.passes) {
     const std::vector<Hit> hits = pass_hits(s, c, p);
     // Forces added in node order: the same sums for any thread count.

@@ -120,10 +120,15 @@ bool sort_due(const State& s, const Interface& c) {
   const auto n = static_cast<Index>(c.tracked.size());
   bool moved = false;
 #pragma omp parallel for schedule(static) reduction(|| : moved) if (n > 8192)
-  for (Index i = 0; i < n; ++i)
-    moved = moved || (s.nodes.position.col(c.tracked[static_cast<std::size_t>(i)]) -
-                      c.sorted_positions.col(i))
-                             .squaredNorm() > limit;
+  for (Index i = 0; i < n; ++i) {
+    const Index node = c.tracked[static_cast<std::size_t>(i)];
+    // Over several processes the position of a deformable node is current on its owner only
+    // between sorts (contact_block.cpp); rigid-body nodes are placed alike everywhere.
+    if (!s.ownership.owns_node(node) && s.nodes.rigid_body[static_cast<std::size_t>(node)] < 0)
+      continue;
+    moved = moved || (s.nodes.position.col(node) - c.sorted_positions.col(i)).squaredNorm() > limit;
+  }
+  if (s.ownership.comm.size() > 1) moved = s.ownership.comm.bitwise_or(moved ? 1U : 0U) != 0;
   return moved;
 }
 
