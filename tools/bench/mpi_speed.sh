@@ -6,7 +6,7 @@
 # 2-process run (nodes and bytes received per cycle, messages per cycle) from d3hsp's
 # decomposition table. Goal (issue 25): >= 1.8x at 2 processes.
 #
-#   REPEAT=3 tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna built with MPI; ~5 min)
+#   REPEAT=3 [FINE=1] tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna with MPI; ~7 min)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=${1:-${TMPDIR:-/tmp}/mcdyna_mpi_speed}
@@ -37,6 +37,14 @@ bench() { # name deck cycles
     mpirun -np 2 --bind-to core "$bin" run "$deck" --out "$d/p2t1.$k" -q --threads 1 \
       --cycles "$cycles" >/dev/null 2>&1 </dev/null
   done
+  # The start (the first kernel renewal, whole on every process before the split) once per
+  # configuration, from 1-cycle runs: the later cycles are what a long run is made of.
+  for ((k = 1; k <= repeat; ++k)); do
+    "$bin" run "$deck" --out "$d/s11.$k" -q --threads 1 --cycles 1 >/dev/null 2>&1
+    "$bin" run "$deck" --out "$d/s12.$k" -q --threads 2 --cycles 1 >/dev/null 2>&1
+    mpirun -np 2 --bind-to core "$bin" run "$deck" --out "$d/s21.$k" -q --threads 1 \
+      --cycles 1 >/dev/null 2>&1 </dev/null
+  done
   ln -sfn p1t1.1 "$d/p1t1"
   ln -sfn p2t1.1 "$d/p2t1"
   local t11 t12 t21
@@ -50,6 +58,12 @@ bench() { # name deck cycles
       sep = "; " } on && /replicated:/ { on = 0 }' "$d/p2t1/d3hsp")
   printf "%-28s %7d cycles  1x1 %8.2f s  1x2 %8.2f s (%.2fx)  2x1 %8.2f s (%.2fx)\n" "$name" \
     "$cycles" "$t11" "$t12" "$(echo "$t11 / $t12" | bc -l)" "$t21" "$(echo "$t11 / $t21" | bc -l)"
+  local c11 c12 c21
+  c11=$(echo "$t11 - $(shortest "$d"/s11.*/d3hsp)" | bc -l)
+  c12=$(echo "$t12 - $(shortest "$d"/s12.*/d3hsp)" | bc -l)
+  c21=$(echo "$t21 - $(shortest "$d"/s21.*/d3hsp)" | bc -l)
+  printf "%-28s %7s after the start  %8.2f s  %8.2f s (%.2fx)  %8.2f s (%.2fx)\n" "" "" \
+    "$c11" "$c12" "$(echo "$c11 / $c12" | bc -l)" "$c21" "$(echo "$c11 / $c21" | bc -l)"
   echo "    halo per cycle at 2 processes: $halo"
   # The histories must not depend on the process count.
   for f in $(cd "$d/p1t1" && ls | grep -v "d3hsp\|lock\|glstat$\|d3dump\|runrsf"); do
@@ -62,3 +76,9 @@ bench "FE Taylor bar (coarse)" decks/taylor_bar/taylor_coarse.k 3000
 bench "FE Taylor bar (medium)" decks/taylor_bar/taylor_medium.k 1000
 bench "SPG Taylor bar (coarse)" decks/taylor_bar/taylor_spg_coarse.k 1000
 bench "FDS h 0.15" decks/fds/fds_h0.15.k 300
+# FINE=1: also the paper's finest FDS deck (h 0.075: 143,157 particles, 751 MB per process),
+# generated here; about 6 minutes more.
+if [ "${FINE:-0}" = 1 ]; then
+  [ -f "$out/fds_h0.075.k" ] || /usr/bin/python3 tools/decks/fds.py 0.075 "$out/fds_h0.075.k" >/dev/null
+  bench "FDS h 0.075" "$out/fds_h0.075.k" 100
+fi
