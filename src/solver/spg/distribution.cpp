@@ -259,10 +259,10 @@ std::vector<Index> share_degenerate(const State& s, const std::vector<Index>& mi
   return degenerate;
 }
 
-void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& previous_owner,
-                       const std::vector<int>& builder, const NeighbourList& fresh,
-                       const ShapeFunctions& fresh_shape, NeighbourList& incoming,
-                       ShapeFunctions& incoming_shape, std::vector<std::uint8_t>& take) {
+void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& builder,
+                       const NeighbourList& fresh, const ShapeFunctions& fresh_shape,
+                       NeighbourList& incoming, ShapeFunctions& incoming_shape,
+                       std::vector<std::uint8_t>& take) {
   Domain& d = s.spg[domain];
   const core::Communicator& comm = s.ownership.comm;
   const int me = comm.rank();
@@ -272,7 +272,10 @@ void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& pre
     owner[j] = s.ownership.owner[static_cast<std::size_t>(d.particles.nodes[j])];
   // Rows out: a built row to every other process that reads it; an unchanged row, from its
   // previous owner, to the processes that read it now and did not before.
-  const ParticleSubset& was_read = s.ownership.split_part(domain)->stressed;  // the old share
+  // The share is still the one before the renewal: its owners and the rows read under them.
+  const parallel::ParticleShare& before_renewal = *s.ownership.split_part(domain);
+  const std::vector<int>& previous_owner = before_renewal.owner;
+  const ParticleSubset& was_read = before_renewal.stressed;
   std::vector<std::vector<double>> to(static_cast<std::size_t>(comm.size()));
   std::vector<int> readers, before;
   std::vector<std::uint8_t> keep(n, 0);  // read here before and now, unchanged

@@ -81,14 +81,15 @@ std::vector<Index> share_degenerate(const State& s, const std::vector<Index>& mi
 /// The rows this process reads after a renewal (s.ownership.owner is already the new owners'),
 /// into `incoming` with `take` set for each row the renewal's merge takes from it: the flagged
 /// rows (builder >= 0) it reads, from their builders (`fresh` holds the rows built here); the
-/// unchanged rows it reads from now on, from their `previous_owner`, with their per-row values
+/// unchanged rows it reads from now on, from their previous owners (the share, not yet
+/// rebuilt, still has them), with their per-row values
 /// (kernel length, renewal volume, mode residual); and empty rows where it no longer reads a
 /// row. Rows it read before and still reads, unchanged, are left to the current lists
 /// (take 0). Collective.
-void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& previous_owner,
-                       const std::vector<int>& builder, const NeighbourList& fresh,
-                       const ShapeFunctions& fresh_shape, NeighbourList& incoming,
-                       ShapeFunctions& incoming_shape, std::vector<std::uint8_t>& take);
+void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& builder,
+                       const NeighbourList& fresh, const ShapeFunctions& fresh_shape,
+                       NeighbourList& incoming, ShapeFunctions& incoming_shape,
+                       std::vector<std::uint8_t>& take);
 
 /// After the share was first built (or rebuilt on a restart): drops the rows this process does
 /// not read and rebuilds the transposes, complete for its own particles (renewal.cpp).

@@ -292,8 +292,8 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     const Index due = rows_to_renew(s, d, broke > 0, renewed);  // timed as neighbour search
     // A renewal over several processes owns the particles again (distribution.hpp); each then
     // receives what the particles it now reads carry from their previous owners.
-    const std::vector<int> previous_owner =
-        s.ownership.split_part(domain) ? s.ownership.split_part(domain)->owner : std::vector<int>{};
+    const parallel::ParticleShare* split = due > 0 ? s.ownership.split_part(domain) : nullptr;
+    const std::vector<int> previous_owner = split ? split->owner : std::vector<int>{};
     if (due == d.count())
       renew_kernel(s, d);
     else if (due > 0)
@@ -301,7 +301,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     else
       d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
-    if (due > 0 && s.ownership.split_part(domain)) {
+    if (split) {
       timed_exchange(s, domain, [&] { migrate(s, domain, previous_owner); });
       ++s.ownership.generation;  // the halo follows the new rows and owners
     }

@@ -338,14 +338,13 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
       damaged[static_cast<std::size_t>(i)] = d.kernel.bonds.damage(i) > 0.0 ? 1 : 0;
   }
   const std::size_t domain = domain_index(s, d);
-  const double exchanged_before =
-      s.ownership.split_part(domain) ? s.ownership.split_part(domain)->exchange_seconds : 0.0;
-  if (const parallel::ParticleShare* share = s.ownership.split_part(domain)) {
+  const parallel::ParticleShare* split = s.ownership.split_part(domain);
+  const double exchanged_before = split ? split->exchange_seconds : 0.0;
+  if (split) {
     // Over several processes (distribution.hpp): the particles are owned again by their current
     // positions; each process builds an equal share of the flagged rows (not by owner: the
     // rows due gather where the material flows, at the impact end of a Taylor bar, on one
     // process) and sends each to the processes that read it under the new owners.
-    const std::vector<int> previous_owner = share->owner;
     reown_particles(s, domain);
     std::vector<std::uint8_t> flagged(static_cast<std::size_t>(n));
     for (Index i = 0; i < n; ++i)
@@ -365,8 +364,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     std::vector<std::uint8_t> take;
     timed_exchange(s, domain, [&] {
       degenerate = share_degenerate(s, degenerate);
-      redistribute_rows(s, domain, previous_owner, builder, fresh, fresh_shape, incoming,
-                        incoming_shape, take);
+      redistribute_rows(s, domain, builder, fresh, fresh_shape, incoming, incoming_shape, take);
     });
     merge_rows(d, incoming, incoming_shape, take);
     for (Index i = 0; i < n; ++i)
@@ -395,8 +393,8 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   d.kernel.transpose = transpose_of(d.kernel.list, n);
   // Over several processes the shares follow the new owners and rows; the per-row values of
   // the renewed rows are computed where the rows are read.
-  if (s.ownership.split_part(domain)) share_particles(s, domain);
-  const parallel::ParticleShare* share = s.ownership.split_part(domain);
+  if (split) share_particles(s, domain);
+  const parallel::ParticleShare* share = split;
   auto read_here = [&](Index i) {
     return share == nullptr || share->stressed.flag[static_cast<std::size_t>(i)] != 0;
   };
