@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
 
@@ -58,8 +59,9 @@ void StepLog::add(const solver::State& s) {
   std::string kind = "none";
   long id = 0;
   if (s.controlling_element >= 0) {
-    kind = "solid";
-    id = s.solids.ids[static_cast<std::size_t>(s.controlling_element)];
+    const solver::ElementRef r = solver::element_ref(s, s.controlling_element);
+    kind = r.kind;
+    id = static_cast<long>(r.id);
   } else if (s.controlling_particle >= 0) {
     kind = "particle";
     const auto& d = s.spg[s.controlling_domain];

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/history_file.hpp"
+#include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
 
 namespace mcdyna::io {
@@ -40,9 +41,12 @@ class Glstat final : public HistoryFile {
     const Index ce = s.controlling_element;
     const Index cp = s.controlling_particle;
     long long ce_id = 0, cp_node = 0, c_part = 0;
+    const char* ce_kind = "solid";
     if (ce >= 0) {
-      ce_id = s.solids.ids[static_cast<std::size_t>(ce)];
-      c_part = s.parts[static_cast<std::size_t>(s.solids.part[static_cast<std::size_t>(ce)])].id;
+      const solver::ElementRef r = solver::element_ref(s, ce);
+      ce_id = r.id;
+      c_part = r.part;
+      ce_kind = r.kind;
     } else if (cp >= 0 && s.controlling_domain < s.spg.size()) {
       const solver::spg::Domain& d = s.spg[s.controlling_domain];
       cp_node =
@@ -53,8 +57,8 @@ class Glstat final : public HistoryFile {
       ascii("\n\n dt of cycle{:8d} is controlled by spg node {:10d} of part{:10d}\n\n", s.cycle,
             cp_node, c_part);
     else
-      ascii("\n\n dt of cycle{:8d} is controlled by solid    {:10d} of part{:10d}\n\n", s.cycle,
-            ce_id, c_part);
+      ascii("\n\n dt of cycle{:8d} is controlled by {:<9}{:10d} of part{:10d}\n\n", s.cycle,
+            ce_kind, ce_id, c_part);
     auto line = [&](const char* label, double value) { ascii(" {:.<31}{:14.5E}\n", label, value); };
     line("time", s.time);
     line("time step", s.step);

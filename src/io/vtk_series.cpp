@@ -36,8 +36,8 @@ vtkNew<vtkFloatArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) 
   return a;
 }
 
-// Cell fields in cell order: deformable solids (not eroded), SPG particles (vertices), rigid
-// solids, rigid shells.
+// Cell fields in cell order: deformable solids and shells (not eroded), SPG particles
+// (vertices), rigid solids, rigid shells.
 struct CellFields {
   vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
   vtkNew<vtkFloatArray> bond_damage;  ///< SPG: share of the particle's bonds broken (0 for FE)
@@ -88,6 +88,43 @@ struct CellFields {
     for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
              stress, von_mises, plastic_strain, temperature, damage, pressure, bond_damage,
              time_step, part, eroded, spg_state})
+      g->GetCellData()->AddArray(a);
+  }
+};
+
+// The shells' own fields, written when the model has deformable shells: the stress of the top
+// and bottom layers (global axes; `stress` holds the mean of the layers) and the thickness;
+// zero on the other cells.
+struct ShellFields {
+  vtkNew<vtkFloatArray> top, bottom, thickness;
+  ShellFields() {
+    const char* comps[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+    for (vtkFloatArray* a : {top.Get(), bottom.Get()}) {
+      a->SetNumberOfComponents(6);
+      for (int k = 0; k < 6; ++k)
+        a->SetComponentName(k, comps[k]);
+    }
+    top->SetName("stress_top");
+    bottom->SetName("stress_bottom");
+    thickness->SetName("thickness");
+  }
+  static void put(vtkFloatArray* a, const std::array<double, 6>& s) {
+    const float t[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
+                        static_cast<float>(s[2]), static_cast<float>(s[3]),
+                        static_cast<float>(s[4]), static_cast<float>(s[5])};
+    a->InsertNextTypedTuple(t);
+  }
+  void add(const solver::ElementResult& t, const solver::ElementResult& b, double h) {
+    put(top, t.stress);
+    put(bottom, b.stress);
+    thickness->InsertNextValue(static_cast<float>(h));
+  }
+  void pad_to(vtkIdType cells) {
+    while (thickness->GetNumberOfTuples() < cells)
+      add({}, {}, 0.0);
+  }
+  void attach(vtkUnstructuredGrid* g) {
+    for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{top, bottom, thickness})
       g->GetCellData()->AddArray(a);
   }
 };
@@ -149,6 +186,28 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
       fields.add(solver::element_result(s, block, e), so.pressure[i], so.temperature[i], part_id);
     }
   }
+  // Deformable shells (quadrilaterals, triangles) with their layer fields.
+  const solver::Shells& sh = s.shells;
+  const bool shells = sh.count() > 0;
+  ShellFields shell_fields;
+  if (shells) shell_fields.pad_to(grid->GetNumberOfCells());
+  for (const solver::ShellBlock& block : sh.blocks) {
+    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
+    for (Index e = block.begin; e < block.end; ++e) {
+      const auto i = static_cast<std::size_t>(e);
+      if (sh.eroded[i]) continue;
+      const auto& q = sh.nodes[i];
+      vtkIdType quad[4] = {q[0], q[1], q[2], q[3]};
+      grid->InsertNextCell(q[3] == q[2] ? VTK_TRIANGLE : VTK_QUAD, q[3] == q[2] ? 3 : 4, quad);
+      const solver::ElementResult mid =
+          solver::shell_result(s, block, e, solver::ShellSurface::all);
+      fields.add(mid, -(mid.stress[0] + mid.stress[1] + mid.stress[2]) / 3.0, sh.temperature[i],
+                 part_id);
+      shell_fields.add(solver::shell_result(s, block, e, solver::ShellSurface::top),
+                       solver::shell_result(s, block, e, solver::ShellSurface::bottom),
+                       sh.thickness[i]);
+    }
+  }
   // SPG particles: one vertex cell each, with the fields of their integration point.
   for (const solver::spg::Domain& d : s.spg) {
     const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(d.part)].id);
@@ -184,6 +243,10 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
                static_cast<int>(s.parts[static_cast<std::size_t>(rc.shell_parts[k])].id));
   }
   fields.attach(grid);
+  if (shells) {
+    shell_fields.pad_to(grid->GetNumberOfCells());
+    shell_fields.attach(grid);
+  }
 
   // VTK writes into memory and the file is written here, every write checked: VTK's own file
   // writer on a full disk corrupted its heap on its error path (SEGV in

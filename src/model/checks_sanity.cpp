@@ -80,6 +80,35 @@ void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_e
   if (t.end_cycle <= 0) check_output_intervals(m, t.end_time, diags);  // ENDCYC may end it early
 }
 
+// A deformable shell part: the formulations and integration rules mcdyna has.
+void check_deformable_shell(const Part& p, const Section& s, core::Diagnostics& diags) {
+  const ShellSettings& sh = s.shell;
+  if (s.element_formulation != 2 && s.element_formulation != 0) {
+    diags.error(sh.formulation_loc,
+                "part {}: shell ELFORM {} of section {} is not supported for deformable shells "
+                "(2 Belytschko-Tsay)",
+                p.id, s.element_formulation, s.id);
+  }
+  if (sh.integration_points > 10) {
+    diags.error(sh.points_loc, "part {}: NIP = {} through the thickness (at most 10)", p.id,
+                sh.integration_points);
+  }
+  if (sh.quadrature != 0.0 && sh.quadrature != 1.0) {
+    diags.error(sh.quadrature_loc,
+                "part {}: QR/IRID = {:g} of section {} is not supported (0 Gauss, 1 trapezoidal; "
+                "user integration rules *INTEGRATION_SHELL are not)",
+                p.id, sh.quadrature, s.id);
+  }
+  if (sh.quadrature == 1.0 && sh.integration_points == 1) {
+    diags.error(sh.points_loc, "part {}: the trapezoidal rule (QR 1) needs NIP >= 2", p.id);
+  }
+  if (sh.composite != 0) {
+    diags.error(sh.composite_loc,
+                "part {}: composite shells (ICOMP 1, integration-point angles) are not supported",
+                p.id);
+  }
+}
+
 void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
                 core::Diagnostics& diags) {
   const Section* s = m.section(p.section);
@@ -97,12 +126,8 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
     diags.error(p.section_loc, "part {} has shell elements but section {} is a solid section", p.id,
                 s->id);
   }
-  if (use.shells > 0 && !rigid) {
-    diags.error(p.material_loc,
-                "part {}: deformable shells are not supported; shell parts must "
-                "be *MAT_RIGID (rigid bodies, contact surfaces)",
-                p.id);
-  }
+  if (use.shells > 0 && !rigid && s->kind == SectionKind::shell)
+    check_deformable_shell(p, *s, diags);
   if (s->kind == SectionKind::solid && !rigid && s->element_formulation != 1 &&
       s->element_formulation != 2) {
     diags.error(p.section_loc,

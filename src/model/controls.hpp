@@ -59,6 +59,22 @@ struct SolidControl {
   core::SourceLoc loc;
 };
 
+/// *CONTROL_SHELL: the fields that act (the rest are noted by the compile).
+struct ShellControl {
+  int sort_triangles = 0;         ///< ESORT
+  int thickness_update = 0;       ///< ISTUPD
+  int theory = 2;                 ///< THEORY
+  int warping = 2;                ///< BWC
+  int plasticity_iterations = 1;  ///< MITER
+  double rotary_scale = 1.0;      ///< ROTASCL
+  int lobatto = 0;                ///< INTGRD
+  Id thickness_parts = 0;         ///< PSSTUPD
+  int contact_offset = 0;         ///< CNTCO
+  /// Fields set to what does nothing here: "NAME = value" each, for the notes.
+  std::vector<std::string> inactive;
+  core::SourceLoc loc;
+};
+
 struct EnergyControl {
   int hourglass = 1;  ///< HGEN: 2 = compute hourglass energy
   int rigid_wall = 2;
@@ -94,6 +110,7 @@ struct Controls {
   std::optional<HourglassControl> hourglass;
   std::optional<ContactControl> contact;
   std::optional<SolidControl> solid;
+  std::optional<ShellControl> shell;
   std::optional<EnergyControl> energy;
   std::optional<BulkViscosityControl> bulk_viscosity;
   std::optional<AccuracyControl> accuracy;

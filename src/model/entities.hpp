@@ -74,7 +74,13 @@ struct SpgSettings {
 struct ShellSettings {
   double shear_factor = 1.0;          ///< SHRF
   int integration_points = 2;         ///< NIP
+  double quadrature = 0.0;            ///< QR/IRID: 0 Gauss, 1 trapezoidal, < 0 user rule
+  int composite = 0;                  ///< ICOMP
   std::array<double, 4> thickness{};  ///< T1..T4, length
+  double reference_surface = 0.0;     ///< NLOC: 0 mid, 1 top, -1 bottom
+  double nonstructural_mass = 0.0;    ///< MAREA, mass per area
+  core::SourceLoc formulation_loc, points_loc, quadrature_loc, composite_loc, thickness_loc,
+      reference_loc;
 };
 
 struct Section {

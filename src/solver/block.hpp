@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/driver.hpp"              // PhaseTimes
+#include "solver/driver.hpp"  // PhaseTimes
+#include "solver/element_ref.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 
@@ -85,6 +86,7 @@ Blocks make_blocks(State& s);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
 void add_hexahedra_blocks(State& s, Blocks& blocks);         // fe/hexahedra_block.cpp
+void add_shell_blocks(State& s, Blocks& blocks);             // fe/shell_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
 void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp

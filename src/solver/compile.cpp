@@ -66,12 +66,12 @@ void check_accuracy_control(const model::ModelDatabase& m, core::Diagnostics& d)
            a.explicit_accuracy);
 }
 
-Index curve_index(const model::ModelDatabase& m, model::Id id) {
-  const auto i = m.index.curves.find(id);
-  return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
+const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const model::Part& part) {
+  if (part.hourglass == 0) return nullptr;
+  for (const model::Hourglass& h : m.hourglasses)
+    if (h.id == part.hourglass) return &h;
+  return nullptr;
 }
-
-namespace {
 
 HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
                              BulkViscosityParams& q) {
@@ -81,17 +81,21 @@ HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& p
     hg.coefficient = m.controls.hourglass->coefficient;
   }
   q = control_bulk_viscosity(m);
-  if (part.hourglass != 0) {
-    for (const model::Hourglass& h : m.hourglasses) {
-      if (h.id != part.hourglass) continue;
-      hg.type = h.type == 0 ? 1 : h.type;
-      hg.coefficient = h.coefficient;
-      q.quadratic = h.quadratic_bulk_viscosity;
-      q.linear = h.linear_bulk_viscosity;
-    }
+  if (const model::Hourglass* h = part_hourglass(m, part)) {
+    hg.type = h->type == 0 ? 1 : h->type;
+    hg.coefficient = h->coefficient;
+    q.quadratic = h->quadratic_bulk_viscosity;
+    q.linear = h->linear_bulk_viscosity;
   }
   return hg;
 }
+
+Index curve_index(const model::ModelDatabase& m, model::Id id) {
+  const auto i = m.index.curves.find(id);
+  return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
+}
+
+namespace {
 
 // Number of distinct nodes of a connectivity: 8 for a hexahedron, 6 for a pentahedron (wedge)
 // and 4 for a tetrahedron written as degenerate hexahedra with repeated nodes.
@@ -99,24 +103,6 @@ int distinct_nodes(const std::array<Index, 8>& conn) {
   std::array<Index, 8> sorted = conn;
   std::sort(sorted.begin(), sorted.end());
   return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
-}
-
-void build_corner_lists(State& s) {
-  Nodes& nd = s.nodes;
-  const auto n = static_cast<std::size_t>(nd.count());
-  nd.corner_offsets.assign(n + 1, 0);
-  for (const auto& conn : s.solids.nodes)
-    for (const Index v : conn)
-      ++nd.corner_offsets[static_cast<std::size_t>(v) + 1];
-  for (std::size_t i = 0; i < n; ++i)
-    nd.corner_offsets[i + 1] += nd.corner_offsets[i];
-  nd.corners.assign(static_cast<std::size_t>(nd.corner_offsets[n]), 0);
-  std::vector<Index> fill(nd.corner_offsets.begin(), nd.corner_offsets.end() - 1);
-  for (std::size_t e = 0; e < s.solids.nodes.size(); ++e)
-    for (int c = 0; c < 8; ++c) {
-      const auto v = static_cast<std::size_t>(s.solids.nodes[e][static_cast<std::size_t>(c)]);
-      nd.corners[static_cast<std::size_t>(fill[v]++)] = static_cast<Index>(8 * e) + c;
-    }
 }
 
 void allocate_solid_state(State& s, Index points, bool back_stress) {
@@ -241,7 +227,8 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
     s.parts.push_back(info);
   }
   allocate_solid_state(s, points, back);
-  build_corner_lists(s);
+  build_node_corners(
+      nd.count(), s.solids.nodes, [](std::size_t) { return 8; }, nd.corner_offsets, nd.corners);
 }
 
 }  // namespace detail
@@ -254,7 +241,10 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
     s->curves.emplace_back(c);
   detail::check_accuracy_control(m, diags);
   detail::compile_nodes_and_solids(m, *s, diags);
+  detail::compile_shells(m, *s, diags);
   detail::compile_rigid_bodies(m, *s, diags);
+  // The conditions below read the elements' and rigid bodies' arrays whole: stop at a broken one.
+  if (diags.error_count() > errors) return nullptr;
   detail::compile_constraints(m, *s, diags);
   detail::compile_motions(m, *s, diags);
   detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles

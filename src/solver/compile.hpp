@@ -17,8 +17,32 @@ std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnost
 std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
 
 namespace detail {
+/// Node -> (element * N + corner) lists of a connectivity in element order (CSR: `offsets` per
+/// node, then `corners`): the fixed order the force gathers sum in. `corners_of(e)` says how
+/// many of element e's first corners count (a triangle's repeated fourth is left out).
+template <std::size_t N, class CornersOf>
+void build_node_corners(Index nodes, const std::vector<std::array<Index, N>>& conn,
+                        CornersOf corners_of, std::vector<Index>& offsets,
+                        std::vector<Index>& corners) {
+  const auto n = static_cast<std::size_t>(nodes);
+  offsets.assign(n + 1, 0);
+  for (std::size_t e = 0; e < conn.size(); ++e)
+    for (int c = 0; c < corners_of(e); ++c)
+      ++offsets[static_cast<std::size_t>(conn[e][static_cast<std::size_t>(c)]) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    offsets[i + 1] += offsets[i];
+  corners.assign(static_cast<std::size_t>(offsets[n]), 0);
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (std::size_t e = 0; e < conn.size(); ++e)
+    for (int c = 0; c < corners_of(e); ++c) {
+      const auto v = static_cast<std::size_t>(conn[e][static_cast<std::size_t>(c)]);
+      corners[static_cast<std::size_t>(fill[v]++)] = static_cast<Index>(N * e) + c;
+    }
+}
+
 // The pieces of compile(), in the order it runs them (compile_*.cpp).
 void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
@@ -29,6 +53,14 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);
+/// The part's *HOURGLASS (HGID), or null; and the hourglass type and coefficient it runs with
+/// (*CONTROL_HOURGLASS without one), with its Q1, Q2 into `q`.
+const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const model::Part& part);
+HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
+                             BulkViscosityParams& q);
+/// Thickness of a shell element: the mean of its corners' (*ELEMENT_SHELL_THICKNESS, else the
+/// section's T1..T4, a zero T2..T4 taking T1).
+double shell_thickness(const model::ShellElement& el, const model::Section* sec);
 /// Q1, Q2 of *CONTROL_BULK_VISCOSITY (defaults without it).
 BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m);
 /// Whether the part takes the second-order objective stress update of *CONTROL_ACCURACY:

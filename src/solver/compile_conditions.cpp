@@ -121,15 +121,19 @@ void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnost
   for (std::size_t i = 0; i < m.nodes.size(); ++i) {
     static constexpr std::uint8_t kCodes[8] = {0, 1, 2, 4, 3, 6, 5, 7};
     const int tc = m.nodes[i].translation_constraint;
-    if (tc > 0 && tc <= 7) add(static_cast<Index>(i), kCodes[tc], 0.0, 1.0e20, m.nodes[i].loc);
+    const int rc = m.nodes[i].rotation_constraint;
+    const std::uint8_t mask = static_cast<std::uint8_t>((tc > 0 && tc <= 7 ? kCodes[tc] : 0) |
+                                                        (rc > 0 && rc <= 7 ? kCodes[rc] << 3 : 0));
+    add(static_cast<Index>(i), mask, 0.0, 1.0e20, m.nodes[i].loc);
   }
   for (const model::SpcConstraint& c : m.spcs) {
     if (c.coordinate_system != 0) {
       d.error(c.loc, "SPC in local coordinate system {} is not supported", c.coordinate_system);
       continue;
     }
-    const std::uint8_t mask = static_cast<std::uint8_t>(
-        (c.fixed[0] ? 1 : 0) | (c.fixed[1] ? 2 : 0) | (c.fixed[2] ? 4 : 0));
+    std::uint8_t mask = 0;
+    for (int k = 0; k < 6; ++k)
+      if (c.fixed[static_cast<std::size_t>(k)]) mask |= static_cast<std::uint8_t>(1U << k);
     if (c.is_set) {
       for (const Index n : node_set_nodes(m, c.target))
         add(n, mask, c.birth, c.death, c.loc);
@@ -227,12 +231,29 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
 
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   auto& v = s.nodes.velocity;
+  const Nodes& nd = s.nodes;
+  auto rotates = [&](Index n) {
+    return !nd.rotary_inertia.empty() && nd.rotary_inertia[static_cast<std::size_t>(n)] > 0.0;
+  };
+  // VXR, VYR, VZR: the angular velocity of the nodes that have rotations (shell nodes).
+  auto spin = [&](Index n, const Vec3& w) {
+    if (rotates(n)) s.nodes.angular_velocity.col(n) = w;
+  };
   for (const model::InitialVelocity& iv : m.initial_velocities) {
     const Vec3 vel(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
+    const Vec3 omega(iv.angular_velocity[0], iv.angular_velocity[1], iv.angular_velocity[2]);
     switch (iv.kind) {
-      case model::InitialVelocityKind::per_node:
-        v.col(static_cast<Index>(m.index.nodes.find(iv.target))) = vel;
+      case model::InitialVelocityKind::per_node: {
+        const auto n = static_cast<Index>(m.index.nodes.find(iv.target));
+        v.col(n) = vel;
+        spin(n, omega);
+        if (omega != Vec3::Zero() && !rotates(n))
+          d.warning(iv.loc,
+                    "*INITIAL_VELOCITY_NODE: VXR/VYR/VZR of node {} are ignored: it has no "
+                    "rotations (only shell nodes do)",
+                    iv.target);
         break;
+      }
       case model::InitialVelocityKind::by_set: {
         const model::Box* box = box_of(m, iv.box);
         std::vector<Index> nodes = iv.target == 0 ? all_nodes(s) : node_set_nodes(m, iv.target);
@@ -243,11 +264,13 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
           if (!inside(box, s.nodes.initial.col(n))) continue;
           const bool ex = std::binary_search(exempt.begin(), exempt.end(), n);
           v.col(n) = ex ? ve : vel;
+          if (!ex) spin(n, omega);
         }
-        if (iv.angular_velocity != model::Vec3{}) {
+        if (omega != Vec3::Zero() &&
+            std::none_of(nodes.begin(), nodes.end(), [&](Index n) { return rotates(n); })) {
           d.warning(iv.loc,
                     "*INITIAL_VELOCITY: rotational velocities VXR/VYR/VZR apply to nodal "
-                    "rotations, which solid nodes do not have; ignored");
+                    "rotations, which only shell nodes have; ignored");
         }
         break;
       }
@@ -273,8 +296,10 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
         }
         if (axis.norm() > 0.0) axis.normalize();
         const Vec3 c(iv.axis_point[0], iv.axis_point[1], iv.axis_point[2]);
-        for (const Index n : nodes)
+        for (const Index n : nodes) {
           v.col(n) = vel + iv.omega * axis.cross(Vec3(s.nodes.initial.col(n)) - c);
+          spin(n, iv.omega * axis);  // a shell node turns with the body
+        }
         break;
       }
     }

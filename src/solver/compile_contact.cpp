@@ -154,14 +154,20 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
     const auto p = static_cast<std::size_t>(m.index.parts.find(el.part));
     if (s.parts[p].rigid_body < 0) continue;
     const Face& seg = s.rigid_cells.shells[next++];
-    const model::Section* sec = m.section(m.parts[p].section);
-    double t = 0.0;
-    for (std::size_t c = 0; c < 4; ++c)
-      t += 0.25 * (el.thickness[c] > 0.0 ? el.thickness[c] : (sec ? sec->shell.thickness[c] : 0.0));
     const double area = area_of(s, seg);
     if (!(area > 0.0)) continue;
     add_segment(out[p].surface, seg, bulk[p] * area / longest_diagonal(s, seg), area, true);
-    out[p].shell_thickness.push_back(t);
+    out[p].shell_thickness.push_back(shell_thickness(el, m.section(m.parts[p].section)));
+  }
+  // Deformable shells: segments at their mid-surfaces, penalty K A / longest diagonal as the
+  // rigid ones.
+  for (std::size_t e = 0; e < s.shells.ids.size(); ++e) {
+    const auto p = static_cast<std::size_t>(s.shells.part[e]);
+    const Face& seg = s.shells.nodes[e];
+    const double area = area_of(s, seg);
+    if (!(area > 0.0)) continue;
+    add_segment(out[p].surface, seg, bulk[p] * area / longest_diagonal(s, seg), area, false);
+    out[p].shell_thickness.push_back(s.shells.initial_thickness[e]);
   }
   for (const spg::Domain& d : s.spg)
     out[static_cast<std::size_t>(d.part)].particles = d.particles.nodes;
@@ -342,6 +348,13 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
   if (m.contacts.empty()) return;
   const std::vector<PartSurface> parts = part_surfaces(m, s);
   const std::vector<double> node_k = node_stiffness(s, parts);
+  // Half the thickest shell (rigid or deformable) on each node.
+  std::vector<double> shell_half(static_cast<std::size_t>(s.nodes.count()), 0.0);
+  for (const PartSurface& ps : parts)
+    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j)
+      for (const Index n : ps.surface.segments[j])
+        shell_half[static_cast<std::size_t>(n)] =
+            std::max(shell_half[static_cast<std::size_t>(n)], 0.5 * ps.shell_thickness[j]);
   FaceOwners face_owner;  // for segment sets
   for (std::size_t p = 0; p < parts.size(); ++p)
     for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
@@ -416,15 +429,23 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
                 "soft-constraint stiffness",
                 number, c.soft);
     }
-    // One direction: the nodes of one side on the segments of the other.
-    auto make_pass = [&](const Side& nodes, double node_scale, const Side& segments,
-                         double segment_scale, double thickness, bool nodes_on_a) {
+    // One direction: the nodes of one side on the segments of the other. `node_thickness` is
+    // the nodes' side's SST (0: the shells').
+    auto make_pass = [&](const Side& nodes, double node_scale, double node_thickness,
+                         const Side& segments, double segment_scale, double thickness,
+                         bool nodes_on_a) {
       Pass p;
       p.nodes = two_way ? nodes.nodes : nodes.slave_nodes;
       p.nodes_on_side_a = nodes_on_a;
       p.stiffness.resize(p.nodes.size());
-      for (std::size_t i = 0; i < p.nodes.size(); ++i)
-        p.stiffness[i] = slsfac * node_scale * node_k[static_cast<std::size_t>(p.nodes[i])];
+      p.node_half_thickness.assign(p.nodes.size(), 0.0);
+      for (std::size_t i = 0; i < p.nodes.size(); ++i) {
+        const auto n = static_cast<std::size_t>(p.nodes[i]);
+        p.stiffness[i] = slsfac * node_scale * node_k[n];
+        // Automatic contact: a shell node touches at half its shell's thickness (or SST).
+        if (automatic && shell_half[n] > 0.0)
+          p.node_half_thickness[i] = node_thickness > 0.0 ? 0.5 * node_thickness : shell_half[n];
+      }
       p.surface = segments.surface;
       for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
         p.surface.stiffness[j] *= slsfac * segment_scale;
@@ -445,7 +466,8 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
       p.side.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
       return p;
     };
-    in.passes.push_back(make_pass(a, c.penalty_scale_a, b, c.penalty_scale_b, c.thickness_b, true));
+    in.passes.push_back(
+        make_pass(a, c.penalty_scale_a, c.thickness_a, b, c.penalty_scale_b, c.thickness_b, true));
     if (two_way) {
       if (a.surface.segments.empty()) {
         d.note(c.loc,
@@ -453,19 +475,22 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
                "nodes on B segments",
                number, a.has_particles ? "SPG particles" : "a node set");
       } else {
-        in.passes.push_back(
-            make_pass(b, c.penalty_scale_b, a, c.penalty_scale_a, c.thickness_a, false));
+        in.passes.push_back(make_pass(b, c.penalty_scale_b, c.thickness_b, a, c.penalty_scale_a,
+                                      c.thickness_a, false));
       }
     }
     // Search margin: half the largest segment plus the largest contact thickness; nodes
     // tracked for an early re-sort are those of both sides.
-    double largest = 0.0, thickest = 0.0;
-    for (const Pass& p : in.passes)
+    double largest = 0.0, thickest = 0.0, thickest_node = 0.0;
+    for (const Pass& p : in.passes) {
       for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
         largest = std::max(largest, std::sqrt(p.surface.area[j]));
         thickest = std::max(thickest, p.surface.half_thickness[j]);
       }
-    in.capture = 0.5 * largest + thickest;
+      for (const double h : p.node_half_thickness)
+        thickest_node = std::max(thickest_node, h);
+    }
+    in.capture = 0.5 * largest + thickest + thickest_node;
     in.tracked = two_way ? a.nodes : a.slave_nodes;
     in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
     std::sort(in.tracked.begin(), in.tracked.end());

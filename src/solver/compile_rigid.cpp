@@ -166,10 +166,7 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
     }
     s.rigid_cells.shells.push_back(conn);
     s.rigid_cells.shell_parts.push_back(static_cast<Index>(p));
-    const model::Section* sec = m.section(m.parts[p].section);
-    double t = 0.0;
-    for (std::size_t c = 0; c < 4; ++c)
-      t += 0.25 * (el.thickness[c] > 0.0 ? el.thickness[c] : (sec ? sec->shell.thickness[c] : 0.0));
+    const double t = shell_thickness(el, m.section(m.parts[p].section));
     add_shell(s, conn, m.material(m.parts[p].material)->density * t,
               moments[static_cast<std::size_t>(b)]);
   }

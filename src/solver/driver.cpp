@@ -82,11 +82,15 @@ class Phases {
 // read here (their owners integrate them; outputs and dumps take them from the owners).
 ForceReport compute_forces(State& s, Phases& phases) {
   ForceReport r;
+  const bool rotations = s.nodes.moment.cols() > 0;
   if (s.ownership.moves.empty()) {
     s.nodes.force.setZero();
+    if (rotations) s.nodes.moment.setZero();
   } else {
-    for (const Index n : s.ownership.moved_nodes)
+    for (const Index n : s.ownership.moved_nodes) {
       s.nodes.force.col(n).setZero();
+      if (rotations) s.nodes.moment.col(n).setZero();
+    }
   }
   phases.each([&](Block& b) { b.forces(s, r); });
   return r;
@@ -99,9 +103,21 @@ std::string controlling_name(const State& s, const ForceReport& r) {
   return "none";
 }
 
-// a = f / m and v += a dt for deformable nodes; returns the lowest node with a non-finite value.
+// w += M / I dt for a node with rotations (a shell node). Its rotary inertia grows with any
+// DT2MS mass in proportion, so the rotations stay off the step as the translations slow down.
+bool rotation_update(Nodes& nd, Index n, double dt) {
+  const auto i = static_cast<std::size_t>(n);
+  const double inertia = nd.rotary_inertia[i] * (1.0 + nd.added_mass[i] / nd.mass[i]);
+  nd.previous_angular_velocity.col(n) = nd.angular_velocity.col(n);
+  nd.angular_velocity.col(n) += (dt / inertia) * nd.moment.col(n);
+  return std::isfinite(nd.angular_velocity.col(n).sum());
+}
+
+// a = f / m and v += a dt for deformable nodes (and w += M / I dt where they rotate); returns
+// the lowest node with a non-finite value.
 Index free_velocity_update(State& s, double dt) {
   Nodes& nd = s.nodes;
+  const bool rotations = !nd.rotary_inertia.empty();
   Index bad = std::numeric_limits<Index>::max();
   const std::size_t count = s.ownership.moved_count(nd.count());  // another process moves the rest
 #pragma omp parallel for schedule(static) reduction(min : bad) if (count > 2048)
@@ -117,6 +133,7 @@ Index free_velocity_update(State& s, double dt) {
       nd.velocity(k, n) += a * dt;
     }
     if (!std::isfinite(nd.velocity(0, n) + nd.velocity(1, n) + nd.velocity(2, n))) bad = n;
+    if (rotations && nd.rotary_inertia[i] > 0.0 && !rotation_update(nd, n, dt)) bad = n;
   }
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
 }

@@ -19,6 +19,11 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     (so.eroded[i] ? e.eroded_internal : e.internal) += so.internal_energy[i];
     (so.eroded[i] ? e.eroded_hourglass : e.hourglass) += so.hourglass_energy[i];
   }
+  const Shells& sh = s.shells;
+  for (std::size_t i = 0; i < sh.ids.size(); ++i) {
+    (sh.eroded[i] ? e.eroded_internal : e.internal) += sh.internal_energy[i];
+    (sh.eroded[i] ? e.eroded_hourglass : e.hourglass) += sh.hourglass_energy[i];
+  }
   for (const RigidWallState& w : s.rigid_walls)
     e.stonewall += w.energy;
   for (const contact::Interface& c : s.contacts)
@@ -50,6 +55,9 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.kinetic += 0.5 * nd.mass[i] * previous.col(n).dot(velocity.col(n));
     e.momentum += 0.5 * nd.mass[i] * (previous.col(n) + velocity.col(n));
     e.mass += nd.mass[i];
+    if (!nd.rotary_inertia.empty() && nd.rotary_inertia[i] > 0.0)
+      e.kinetic += 0.5 * nd.rotary_inertia[i] *
+                   nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
   }
   e.added_mass = total_added_mass(s);
   e.total = e.kinetic + e.internal + e.hourglass + e.stonewall + e.sliding + e.damping +
@@ -81,6 +89,24 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
     const double m = so.mass[e] / 8.0;
     for (const Index n : so.nodes[e]) {
       ps.kinetic += 0.5 * m * previous.col(n).dot(velocity.col(n));
+      ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+    }
+  }
+  const Shells& sh = s.shells;
+  const Nodes& nd = s.nodes;
+  for (std::size_t e = 0; e < sh.ids.size(); ++e) {
+    PartSummary& ps = out[static_cast<std::size_t>(sh.part[e])];
+    (sh.eroded[e] ? ps.eroded_internal : ps.internal) += sh.internal_energy[e];
+    ps.hourglass += sh.hourglass_energy[e];
+    ps.added_mass += sh.added_mass[e];
+    const bool triangle = sh.nodes[e][3] == sh.nodes[e][2];
+    const double m = sh.mass[e] / (triangle ? 3.0 : 4.0);
+    const double inertia = sh.corner_inertia[e];
+    for (int c = 0; c < (triangle ? 3 : 4); ++c) {
+      const Index n = sh.nodes[e][static_cast<std::size_t>(c)];
+      ps.kinetic +=
+          0.5 * m * previous.col(n).dot(velocity.col(n)) +
+          0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
       ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
     }
   }

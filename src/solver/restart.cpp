@@ -11,10 +11,13 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 20> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
+                                                      sizeof(Shells),
+                                                      sizeof(ShellBlock),
+                                                      sizeof(ShellPoints),
                                                       sizeof(RigidBody),
                                                       sizeof(RigidMotion),
                                                       sizeof(NodalConstraints),
@@ -30,8 +33,9 @@ constexpr std::array<std::size_t, 17> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(ResumePoint)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 17>{248, 512, 72, 80, 528, 72, 112, 128, 240,
-                                                          1560, 1992, 96, 112, 352, 328, 144, 192},
+static_assert(kDumpedSizes == std::array<std::size_t, 20>{368, 512, 72,  80,  488, 248,  80,
+                                                          528, 72,  112, 128, 240, 2168, 1992,
+                                                          96,  112, 352, 352, 144, 192},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -40,6 +44,8 @@ template <class Ar>
 void fields(Ar& ar, Nodes& n) {
   ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.force, n.mass, n.added_mass,
      n.rigid_body, n.smoothed, n.corner_offsets, n.corners);
+  ar(n.angular_velocity, n.previous_angular_velocity, n.moment, n.rotary_inertia,
+     n.shell_corner_offsets, n.shell_corners);
 }
 
 template <class Ar>
@@ -67,6 +73,25 @@ template <class Ar>
 void fields(Ar& ar, Solids& s) {
   ar(s.ids, s.nodes, s.part, s.initial_volume, s.volume, s.mass, s.pressure, s.eos_energy,
      s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force, s.viscosity,
+     s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
+}
+
+template <class Ar>
+void fields(Ar& ar, ShellBlock& b) {
+  ar(b.part, b.begin, b.end, b.point_begin, b.in_plane_points, b.layers, b.formulation, b.material,
+     b.hourglass, b.bending_hourglass, b.warping_hourglass, b.shear_factor, b.thickness_update,
+     b.plane_stress_iterations, b.reference_surface, b.layer_z, b.layer_weight);
+}
+
+template <class Ar>
+void fields(Ar& ar, ShellPoints& p) {
+  ar(p.stress, p.back_stress, p.plastic_strain, p.damage);
+}
+
+template <class Ar>
+void fields(Ar& ar, Shells& s) {
+  ar(s.ids, s.nodes, s.part, s.initial_thickness, s.thickness, s.initial_area, s.mass,
+     s.corner_inertia, s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force,
      s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
 }
 
@@ -193,8 +218,8 @@ void fields(Ar& ar, Surface& s) {
 
 template <class Ar>
 void fields(Ar& ar, Pass& p) {
-  ar(p.nodes, p.stiffness, p.nodes_on_side_a, p.surface, p.candidate_offsets, p.candidates, p.near,
-     p.friction, p.side, p.initial_penetration);
+  ar(p.nodes, p.stiffness, p.node_half_thickness, p.nodes_on_side_a, p.surface, p.candidate_offsets,
+     p.candidates, p.near, p.friction, p.side, p.initial_penetration);
 }
 
 template <class Ar>
@@ -223,7 +248,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 0:
       return ar(s.nodes);
     case 1:
-      return ar(s.solids);
+      return ar(s.solids, s.shells);
     case 2:
       return ar(s.spg);
     case 3:

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "solver/fe/shell_elements.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -53,6 +54,45 @@ inline ElementResult element_result(const State& s, const SolidBlock& block, Ind
     r.damage = std::max(r.damage, pts.damage[static_cast<std::size_t>(p)]);
   }
   set_stress(r, dev, s.solids.pressure[static_cast<std::size_t>(e)]);
+  return r;
+}
+
+/// Which layers of a shell a result averages: all of them (the mid-surface value LS-DYNA's
+/// d3plot shows by default), the top (outermost, +z) or the bottom one.
+enum class ShellSurface { all, top, bottom };
+
+/// Result of shell `e` of `block`: the stress turned from the element's frame to the global axes,
+/// the plastic strain (mean of the layers taken) and the damage (largest of them).
+inline ElementResult shell_result(const State& s, const ShellBlock& block, Index e,
+                                  ShellSurface surface) {
+  ElementResult r;
+  const int layers = block.layers;
+  const Index first = block.point_begin + layers * (e - block.begin);
+  int from = 0, to = layers;
+  if (surface == ShellSurface::top) from = layers - 1;
+  if (surface == ShellSurface::bottom) to = 1;
+  const auto& pts = s.shells.points;
+  Mat3 local = Mat3::Zero();
+  for (int l = from; l < to; ++l) {
+    const Index p = first + l;
+    const auto pp = static_cast<std::size_t>(p);
+    const double w = 1.0 / (to - from);
+    local(0, 0) += w * pts.stress(0, p);
+    local(1, 1) += w * pts.stress(1, p);
+    local(2, 2) += w * pts.stress(2, p);
+    local(0, 1) += w * pts.stress(3, p);
+    local(1, 2) += w * pts.stress(4, p);
+    local(0, 2) += w * pts.stress(5, p);
+    r.plastic_strain += w * pts.plastic_strain[pp];
+    r.damage = std::max(r.damage, pts.damage[pp]);
+  }
+  local(1, 0) = local(0, 1);
+  local(2, 1) = local(1, 2);
+  local(2, 0) = local(0, 2);
+  const Mat3 axes = shell_axes(s, e);
+  const Mat3 g = axes * local * axes.transpose();
+  const double mean = g.trace() / 3.0;
+  set_stress(r, {g(0, 0) - mean, g(1, 1) - mean, g(2, 2) - mean, g(0, 1), g(1, 2), g(0, 2)}, -mean);
   return r;
 }
 

@@ -37,6 +37,15 @@ struct Nodes {
   /// Node -> (element * 8 + corner) of the deformable solids that touch it, in element order:
   /// the fixed summation order that makes the force gather bitwise reproducible.
   std::vector<Index> corner_offsets, corners;
+  /// Rotations: the nodes of deformable shells carry three rotational degrees of freedom.
+  /// rotary_inertia 0 means none (solid, particle and rigid-body nodes). Angular velocities
+  /// live at half steps like the velocities; previous_angular_velocity is one half step back
+  /// (the kinetic energy's 1/2 I w^{n-1/2} . w^{n+1/2}).
+  Eigen::Matrix3Xd angular_velocity, previous_angular_velocity, moment;
+  std::vector<double> rotary_inertia;
+  /// Node -> (element * 4 + corner) of the deformable shells that touch it, in element order
+  /// (the gather of their forces and moments, fixed order as for the solids).
+  std::vector<Index> shell_corner_offsets, shell_corners;
   [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
 };
 
@@ -88,6 +97,71 @@ struct Solids {
   [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
 };
 
+enum class ShellFormulation {
+  belytschko_tsay,   ///< ELFORM 2: one in-plane point, corotational, hourglass control
+  fully_integrated,  ///< ELFORM 16: 2x2 in-plane points, assumed transverse shear strain
+};
+
+/// Shell elements of one part: a contiguous range [begin, end) of the shell arrays.
+/// Integration points are numbered element by element, in-plane point by in-plane point, layer
+/// by layer (bottom to top).
+struct ShellBlock {
+  Index part = 0;
+  Index begin = 0, end = 0;
+  Index point_begin = 0;
+  int in_plane_points = 1;  ///< 1 (ELFORM 2) or 4 (ELFORM 16)
+  int layers = 2;           ///< NIP: points through the thickness
+  ShellFormulation formulation = ShellFormulation::belytschko_tsay;
+  Index material = 0;
+  HourglassParams hourglass;       ///< IHQ, QM (membrane)
+  double bending_hourglass = 0.1;  ///< QB
+  double warping_hourglass = 0.1;  ///< QW
+  double shear_factor = 1.0;       ///< SHRF
+  /// *CONTROL_SHELL ISTUPD: 0 constant, 1 from the membrane thickness strain, 4 from its
+  /// plastic part only.
+  int thickness_update = 0;
+  int plane_stress_iterations = 3;  ///< secant steps of the plane-stress return (MITER)
+  /// NLOC: where the nodes sit through the thickness, 0 mid-surface, 1 top, -1 bottom (the
+  /// layers sit at z = (zeta - NLOC) t / 2 from the nodes' surface).
+  double reference_surface = 0.0;
+  /// Layer positions through the thickness in [-1, 1] (bottom to top) and their weights
+  /// (summing to 2): Gauss (QR 0) or trapezoidal (QR 1).
+  std::array<double, 10> layer_z{}, layer_weight{};
+};
+
+/// The points of the shells: the full Cauchy stress in the element's corotational frame (z the
+/// normal; sigma_zz = 0, plane stress), rows xx yy zz xy yz zx.
+struct ShellPoints {
+  Eigen::Matrix<double, 6, Eigen::Dynamic> stress;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> back_stress;  ///< MAT_003 kinematic part, or empty
+  std::vector<double> plastic_strain, damage;
+};
+
+/// Deformable 3- and 4-node shells (a triangle repeats its third node).
+struct Shells {
+  std::vector<model::Id> ids;
+  std::vector<std::array<Index, 4>> nodes;
+  std::vector<Index> part;
+  std::vector<double> initial_thickness, thickness;  ///< length
+  std::vector<double> initial_area, mass;
+  /// Rotary inertia each corner gives its node: the corner's mass times max(t^2 / 12, A / 8)
+  /// (Belytschko, Lin and Tsay 1984) times *CONTROL_SHELL ROTASCL.
+  std::vector<double> corner_inertia;
+  std::vector<double> temperature;       ///< JC adiabatic temperature
+  std::vector<double> internal_energy;   ///< absolute
+  std::vector<double> hourglass_energy;  ///< absolute
+  /// 5 per element: the hourglass resistances of the last pass, membrane x y, bending x y and
+  /// warping (Belytschko-Tsay's Q^M, Q^B, Q^W).
+  std::vector<double> hourglass_force;
+  std::vector<double> time_step, added_mass;
+  std::vector<std::uint8_t> eroded;
+  /// 24 per element: force (3) then moment (3) on each corner node, global axes, this cycle.
+  std::vector<double> corner_force;
+  std::vector<ShellBlock> blocks;
+  ShellPoints points;
+  [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
+};
+
 struct PartInfo {
   model::Id id = 0;
   std::string heading;
@@ -136,8 +210,9 @@ struct RigidBody {
 
 /// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
 struct NodalConstraints {
-  std::vector<Index> nodes;         ///< ascending
-  std::vector<std::uint8_t> masks;  ///< bit 0 x, 1 y, 2 z
+  std::vector<Index> nodes;  ///< ascending
+  /// bit 0 x, 1 y, 2 z; 3 rx, 4 ry, 5 rz (acting on nodes with rotations only)
+  std::vector<std::uint8_t> masks;
   std::vector<double> birth, death;
   Eigen::Matrix3Xd reaction;  ///< force the constraint applies, this cycle
 };
@@ -211,6 +286,7 @@ struct State {
   std::string title;
   Nodes nodes;
   Solids solids;
+  Shells shells;
   std::vector<spg::Domain> spg;  ///< one per SPG part
   std::vector<PartInfo> parts;
   std::vector<Material> materials;

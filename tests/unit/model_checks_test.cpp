@@ -70,15 +70,21 @@ TEST_CASE("inverted and collapsed hexahedra are reported, a degenerate tetrahedr
   CHECK(l->diags.error_count() == 2);
 }
 
-TEST_CASE("what mcdyna cannot run is named: deformable shells, ELFORM, unsupported options") {
-  auto l =
-      load_text(std::string(kCube) +
-                    "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SHELL\n1\n1.0\n*SECTION_SOLID\n2,16\n"
-                    "*PART\ns\n1,1,1\n*PART\nt\n2,2,1\n"
-                    "*ELEMENT_SHELL\n1,1,1,2,3,4\n*ELEMENT_SOLID\n2,2\n1,2,3,4,5,6,7,8\n",
-                true);
-  CHECK(l->has_message("part 1: deformable shells are not supported"));
+TEST_CASE("what mcdyna cannot run is named: shell and solid ELFORM, shell rules, composites") {
+  auto l = load_text(std::string(kCube) +
+                         "*MAT_ELASTIC\n1,1.0,1.0,0.3\n*SECTION_SHELL\n1,5\n1.0\n"
+                         "*SECTION_SOLID\n2,16\n*SECTION_SHELL\n3,2,1.0,3,1,-2\n1.0\n"
+                         "*SECTION_SHELL\n4,2,1.0,2,1,0,1\n1.0\n"
+                         "*PART\ns\n1,1,1\n*PART\nt\n2,2,1\n*PART\nu\n3,3,1\n*PART\nv\n4,4,1\n"
+                         "*ELEMENT_SHELL\n1,1,1,2,3,4\n3,3,1,2,3,4\n4,4,1,2,3,4\n"
+                         "*ELEMENT_SOLID\n2,2\n1,2,3,4,5,6,7,8\n",
+                     true);
+  CHECK(
+      l->has_message("part 1: shell ELFORM 5 of section 1 is not supported for deformable shells"));
   CHECK(l->has_message("solid ELFORM 16 of section 2 is not supported"));
+  CHECK(l->has_message("part 3: QR/IRID = -2 of section 3 is not supported"));
+  CHECK(l->has_message("part 4: composite shells (ICOMP 1"));
+  CHECK(!l->has_message("deformable shells are not supported"));
 }
 
 TEST_CASE("no *CONTROL_TERMINATION in a deck with elements is an error") {

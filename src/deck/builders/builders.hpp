@@ -52,6 +52,7 @@ void control_solid(KeywordRecord& r, model::ModelDatabase& m);
 void control_energy(KeywordRecord& r, model::ModelDatabase& m);
 void control_bulk_viscosity(KeywordRecord& r, model::ModelDatabase& m);
 void control_accuracy(KeywordRecord& r, model::ModelDatabase& m);
+void control_shell(KeywordRecord& r, model::ModelDatabase& m);
 // contact.cpp
 void contact(KeywordRecord& r, model::ModelDatabase& m);
 // boundary.cpp

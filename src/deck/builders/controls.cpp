@@ -1,4 +1,7 @@
-// *CONTROL_TERMINATION, _TIMESTEP, _HOURGLASS, _CONTACT, _SOLID, _ENERGY, _BULK_VISCOSITY.
+// *CONTROL_TERMINATION, _TIMESTEP, _HOURGLASS, _CONTACT, _SOLID, _SHELL, _ENERGY,
+// _BULK_VISCOSITY, _ACCURACY.
+#include <fmt/format.h>
+
 #include "deck/builders/builders.hpp"
 
 namespace mcdyna::deck::builders {
@@ -78,6 +81,39 @@ void control_solid(KeywordRecord& r, model::ModelDatabase& m) {
                                static_cast<int>(c.integer("FMATRX")),
                                static_cast<int>(c.integer("NIPTETS")), c.loc()},
            r);
+}
+
+void control_shell(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  const Row& c2 = r.card("2");
+  const Row& c3 = r.card("3");
+  const Row& c4 = r.card("4");
+  model::ShellControl s;
+  s.sort_triangles = static_cast<int>(c1.integer("ESORT"));
+  s.thickness_update = static_cast<int>(c1.integer("ISTUPD"));
+  s.theory = static_cast<int>(c1.integer("THEORY"));
+  s.warping = static_cast<int>(c1.integer("BWC"));
+  s.plasticity_iterations = static_cast<int>(c1.integer("MITER"));
+  s.rotary_scale = c2.real("ROTASCL");
+  s.lobatto = static_cast<int>(c2.integer("INTGRD"));
+  s.thickness_parts = c3.integer("PSSTUPD");
+  s.contact_offset = static_cast<int>(c3.integer("CNTCO"));
+  // Fields whose non-default value asks for something mcdyna does not do.
+  auto inactive = [&](const char* name, double value, double fallback) {
+    if (value != fallback) s.inactive.push_back(fmt::format("{} = {:g}", name, value));
+  };
+  inactive("IRNXX", static_cast<double>(c1.integer("IRNXX")), -1);
+  inactive("PROJ", static_cast<double>(c1.integer("PROJ")), 0);
+  for (const char* f : {"LAMSHT", "THSHEL"})
+    inactive(f, static_cast<double>(c2.integer(f)), 0);
+  for (const char* f : {"SIDT4TU", "ITSFLG", "IRQUAD", "ICRQ"})
+    inactive(f, static_cast<double>(c3.integer(f)), 0);
+  for (const char* f : {"W-MODE", "STRETCH"})
+    inactive(f, c3.real(f), 0.0);
+  for (const char* f : {"NFAIL1", "NFAIL4", "PSNFAIL", "KEEPCS", "DELFR", "DRCPSID", "INTPERR"})
+    inactive(f, static_cast<double>(c4.integer(f)), 0);
+  s.loc = c1.loc();
+  set_once(m.controls.shell, s, r);
 }
 
 void control_energy(KeywordRecord& r, model::ModelDatabase& m) {

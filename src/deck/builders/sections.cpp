@@ -91,9 +91,19 @@ void section_shell(KeywordRecord& r, model::ModelDatabase& m) {
   s.element_formulation = static_cast<int>(c1.integer("ELFORM"));
   s.shell.shear_factor = c1.real("SHRF");
   s.shell.integration_points = static_cast<int>(c1.integer("NIP"));
+  s.shell.quadrature = c1.real("QR");
+  s.shell.composite = static_cast<int>(c1.integer("ICOMP"));
   const int t1 = c2.index("T1");
   for (int k = 0; k < 4; ++k)
     s.shell.thickness[k] = c2.real(t1 + k);
+  s.shell.reference_surface = c2.real("NLOC");
+  s.shell.nonstructural_mass = c2.real("MAREA");
+  s.shell.formulation_loc = c1.loc("ELFORM");
+  s.shell.points_loc = c1.loc("NIP");
+  s.shell.quadrature_loc = c1.loc("QR");
+  s.shell.composite_loc = c1.loc("ICOMP");
+  s.shell.thickness_loc = c2.loc("T1");
+  s.shell.reference_loc = c2.loc("NLOC");
   s.loc = c1.loc();
   m.sections.push_back(std::move(s));
 }

@@ -28,6 +28,7 @@ const std::vector<BuilderEntry>& builder_table() {
       {"CONTROL_HOURGLASS", control_hourglass},
       {"CONTROL_CONTACT", control_contact},
       {"CONTROL_SOLID", control_solid},
+      {"CONTROL_SHELL", control_shell},
       {"CONTROL_ENERGY", control_energy},
       {"CONTROL_BULK_VISCOSITY", control_bulk_viscosity},
       {"CONTROL_ACCURACY", control_accuracy},

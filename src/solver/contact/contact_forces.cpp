@@ -59,7 +59,7 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
     const double gap = r.dot(at.normal);
     const double size = std::sqrt(p.surface.area[kk]);
     if ((r - gap * at.normal).norm() > kEdgeTolerance * size) continue;
-    const double h = p.surface.half_thickness[kk];
+    const double h = p.surface.half_thickness[kk] + p.node_half_thickness[i];
     double side = 1.0;  // one-sided: the normal's side
     if (p.surface.two_sided[kk]) {
       // The side it was held on last cycle, else the side it is on now.

@@ -35,7 +35,10 @@ struct Surface {
 struct Pass {
   std::vector<Index> nodes;       ///< slave nodes, ascending
   std::vector<double> stiffness;  ///< SOFT 0 penalty per slave node, scale factors included
-  bool nodes_on_side_a = true;    ///< for the resultants: which side the nodes belong to
+  /// Half the contact thickness of each slave node (automatic contacts: half the thickest shell
+  /// on it, or SST), added to the segment's: a shell node touches at the two half thicknesses.
+  std::vector<double> node_half_thickness;
+  bool nodes_on_side_a = true;  ///< for the resultants: which side the nodes belong to
   Surface surface;
   // Search (contact_search.cpp): candidate segments per node (CSR over `nodes`), and the nodes
   // that have any (indices into `nodes`, ascending): only they are checked each cycle.

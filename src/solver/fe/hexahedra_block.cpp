@@ -4,31 +4,12 @@
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
+#include "solver/fe/added_mass.hpp"
 #include "solver/fe/solid_elements.hpp"
 
 namespace mcdyna::solver {
 
-std::string element_name(const State& s, Index e) {
-  const auto i = static_cast<std::size_t>(e);
-  return fmt::format("solid element {} (part {})", s.solids.ids[i],
-                     s.parts[static_cast<std::size_t>(s.solids.part[i])].id);
-}
-
 namespace {
-
-// Nodal added mass from the elements' added mass (gather, fixed order).
-void refresh_added_mass(State& s) {
-  Nodes& nd = s.nodes;
-#pragma omp parallel for schedule(static)
-  for (Index n = 0; n < nd.count(); ++n) {
-    double sum = 0.0;
-    for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
-         k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k)
-      sum += s.solids
-                 .added_mass[static_cast<std::size_t>(nd.corners[static_cast<std::size_t>(k)] / 8)];
-    nd.added_mass[static_cast<std::size_t>(n)] = sum / 8.0;
-  }
-}
 
 class HexahedraBlock final : public Block {
  public:

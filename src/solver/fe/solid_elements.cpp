@@ -9,6 +9,7 @@
 #include <limits>
 #include <variant>
 
+#include "solver/fe/element_loop.hpp"
 #include "solver/fe/hex_geometry.hpp"
 #include "solver/material/constitutive.hpp"
 #include "solver/material/point_kinematics.hpp"
@@ -19,23 +20,8 @@ namespace {
 
 using hex::Corners;
 
-constexpr Index kParallelMinimum = 512;
-// Elements are handed to threads in interleaved chunks: plastic work concentrates in one region
-// of a part (the impact end of a Taylor bar), and contiguous halves would leave one thread idle.
-constexpr int kElementChunk = 128;
-
-// Per-thread minimum of (step, element); ties go to the lower element index, so the combined
-// result is the same for any thread count.
-struct StepMin {
-  double step = std::numeric_limits<double>::infinity();
-  Index element = -1;
-  void take(double s, Index e) {
-    if (s < step || (s == step && (element < 0 || e < element))) {
-      step = s;
-      element = e;
-    }
-  }
-};
+using fe::ElementOutcome;
+using fe::kParallelMinimum;
 
 Kinematics kinematics(const Corners& v, const double b[8][3]) {
   double l[3][3] = {};
@@ -213,12 +199,6 @@ double hourglass_forces(ElementContext& c, Index e, const CentrePoint& p,
   return power * dt;
 }
 
-struct ElementOutcome {
-  double step = 0.0;
-  bool inverted = false;
-  bool failed = false;
-};
-
 // Clears the element's corner forces and loads its corner positions and velocities.
 double* start_element(State& st, Index e, Corners& x, Corners& v) {
   double* f = &st.solids.corner_force[24 * static_cast<std::size_t>(e)];
@@ -314,96 +294,34 @@ ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, 
   return {vr.step, false, failed};
 }
 
-// Mass scaling (DT2MS): give the element enough added mass that its step reaches the target;
-// added mass never decreases. Returns the element step with the added mass.
-double scale_mass(Solids& s, std::size_t i, double step, const ElementPassInput& in,
-                  bool& changed) {
-  const double with_added = step * std::sqrt((s.mass[i] + s.added_mass[i]) / s.mass[i]);
-  if (in.mass_scaling_step <= 0.0 || in.scale_factor * with_added >= in.mass_scaling_step)
-    return with_added;
-  const double ratio = in.mass_scaling_step / (in.scale_factor * step);
-  s.added_mass[i] = s.mass[i] * (ratio * ratio - 1.0);
-  changed = true;
-  return in.mass_scaling_step / in.scale_factor;
-}
-
-// What the pass gathers over blocks and threads.
-struct PassTotals {
-  StepMin step;
-  Index inverted = std::numeric_limits<Index>::max();
-  Index non_finite = std::numeric_limits<Index>::max();
-  Index eroded = 0;
-  bool mass_changed = false;
-};
-
 // The elements of one block with its material's deviatoric model (visited once per block).
 template <class Model>
-void block_pass(ElementContext& c, const Model& model, PassTotals& totals) {
+void block_pass(ElementContext& c, const Model& model, fe::PassTotals& totals) {
   Solids& s = c.st.solids;
   const SolidBlock& block = c.block;
   const bool one_point = block.formulation == SolidFormulation::one_point;
-  // Small blocks run serially: a parallel region costs more than a few elements.
-#pragma omp parallel if (block.end - block.begin > kParallelMinimum)
-  {
-    StepMin local;
-    Index local_inverted = std::numeric_limits<Index>::max();
-    Index local_non_finite = std::numeric_limits<Index>::max();
-    Index local_eroded = 0;
-    bool local_changed = false;
-#pragma omp for schedule(static, kElementChunk) nowait
-    for (Index e = block.begin; e < block.end; ++e) {
-      const auto i = static_cast<std::size_t>(e);
+  fe::element_loop(
+      block.begin, block.end,
+      fe::ElementArrays{s.eroded, s.corner_force, 24, s.mass, s.added_mass, s.time_step},
+      c.in.scale_factor, c.in.mass_scaling_step,
       // Over several processes, the elements another process computes alone are skipped.
-      if (s.eroded[i] || !c.st.ownership.computes_element(e)) continue;
-      const ElementOutcome o =
-          one_point ? one_point_element(c, model, e) : selective_reduced_element(c, model, e);
-      if (o.inverted) {
-        local_inverted = std::min(local_inverted, e);
-        continue;
-      }
-      if (!std::isfinite(o.step)) {  // NaN or Inf stress, energy or wave speed
-        local_non_finite = std::min(local_non_finite, e);
-        continue;
-      }
-      if (o.failed) {
-        s.eroded[i] = 1;
-        std::fill(&s.corner_force[24 * i], &s.corner_force[24 * i] + 24, 0.0);
-        ++local_eroded;
-        continue;
-      }
-      const double step = scale_mass(s, i, o.step, c.in, local_changed);
-      s.time_step[i] = step;
-      local.take(step, e);
-    }
-#pragma omp critical
-    {
-      totals.step.take(local.step, local.element);
-      totals.inverted = std::min(totals.inverted, local_inverted);
-      totals.non_finite = std::min(totals.non_finite, local_non_finite);
-      totals.eroded += local_eroded;
-      totals.mass_changed = totals.mass_changed || local_changed;
-    }
-  }
+      [&](Index e) { return !c.st.ownership.computes_element(e); },
+      [&](Index e) {
+        return one_point ? one_point_element(c, model, e) : selective_reduced_element(c, model, e);
+      },
+      totals);
 }
 
 }  // namespace
 
 ElementPassResult solid_element_pass(State& state, const ElementPassInput& input) {
-  PassTotals totals;
+  fe::PassTotals totals;
   for (const SolidBlock& block : state.solids.blocks) {
     const Material& mat = state.materials[static_cast<std::size_t>(block.material)];
     ElementContext c{state, block, mat, input};
     std::visit([&](const auto& model) { block_pass(c, model, totals); }, mat.model);
   }
-  ElementPassResult result;
-  result.critical_step = totals.step.step;
-  result.controlling = totals.step.element;
-  result.inverted = totals.inverted == std::numeric_limits<Index>::max() ? -1 : totals.inverted;
-  result.non_finite =
-      totals.non_finite == std::numeric_limits<Index>::max() ? -1 : totals.non_finite;
-  result.newly_eroded = totals.eroded;
-  result.mass_changed = totals.mass_changed;
-  return result;
+  return totals.result();
 }
 
 void gather_solid_forces(State& state) {

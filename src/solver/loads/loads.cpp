@@ -50,6 +50,10 @@ void apply_nodal_constraints(State& state, const StepTimes& t) {
       nd.velocity(i, n) = 0.0;
       nd.acceleration(i, n) = 0.0;
     }
+    if (c.masks[k] >> 3 && !nd.rotary_inertia.empty() &&
+        nd.rotary_inertia[static_cast<std::size_t>(n)] > 0.0)
+      for (int i = 0; i < 3; ++i)
+        if (c.masks[k] & (8u << i)) nd.angular_velocity(i, n) = 0.0;
   }
 }
 

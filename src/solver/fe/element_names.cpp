@@ -1,0 +1,22 @@
+// What an element index names: solids first, then shells (block.hpp).
+#include <fmt/format.h>
+
+#include "solver/block.hpp"
+
+namespace mcdyna::solver {
+
+ElementRef element_ref(const State& s, Index e) {
+  if (e < s.solids.count()) {
+    const auto i = static_cast<std::size_t>(e);
+    return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
+  }
+  const auto i = static_cast<std::size_t>(e - s.solids.count());
+  return {"shell", s.shells.ids[i], s.parts[static_cast<std::size_t>(s.shells.part[i])].id};
+}
+
+std::string element_name(const State& s, Index e) {
+  const ElementRef r = element_ref(s, e);
+  return fmt::format("{} element {} (part {})", r.kind, r.id, r.part);
+}
+
+}  // namespace mcdyna::solver
