@@ -366,20 +366,18 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     const model::Contact& c = m.contacts[order];
     // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.
     const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
-    if (c.kind == model::ContactKind::automatic_single_surface) {
-      d.error(c.loc,
-              "contact {}: *CONTACT_AUTOMATIC_SINGLE_SURFACE is not run by this version; model the "
-              "pairs as *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-              number);
-      continue;
-    }
-    const bool automatic = c.kind == model::ContactKind::automatic_nodes_to_surface ||
+    // Single surface: the nodes of side A against its own segments (one pass; a node never
+    // meets a segment it belongs to). SURFA 0 is every part.
+    const bool single = c.kind == model::ContactKind::automatic_single_surface;
+    const bool automatic = single || c.kind == model::ContactKind::automatic_nodes_to_surface ||
                            c.kind == model::ContactKind::automatic_surface_to_surface;
     const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
                          c.kind == model::ContactKind::surface_to_surface;
     bool ok = true;
-    Side a = resolve_side(m, parts, face_owner, d, c, number, c.a, "A (slave)", ok);
-    Side b = resolve_side(m, parts, face_owner, d, c, number, c.b, "B (master)", ok);
+    model::ContactSide side_a = c.a;
+    if (single && side_a.id == 0) side_a.type = 5;
+    Side a = resolve_side(m, parts, face_owner, d, c, number, side_a, "A (slave)", ok);
+    Side b = single ? a : resolve_side(m, parts, face_owner, d, c, number, c.b, "B (master)", ok);
     if (!ok) continue;
     if (b.surface.segments.empty()) {
       d.error(c.loc,
@@ -466,8 +464,10 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
       p.side.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
       return p;
     };
-    in.passes.push_back(
-        make_pass(a, c.penalty_scale_a, c.thickness_a, b, c.penalty_scale_b, c.thickness_b, true));
+    // Single surface: side A's scale factors and thickness on both ends.
+    in.passes.push_back(make_pass(a, c.penalty_scale_a, c.thickness_a, b,
+                                  single ? c.penalty_scale_a : c.penalty_scale_b,
+                                  single ? c.thickness_a : c.thickness_b, true));
     if (two_way) {
       if (a.surface.segments.empty()) {
         d.note(c.loc,
