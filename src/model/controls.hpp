@@ -46,6 +46,8 @@ struct ContactControl {
   int eroding_mass = 0;
   int bucket_interval = 0;              ///< NSBCS
   double max_penetration_factor = 4.0;  ///< XPENE
+  /// SSTHK: 0, single-surface contacts touch shells at min(t, 0.4 shortest edge); 1, at t.
+  int single_surface_thickness = 0;
   double default_static_friction = 0.0, default_dynamic_friction = 0.0;
   int ignore_penetration = 0;  ///< card 4 IGNORE
   int friction_energy = 0;     ///< FRCENG

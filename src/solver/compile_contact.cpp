@@ -348,18 +348,37 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
   if (m.contacts.empty()) return;
   const std::vector<PartSurface> parts = part_surfaces(m, s);
   const std::vector<double> node_k = node_stiffness(s, parts);
-  // Half the thickest shell (rigid or deformable) on each node.
-  std::vector<double> shell_half(static_cast<std::size_t>(s.nodes.count()), 0.0);
+  const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
+  // Single-surface contacts touch a shell at min(t, 0.4 x its shortest edge) unless SSTHK = 1
+  // (LS-DYNA's default: a fold's crest then never touches the segments next to it).
+  const bool cap_single = control.single_surface_thickness == 0;
+  auto capped = [&](const std::array<Index, 4>& seg, double t) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double edge =
+          (s.nodes.position.col(seg[(k + 1) % 4]) - s.nodes.position.col(seg[k])).norm();
+      if (edge > 0.0) shortest = std::min(shortest, edge);
+    }
+    return std::min(t, 0.4 * shortest);
+  };
+  // Half the thickest shell (rigid or deformable) on each node, and the same capped for
+  // single-surface contacts.
+  const auto node_count = static_cast<std::size_t>(s.nodes.count());
+  std::vector<double> shell_half(node_count, 0.0), shell_half_single(node_count, 0.0);
   for (const PartSurface& ps : parts)
-    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j)
-      for (const Index n : ps.surface.segments[j])
-        shell_half[static_cast<std::size_t>(n)] =
-            std::max(shell_half[static_cast<std::size_t>(n)], 0.5 * ps.shell_thickness[j]);
+    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
+      const double t = ps.shell_thickness[j];
+      const double t_single = cap_single ? capped(ps.surface.segments[j], t) : t;
+      for (const Index n : ps.surface.segments[j]) {
+        const auto nn = static_cast<std::size_t>(n);
+        shell_half[nn] = std::max(shell_half[nn], 0.5 * t);
+        shell_half_single[nn] = std::max(shell_half_single[nn], 0.5 * t_single);
+      }
+    }
   FaceOwners face_owner;  // for segment sets
   for (std::size_t p = 0; p < parts.size(); ++p)
     for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
       face_owner.emplace(sorted(parts[p].surface.segments[j]), std::make_pair(p, j));
-  const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
   const double slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
 
   for (std::size_t order = 0; order < m.contacts.size(); ++order) {
@@ -442,12 +461,18 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
         p.stiffness[i] = slsfac * node_scale * node_k[n];
         // Automatic contact: a shell node touches at half its shell's thickness (or SST).
         if (automatic && shell_half[n] > 0.0)
-          p.node_half_thickness[i] = node_thickness > 0.0 ? 0.5 * node_thickness : shell_half[n];
+          p.node_half_thickness[i] = node_thickness > 0.0 ? 0.5 * node_thickness
+                                     : single             ? shell_half_single[n]
+                                                          : shell_half[n];
       }
       p.surface = segments.surface;
       for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
         p.surface.stiffness[j] *= slsfac * segment_scale;
-        const double t = thickness > 0.0 ? thickness : segments.shell_thickness[j];
+        const double shell = segments.shell_thickness[j];
+        const double t = thickness > 0.0 ? thickness
+                         : single && cap_single && shell > 0.0
+                             ? capped(p.surface.segments[j], shell)
+                             : shell;
         // Automatic contact touches shells on both faces at half their thickness.
         if (segments.shell_thickness[j] > 0.0 || thickness > 0.0) {
           p.surface.two_sided[j] = automatic ? 1 : 0;

@@ -6,15 +6,21 @@ plastic aluminium (E 70 GPa, nu 0.3, rho 2.7e-9 t/mm^3, sigma0 100 MPa: the rigi
 plastic flow stress of the crushing theories). Both ends are clamped (as welded to end plates);
 the top end's nodes are driven down at 10 m/s (ramped over 0.5 ms).
 Automatic single-surface contact between the folds. Units t, mm, s, N, MPa.
+A trigger (--trigger, mm) starts the symmetric folding mode the theory assumes: over the top two
+fold half-wavelengths H = 0.99 t^1/3 C^2/3 (Wierzbicki and Abramowicz 1983) two opposite faces
+are dented in and the other two out, sin(pi s / C) across each face; without it the clamped,
+driven end starts an all-outward (extensional) first lobe.
 
 Abramowicz and Jones (1984, Int. J. Impact Engng 2: 179-208), symmetric mode with the effective
 crushing distance: P_m = 13.06 sigma0 t^(5/3) C^(1/3) = 9.46 kN here (C/t = 33). The crushing
 force is the reaction of the driven nodes (bndout); tools/verify/crush_force.py integrates it.
 
 usage: crush_tube.py N OUT.k [--elform 2|16] [--nip 5] [--crush 70] [--speed 10000]
+                             [--trigger 0.15]
   N: elements along each side (the length takes the same element size)
 """
 import argparse
+import math
 
 
 def main():
@@ -26,6 +32,7 @@ def main():
     ap.add_argument("--crush", type=float, default=70.0, help="crush distance, mm")
     ap.add_argument("--speed", type=float, default=10000.0, help="mm/s")
     ap.add_argument("--ihq", type=int, default=0, help="0: the default hourglass control")
+    ap.add_argument("--trigger", type=float, default=0.15, help="dent amplitude, mm (0: none)")
     a = ap.parse_args()
     side, thick, length = 50.0, 1.5, 150.0
     h = side / a.n
@@ -34,17 +41,28 @@ def main():
     ramp = 5e-4
     end = (a.crush + 0.5 * a.speed * ramp) / a.speed
 
-    def point(k):
-        """Mid-surface point k of the cross-section, counter-clockwise from (-C/2, -C/2)."""
+    wave = 0.99 * thick ** (1 / 3) * side ** (2 / 3)  # fold half-wavelength H
+
+    def point(k, z):
+        """Mid-surface point k of the cross-section at height z, counter-clockwise from
+        (-C/2, -C/2), moved out of its face by the trigger's dent."""
         s, r = divmod(k, a.n)
         f = r / a.n * side - side / 2
-        return [(f, -side / 2), (side / 2, f), (-f, side / 2), (-side / 2, -f)][s]
+        x, y = [(f, -side / 2), (side / 2, f), (-f, side / 2), (-side / 2, -f)][s]
+        below_top = length - z
+        if below_top < 2 * wave:
+            dent = a.trigger * (1 if s % 2 == 0 else -1) * math.sin(math.pi * r / a.n)
+            dent *= math.sin(math.pi * below_top / wave)
+            nx, ny = [(0, -1), (1, 0), (0, 1), (-1, 0)][s]
+            x, y = x + dent * nx, y + dent * ny
+        return x, y
 
     nid = lambda k, j: 1 + (k % around) + around * j
     out = []
     w = out.append
     w("$ " + "-" * 94)
-    w(f"$ crush_tube n = {a.n} (element {h:g} mm), ELFORM {a.elform}, NIP {a.nip}"
+    w(f"$ crush_tube n = {a.n} (element {h:g} mm), ELFORM {a.elform}, NIP {a.nip}, trigger"
+      f" {a.trigger:g} mm"
       " - written by tools/decks/crush_tube.py")
     w("$ What it shows: a 50 x 50 x 1.5 mm aluminium square tube, 150 mm long, crushed axially at")
     w(f"$   {a.speed / 1000:g} m/s by {a.crush:g} mm; folds form from the driven end.")
@@ -81,7 +99,7 @@ def main():
     w("*NODE")
     for j in range(nz + 1):
         for k in range(around):
-            x, y = point(k)
+            x, y = point(k, j * h)
             w(f"{nid(k, j):8d}{x:16.8e}{y:16.8e}{j * h:16.8e}")
     w("*ELEMENT_SHELL")
     e = 0

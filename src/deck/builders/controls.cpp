@@ -66,6 +66,7 @@ void control_contact(KeywordRecord& r, model::ModelDatabase& m) {
   c.eroding_mass = static_cast<int>(c1.integer("ENMASS"));
   c.bucket_interval = static_cast<int>(c2.integer("NSBCS"));
   c.max_penetration_factor = c2.real("XPENE");
+  c.single_surface_thickness = static_cast<int>(c2.integer("SSTHK"));
   c.default_static_friction = c3.real("SFRIC");
   c.default_dynamic_friction = c3.real("DFRIC");
   c.ignore_penetration = static_cast<int>(c4.integer("IGNORE"));

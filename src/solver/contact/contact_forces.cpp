@@ -58,8 +58,15 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
     const Vec3 r = x - at.point;
     const double gap = r.dot(at.normal);
     const double size = std::sqrt(p.surface.area[kk]);
-    if ((r - gap * at.normal).norm() > kEdgeTolerance * size) continue;
+    const double beyond_edge = (r - gap * at.normal).norm();
     const double h = p.surface.half_thickness[kk] + p.node_half_thickness[i];
+    // A segment touched at a distance (shell thickness) is the set of points within h of it:
+    // its offset faces and, beyond its edges, a rounded rim of radius h, as LS-DYNA's
+    // automatic contacts wrap shell edges. The depth is then h minus the distance to the
+    // closest point, continuous from one segment to the next over a fold's crest, where
+    // offset faces alone leave a wedge the node enters freely and then is thrown out of.
+    const bool rim = h > 0.0 && beyond_edge > 1e-9 * size;
+    if (!rim && beyond_edge > kEdgeTolerance * size) continue;
     double side = 1.0;  // one-sided: the normal's side
     if (p.surface.two_sided[kk]) {
       // The side it was held on last cycle, else the side it is on now.
@@ -67,8 +74,13 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
       const double was = held.dot(at.normal);
       side = was != 0.0 ? (was > 0.0 ? 1.0 : -1.0) : (gap >= 0.0 ? 1.0 : -1.0);
     }
-    const double depth = h - side * gap;
-    const Vec3 push = side * at.normal;
+    double depth = h - side * gap;
+    Vec3 push = side * at.normal;
+    if (rim) {
+      const double distance = r.norm();
+      depth = h - distance;
+      push = r / distance;
+    }
     if (depth > kReleaseDepth * size + h) continue;
     const double distance = r.norm();
     const bool nearer = distance < nearest * (1.0 - 1e-12);
