@@ -83,10 +83,11 @@ void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_e
 // A deformable shell part: the formulations and integration rules mcdyna has.
 void check_deformable_shell(const Part& p, const Section& s, core::Diagnostics& diags) {
   const ShellSettings& sh = s.shell;
-  if (s.element_formulation != 2 && s.element_formulation != 0) {
+  const int f = s.element_formulation;
+  if (f != 2 && f != 0 && f != 16) {
     diags.error(sh.formulation_loc,
                 "part {}: shell ELFORM {} of section {} is not supported for deformable shells "
-                "(2 Belytschko-Tsay)",
+                "(2 Belytschko-Tsay, 16 fully integrated)",
                 p.id, s.element_formulation, s.id);
   }
   if (sh.integration_points > 10) {

@@ -187,8 +187,9 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
     const model::ShellSettings& set = sec->shell;
     ShellBlock b;
     b.part = static_cast<Index>(p);
-    b.formulation = ShellFormulation::belytschko_tsay;
-    b.in_plane_points = 1;
+    const bool full = sec->element_formulation == 16;
+    b.formulation = full ? ShellFormulation::fully_integrated : ShellFormulation::belytschko_tsay;
+    b.in_plane_points = full ? 4 : 1;
     b.layers = std::clamp(set.integration_points == 0 ? 2 : set.integration_points, 1, 10);
     if (set.quadrature == 1.0 && b.layers > 1)
       trapezoidal_rule(b.layers, b.layer_z, b.layer_weight);
@@ -205,6 +206,15 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
     if (const model::Hourglass* h = part_hourglass(m, part)) {
       b.bending_hourglass = h->qb;
       b.warping_hourglass = h->qw;
+      if (full) {
+        d.note(h->loc,
+               "part {}: *HOURGLASS {} (IHQ {}) has no effect on its ELFORM 16 shells: fully "
+               "integrated, they have no hourglass modes{}",
+               part.id, h->id, h->type,
+               h->type == 8 ? " (the warping stiffness of IHQ 8 is not added: warped elements "
+                              "are taken flat in their frame)"
+                            : "");
+      }
     }
     b.shear_factor = set.shear_factor > 0.0 ? set.shear_factor : 1.0;
     b.material = static_cast<Index>(s.materials.size());

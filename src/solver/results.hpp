@@ -62,21 +62,24 @@ inline ElementResult element_result(const State& s, const SolidBlock& block, Ind
 enum class ShellSurface { all, top, bottom };
 
 /// Result of shell `e` of `block`: the stress turned from the element's frame to the global axes,
-/// the plastic strain (mean of the layers taken) and the damage (largest of them).
+/// the plastic strain (mean of the layers taken, over the in-plane points) and the damage
+/// (largest of them).
 inline ElementResult shell_result(const State& s, const ShellBlock& block, Index e,
                                   ShellSurface surface) {
   ElementResult r;
-  const int layers = block.layers;
-  const Index first = block.point_begin + layers * (e - block.begin);
+  const int layers = block.layers, in_plane = block.in_plane_points;
+  const Index first = block.point_begin + in_plane * layers * (e - block.begin);
   int from = 0, to = layers;
   if (surface == ShellSurface::top) from = layers - 1;
   if (surface == ShellSurface::bottom) to = 1;
   const auto& pts = s.shells.points;
   Mat3 local = Mat3::Zero();
-  for (int l = from; l < to; ++l) {
-    const Index p = first + l;
+  for (int k = 0; k < in_plane * layers; ++k) {  // the in-plane points' layers, averaged
+    const int l = k % layers;
+    if (l < from || l >= to) continue;
+    const Index p = first + k;
     const auto pp = static_cast<std::size_t>(p);
-    const double w = 1.0 / (to - from);
+    const double w = 1.0 / ((to - from) * in_plane);
     local(0, 0) += w * pts.stress(0, p);
     local(1, 1) += w * pts.stress(1, p);
     local(2, 2) += w * pts.stress(2, p);

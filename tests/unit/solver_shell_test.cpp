@@ -23,13 +23,14 @@ double mode(double s, bool slope) {
 
 // The cantilever strip of tools/decks/shell_cantilever.py: steel 100 x 10 x 1 mm (SI units),
 // clamped at x = 0, released with its first mode's velocity field (tip velocity 0.1 m/s).
-std::string cantilever(int nx, int ny, double end, const std::string& extra = "") {
+std::string cantilever(int nx, int ny, double end, const std::string& extra = "", int elform = 2,
+                       double poisson = 0.3) {
   const double length = 0.1, width = 0.01, v0 = 0.1, tip = mode(1.0, false);
   auto id = [&](int i, int j) { return 1 + i + (nx + 1) * j; };
   std::string s = fmt::format(
       "*KEYWORD\n*CONTROL_TERMINATION\n{}\n*PART\nstrip\n1,1,1\n"
-      "*SECTION_SHELL\n1,2,0.8333333,2\n0.001,0.001,0.001,0.001\n*MAT_ELASTIC\n1,7850,210e9,0.3\n",
-      end);
+      "*SECTION_SHELL\n1,{},0.8333333,2\n0.001,0.001,0.001,0.001\n*MAT_ELASTIC\n1,7850,210e9,{}\n",
+      end, elform, poisson);
   s += extra + "*NODE\n";
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i)
@@ -56,12 +57,10 @@ std::string cantilever(int nx, int ny, double end, const std::string& extra = ""
 
 }  // namespace
 
-TEST_CASE("shell cantilever: first-mode period against beam theory, energy kept") {
-  // Euler-Bernoulli: f1 = (beta1 L)^2 / (2 pi L^2) sqrt(E t^2 / (12 rho)) = 83.55 Hz.
-  const double period =
-      2.0 * M_PI * 0.01 / (kBetaL * kBetaL) / std::sqrt(210e9 * 1e-6 / (12 * 7850));
+// The first-mode period of the cantilever deck (tip crossings of z = 0) and the energy drift.
+std::pair<double, double> cantilever_period(const std::string& deck) {
   test::TempDir dir;
-  test::Simulation sim = test::prepare(dir, cantilever(20, 2, 0.025));
+  test::Simulation sim = test::prepare(dir, deck);
   const solver::Index tip = sim.state->nodes.count() / 3 * 2 - 1;  // (nx, ny / 2)
   REQUIRE(sim.state->nodes.initial(0, tip) == doctest::Approx(0.1));
   std::vector<double> crossings;
@@ -78,15 +77,40 @@ TEST_CASE("shell cantilever: first-mode period against beam theory, energy kept"
   test::run(sim, hooks);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
   REQUIRE(crossings.size() >= 3);
-  const double measured =
-      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  MESSAGE("period ", measured * 1e3, " ms, beam theory ", period * 1e3, " ms, error ",
-          100.0 * (measured / period - 1.0), " %; energy drift ", drift.worst);
+  return {2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1),
+          drift.worst};
+}
+
+// Euler-Bernoulli: f1 = (beta1 L)^2 / (2 pi L^2) sqrt(E t^2 / (12 rho)) = 83.55 Hz.
+const double kBeamPeriod =
+    2.0 * M_PI * 0.01 / (kBetaL * kBetaL) / std::sqrt(210e9 * 1e-6 / (12 * 7850));
+
+TEST_CASE("shell cantilever: first-mode period against beam theory, energy kept") {
+  // Steel strip 100 x 10 x 1 mm, 20 x 2 Belytschko-Tsay shells, released in its first mode.
+  const auto [measured, drift] = cantilever_period(cantilever(20, 2, 0.025));
+  MESSAGE("period ", measured * 1e3, " ms, beam theory ", kBeamPeriod * 1e3, " ms, error ",
+          100.0 * (measured / kBeamPeriod - 1.0), " %; energy drift ", drift);
   // The mesh study (manual/verification.md) converges at second order: 1.37 %, 0.34 %, 0.08 %,
   // 0.01 % at 5, 10, 20, 40 elements; 20 elements are within 0.3 %.
-  CHECK(std::abs(measured / period - 1.0) < 0.003);
+  CHECK(std::abs(measured / kBeamPeriod - 1.0) < 0.003);
   // Undamped and elastic: central differences keep the total (the hourglass work included).
-  CHECK(drift.worst < 1e-5);
+  CHECK(drift < 1e-5);
+}
+
+TEST_CASE("shell cantilever: the fully integrated shell (ELFORM 16) against beam theory") {
+  // With nu = 0 the strip is a beam whatever the clamp does to its width: both formulations
+  // give +0.14 % at 20 x 2 (manual/verification.md). With nu = 0.3 the clamped root stops the
+  // anticlastic curvature and the plate is stiffer than the beam: the fully integrated shell
+  // finds it with 2 elements across (-0.57 %), Belytschko-Tsay with 8 (-0.55 %, against
+  // -0.60 % for ELFORM 16 at 40 x 8); the bound is the plate modulus E / (1 - nu^2), -4.7 %.
+  const auto [beam, drift] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.0));
+  const auto [plate, unused] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.3));
+  MESSAGE("ELFORM 16 period, nu = 0: ", 100.0 * (beam / kBeamPeriod - 1.0),
+          " %; nu = 0.3: ", 100.0 * (plate / kBeamPeriod - 1.0), " %; energy drift ", drift);
+  CHECK(std::abs(beam / kBeamPeriod - 1.0) < 0.003);
+  CHECK(plate / kBeamPeriod - 1.0 < -0.003);
+  CHECK(plate / kBeamPeriod - 1.0 > -0.009);
+  CHECK(drift < 1e-5);
 }
 
 TEST_CASE("shell membrane: uniaxial plane-stress tension follows the MAT_024 hardening curve") {
@@ -94,55 +118,63 @@ TEST_CASE("shell membrane: uniaxial plane-stress tension follows the MAT_024 har
   // (slow against its membrane period of ~0.2 us): sigma_yy = sigma_zz = 0 and sigma_xx on the
   // flow curve 200 + 1000 ep at the plastic strain ln(L / L0) - sigma / E. With ISTUPD 1 the
   // thickness strain is the width strain, -ep / 2 - nu sigma / E (plastic flow at constant volume).
-  test::TempDir dir;
-  test::Simulation sim = test::prepare(
-      dir,
-      "*KEYWORD\n*CONTROL_TERMINATION\n5e-3\n*CONTROL_SHELL\n20,0,-1,1,2,2,2\n"
-      "*PART\nplate\n1,1,1\n*SECTION_SHELL\n1,2,1,3\n0.1\n"
-      "*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.85e-9,200e3,0.3,200,1000\n"
-      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n1,1,1,2,3,4\n"
-      "*BOUNDARY_SPC_NODE\n1,0,1,1,1,1,1,1\n4,0,1,0,1,1,1,1\n2,0,0,0,1,1,1,1\n3,0,0,0,1,1,1,1\n"
-      "*SET_NODE_LIST\n2\n2,3\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,1,1.0\n"
-      "*DEFINE_CURVE\n1\n0,10\n1,10\n*END\n");
-  test::run(sim);
-  REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  const solver::State& s = *sim.state;
-  const solver::ShellBlock& b = s.shells.blocks.front();
-  const solver::ElementResult r = solver::shell_result(s, b, 0, solver::ShellSurface::all);
-  const double stretch = s.nodes.position(0, 1) - s.nodes.position(0, 0);
-  const double plastic = std::log(stretch) - r.stress[0] / 200e3;
-  MESSAGE("stretch ", stretch, ": sxx ", r.stress[0], " syy ", r.stress[1], " szz ", r.stress[2],
-          " sxy ", r.stress[3], " ep ", r.plastic_strain, " (expected ", plastic, ")");
-  CHECK(r.plastic_strain == doctest::Approx(plastic).epsilon(0.01));
-  // The element is pulled, not held: its membrane vibration (rho c v ~ 0.4 MPa) is all that
-  // separates the stress from the flow curve.
-  CHECK(r.stress[0] == doctest::Approx(200.0 + 1000.0 * r.plastic_strain).epsilon(0.005));
-  CHECK(std::abs(r.stress[1]) < 0.005 * r.stress[0]);
-  CHECK(std::abs(r.stress[2]) < 1e-9 * r.stress[0]);
-  const double lateral = -0.5 * r.plastic_strain - 0.3 * r.stress[0] / 200e3;
-  const double width = s.nodes.position(1, 3) - s.nodes.position(1, 0);
-  const double thickness = s.shells.thickness[0] / s.shells.initial_thickness[0];
-  MESSAGE("width strain ", std::log(width), ", thickness strain ", std::log(thickness),
-          ", expected ", lateral);
-  CHECK(std::log(width) == doctest::Approx(lateral).epsilon(0.01));
-  CHECK(std::log(thickness) == doctest::Approx(lateral).epsilon(0.01));
+  // Both formulations: the fully integrated shell's four points see the same uniform field.
+  for (const int elform : {2, 16}) {
+    CAPTURE(elform);
+    test::TempDir dir;
+    test::Simulation sim = test::prepare(
+        dir, fmt::format("*KEYWORD\n*CONTROL_TERMINATION\n5e-3\n*CONTROL_SHELL\n20,0,-1,1,2,2,2\n"
+                         "*PART\nplate\n1,1,1\n*SECTION_SHELL\n1,{},1,3\n0.1\n",
+                         elform) +
+                 "*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.85e-9,200e3,0.3,200,1000\n"
+                 "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*ELEMENT_SHELL\n1,1,1,2,3,4\n"
+                 "*BOUNDARY_SPC_NODE\n1,0,1,1,1,1,1,1\n4,0,1,0,1,1,1,1\n2,0,0,0,1,1,1,1\n3,0,0,0,1,"
+                 "1,1,1\n"
+                 "*SET_NODE_LIST\n2\n2,3\n*BOUNDARY_PRESCRIBED_MOTION_SET\n2,1,0,1,1.0\n"
+                 "*DEFINE_CURVE\n1\n0,10\n1,10\n*END\n");
+    test::run(sim);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    const solver::State& s = *sim.state;
+    const solver::ShellBlock& b = s.shells.blocks.front();
+    const solver::ElementResult r = solver::shell_result(s, b, 0, solver::ShellSurface::all);
+    const double stretch = s.nodes.position(0, 1) - s.nodes.position(0, 0);
+    const double plastic = std::log(stretch) - r.stress[0] / 200e3;
+    MESSAGE("stretch ", stretch, ": sxx ", r.stress[0], " syy ", r.stress[1], " szz ", r.stress[2],
+            " sxy ", r.stress[3], " ep ", r.plastic_strain, " (expected ", plastic, ")");
+    CHECK(r.plastic_strain == doctest::Approx(plastic).epsilon(0.01));
+    // The element is pulled, not held: its membrane vibration (rho c v ~ 0.4 MPa) is all that
+    // separates the stress from the flow curve.
+    CHECK(r.stress[0] == doctest::Approx(200.0 + 1000.0 * r.plastic_strain).epsilon(0.005));
+    CHECK(std::abs(r.stress[1]) < 0.005 * r.stress[0]);
+    CHECK(std::abs(r.stress[2]) < 1e-9 * r.stress[0]);
+    const double lateral = -0.5 * r.plastic_strain - 0.3 * r.stress[0] / 200e3;
+    const double width = s.nodes.position(1, 3) - s.nodes.position(1, 0);
+    const double thickness = s.shells.thickness[0] / s.shells.initial_thickness[0];
+    MESSAGE("width strain ", std::log(width), ", thickness strain ", std::log(thickness),
+            ", expected ", lateral);
+    CHECK(std::log(width) == doctest::Approx(lateral).epsilon(0.01));
+    CHECK(std::log(thickness) == doctest::Approx(lateral).epsilon(0.01));
+  }
 }
 
 TEST_CASE("shells: results are bitwise identical for 1 and 2 threads") {
   // 40 x 20 = 800 shells: above the pass's serial limit of 512, so 2 threads split them.
-  const std::string deck = cantilever(40, 20, 2e-4);
-  std::array<Eigen::Matrix3Xd, 2> positions, spins;
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
-    test::TempDir dir;
-    test::Simulation sim = test::prepare(dir, deck);
-    test::run(sim);
-    positions[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.position;
-    spins[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.angular_velocity;
+  for (const int elform : {2, 16}) {
+    CAPTURE(elform);
+    const std::string deck = cantilever(40, 20, 2e-4, "", elform);
+    std::array<Eigen::Matrix3Xd, 2> positions, spins;
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      test::TempDir dir;
+      test::Simulation sim = test::prepare(dir, deck);
+      test::run(sim);
+      positions[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.position;
+      spins[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.angular_velocity;
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    CHECK(positions[0] == positions[1]);
+    CHECK(spins[0] == spins[1]);
   }
-  omp_set_num_threads(omp_get_num_procs());
-  CHECK(positions[0] == positions[1]);
-  CHECK(spins[0] == spins[1]);
 }
 
 namespace {
