@@ -176,6 +176,48 @@ void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactS
   need(ix.boxes, side.box, c.loc, "box", user, diags, true);
 }
 
+bool is_nodal_rigid_body(const ModelDatabase& m, Id id) {
+  for (const NodalRigidBody& b : m.nodal_rigid_bodies)
+    if (b.id == id) return true;
+  return false;
+}
+
+// A part that must be rigid (MAT_020) for `user`; reports it when it is missing or deformable.
+void need_rigid_part(const ModelDatabase& m, Id id, const core::SourceLoc& loc,
+                     const std::string& user, core::Diagnostics& diags) {
+  if (!need(m.index.parts, id, loc, "part", user, diags)) return;
+  const Material* mat = m.material(m.part(id)->material);
+  if (mat != nullptr && mat->kind != MaterialKind::rigid) {
+    diags.error(loc, "{}: part {} is not rigid (its material {} is not *MAT_RIGID)", user, id,
+                mat->id);
+  }
+}
+
+// *CONSTRAINED_EXTRA_NODES, *CONSTRAINED_RIGID_BODIES, *CONSTRAINED_NODAL_RIGID_BODY.
+void check_joins(const ModelDatabase& m, core::Diagnostics& diags) {
+  const auto& ix = m.index;
+  for (const ExtraNodes& e : m.extra_nodes) {
+    const std::string user =
+        e.is_set ? "*CONSTRAINED_EXTRA_NODES_SET" : "*CONSTRAINED_EXTRA_NODES_NODE";
+    need_rigid_part(m, e.part, e.loc, user, diags);
+    need(e.is_set ? ix.node_sets : ix.nodes, e.target, e.loc, e.is_set ? "node set" : "node", user,
+         diags);
+  }
+  for (const RigidMerge& r : m.rigid_merges) {
+    need_rigid_part(m, r.lead, r.loc, "*CONSTRAINED_RIGID_BODIES", diags);
+    need_rigid_part(m, r.constrained, r.loc, "*CONSTRAINED_RIGID_BODIES", diags);
+  }
+  for (const NodalRigidBody& b : m.nodal_rigid_bodies) {
+    need(ix.node_sets, b.node_set, b.set_loc, "node set", "*CONSTRAINED_NODAL_RIGID_BODY", diags);
+    if (ix.parts.find(b.id) != IdIndex::kNone) {
+      diags.error(b.loc,
+                  "*CONSTRAINED_NODAL_RIGID_BODY: PID {} is also a *PART; the body's ID must "
+                  "not name a part",
+                  b.id);
+    }
+  }
+}
+
 void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
   const auto& ix = m.index;
   for (const Contact& c : m.contacts) {
@@ -197,6 +239,7 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
         need(ix.node_sets, p.target, p.loc, "node set", user, diags);
         break;
       case MotionTarget::rigid_part:
+        if (is_nodal_rigid_body(m, p.target)) break;
         if (need(ix.parts, p.target, p.loc, "part", user, diags)) {
           const Material* mat = m.material(m.part(p.target)->material);
           if (mat != nullptr && mat->kind != MaterialKind::rigid) {
@@ -271,6 +314,7 @@ void check_references(const ModelDatabase& m, core::Diagnostics& diags) {
   if (!m.shells.empty()) check_elements(m.shells, m, "shell element", diags);
   check_sets(m, diags);
   check_conditions(m, diags);
+  check_joins(m, diags);
   check_outputs(m, diags);
 }
 

@@ -40,6 +40,28 @@ struct Contact {
   core::SourceLoc loc;
 };
 
+/// *CONSTRAINED_EXTRA_NODES_NODE / _SET: a node (or a node set's nodes) moving with a rigid part.
+struct ExtraNodes {
+  Id part = 0;
+  Id target = 0;  ///< node or node set
+  bool is_set = false;
+  core::SourceLoc loc;
+};
+
+/// *CONSTRAINED_RIGID_BODIES: rigid part `constrained` merged into rigid part `lead`.
+struct RigidMerge {
+  Id lead = 0, constrained = 0;
+  core::SourceLoc loc;
+};
+
+/// *CONSTRAINED_NODAL_RIGID_BODY: a rigid body made of a node set's nodes.
+struct NodalRigidBody {
+  Id id = 0;  ///< PID: the body's ID where a rigid part ID is asked for
+  Id node_set = 0;
+  std::string title;
+  core::SourceLoc loc, set_loc;
+};
+
 /// *LOAD_BODY_X / _Y / _Z: a base acceleration SF x curve(t) along an axis; the body force on a
 /// node is -m a (gravity down -z is LOAD_BODY_Z with +9.81).
 struct BodyLoad {

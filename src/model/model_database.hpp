@@ -37,6 +37,9 @@ struct ModelDatabase {
   std::vector<InitialVelocity> initial_velocities;
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWall> rigid_walls;
+  std::vector<ExtraNodes> extra_nodes;
+  std::vector<RigidMerge> rigid_merges;
+  std::vector<NodalRigidBody> nodal_rigid_bodies;
 
   Controls controls;
   OutputRequests outputs;

@@ -82,10 +82,19 @@ void fit_rigid_velocity(const State& s, RigidBody& body) {
   vm /= static_cast<double>(body.nodes.size());
   Mat3 a = Mat3::Zero();
   Vec3 h = Vec3::Zero();
+  const Nodes& nd = s.nodes;
   for (const Index n : body.nodes) {
-    const Vec3 r = s.nodes.initial.col(n) - xm;
+    const Vec3 r = nd.initial.col(n) - xm;
     a += r.squaredNorm() * Mat3::Identity() - r * r.transpose();
-    h += r.cross(Vec3(s.nodes.velocity.col(n)) - vm);
+    h += r.cross(Vec3(nd.velocity.col(n)) - vm);
+    // A shell node's own spin counts with its radius of gyration squared, I / m: it is all
+    // there is to fit for a body of coincident nodes (a weld joining two shells).
+    const auto i = static_cast<std::size_t>(n);
+    if (!nd.rotary_inertia.empty() && nd.rotary_inertia[i] > 0.0 && nd.mass[i] > 0.0) {
+      const double gyration = nd.rotary_inertia[i] / nd.mass[i];
+      a += gyration * Mat3::Identity();
+      h += gyration * Vec3(nd.angular_velocity.col(n));
+    }
   }
   const Vec3 omega = a.completeOrthogonalDecomposition().solve(h);
   body.omega = omega;
@@ -173,11 +182,11 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
     }
     const double death = pm.death == 0.0 ? 1.0e28 : pm.death;
     if (pm.target_kind == model::MotionTarget::rigid_part) {
-      const auto p = m.index.parts.find(pm.target);
-      const Index b =
-          p == model::IdIndex::kNone ? -1 : s.parts[static_cast<std::size_t>(p)].rigid_body;
+      const Index b = rigid_body_of(m, s, pm.target);
       if (b < 0) {
-        d.error(pm.loc, "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not a *MAT_RIGID part",
+        d.error(pm.loc,
+                "*BOUNDARY_PRESCRIBED_MOTION_RIGID: part {} is not a *MAT_RIGID part or a nodal "
+                "rigid body",
                 pm.target);
         continue;
       }

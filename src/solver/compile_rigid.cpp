@@ -2,6 +2,8 @@
 // plus the lumped mass deformable elements put on their nodes; CMO/CON1/CON2 constraints.
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "solver/compile.hpp"
 #include "solver/fe/hex_geometry.hpp"
 
@@ -109,30 +111,81 @@ void constraints(const model::Material& mat, RigidBody& body, core::Diagnostics&
   }
 }
 
+// The lead of every part after *CONSTRAINED_RIGID_BODIES: the part whose body it joins (itself
+// when it is not merged), following chains; -1 where a merge loops back.
+std::vector<std::ptrdiff_t> rigid_leads(const model::ModelDatabase& m, core::Diagnostics& d) {
+  std::vector<std::ptrdiff_t> lead(m.parts.size());
+  for (std::size_t p = 0; p < lead.size(); ++p)
+    lead[p] = static_cast<std::ptrdiff_t>(p);
+  for (const model::RigidMerge& r : m.rigid_merges) {
+    const auto l = m.index.parts.find(r.lead), c = m.index.parts.find(r.constrained);
+    if (l == model::IdIndex::kNone || c == model::IdIndex::kNone) continue;  // reported by check
+    lead[static_cast<std::size_t>(c)] = static_cast<std::ptrdiff_t>(l);
+  }
+  for (std::size_t p = 0; p < lead.size(); ++p) {
+    std::ptrdiff_t q = static_cast<std::ptrdiff_t>(p);
+    std::size_t steps = 0;
+    while (lead[static_cast<std::size_t>(q)] != q && ++steps <= lead.size())
+      q = lead[static_cast<std::size_t>(q)];
+    if (steps > lead.size()) {
+      d.error(m.rigid_merges.front().loc,
+              "*CONSTRAINED_RIGID_BODIES: the merges of part {} loop back to it; a lead part "
+              "cannot be constrained to its own constrained parts",
+              m.parts[p].id);
+      q = -1;
+    }
+    lead[p] = q;
+  }
+  return lead;
+}
+
 }  // namespace
+
+Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id) {
+  const auto p = m.index.parts.find(id);
+  if (p != model::IdIndex::kNone) return s.parts[static_cast<std::size_t>(p)].rigid_body;
+  for (std::size_t b = 0; b < s.rigid_bodies.size(); ++b)
+    if (s.rigid_bodies[b].part_id == id) return static_cast<Index>(b);
+  return -1;
+}
 
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   std::vector<MassMoments> moments;
   std::vector<std::vector<Index>> nodes;
-  for (std::size_t p = 0; p < m.parts.size(); ++p) {
-    const model::Material* mat = m.material(m.parts[p].material);
-    if (mat == nullptr || mat->kind != model::MaterialKind::rigid) continue;
-    s.parts[p].rigid_body = static_cast<Index>(s.rigid_bodies.size());
+  auto new_body = [&](model::Id id) {
     RigidBody body;
-    body.part_id = m.parts[p].id;
-    constraints(*mat, body, d);
+    body.part_id = id;
     s.rigid_bodies.push_back(body);
     moments.emplace_back();
     nodes.emplace_back();
+    return static_cast<Index>(s.rigid_bodies.size() - 1);
+  };
+  // One body per rigid part that leads (merged parts join their lead's body, and the lead's
+  // CMO constraints hold it), then one per nodal rigid body.
+  const std::vector<std::ptrdiff_t> lead = rigid_leads(m, d);
+  auto rigid = [&](std::size_t p) {
+    const model::Material* mat = m.material(m.parts[p].material);
+    return mat != nullptr && mat->kind == model::MaterialKind::rigid;
+  };
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    if (!rigid(p) || lead[p] != static_cast<std::ptrdiff_t>(p)) continue;
+    s.parts[p].rigid_body = new_body(m.parts[p].id);
+    constraints(*m.material(m.parts[p].material), s.rigid_bodies.back(), d);
   }
+  for (std::size_t p = 0; p < m.parts.size(); ++p)
+    if (rigid(p) && lead[p] >= 0 && rigid(static_cast<std::size_t>(lead[p])))
+      s.parts[p].rigid_body = s.parts[static_cast<std::size_t>(lead[p])].rigid_body;
+  const std::size_t part_bodies = s.rigid_bodies.size();
+  for (const model::NodalRigidBody& nrb : m.nodal_rigid_bodies)
+    new_body(nrb.id);
   if (s.rigid_bodies.empty()) return;
   auto node_of = [&](model::Id id) { return static_cast<Index>(m.index.nodes.find(id)); };
   auto claim = [&](Index body, Index node, const core::SourceLoc& loc) {
     Index& owner = s.nodes.rigid_body[static_cast<std::size_t>(node)];
     if (owner >= 0 && owner != body) {
       d.error(loc,
-              "node {} belongs to rigid parts {} and {}; merged rigid bodies are not "
-              "supported",
+              "node {} belongs to rigid bodies {} and {}; merge them with "
+              "*CONSTRAINED_RIGID_BODIES",
               s.nodes.ids[static_cast<std::size_t>(node)],
               s.rigid_bodies[static_cast<std::size_t>(owner)].part_id,
               s.rigid_bodies[static_cast<std::size_t>(body)].part_id);
@@ -170,23 +223,64 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
     add_shell(s, conn, m.material(m.parts[p].material)->density * t,
               moments[static_cast<std::size_t>(b)]);
   }
+  // Extra nodes join their part's body; a nodal rigid body is its set's nodes.
+  for (const model::ExtraNodes& e : m.extra_nodes) {
+    const Index b = rigid_body_of(m, s, e.part);
+    if (b < 0) continue;  // not rigid: reported by check
+    if (e.is_set) {
+      for (const Index n : node_set_nodes(m, e.target))
+        claim(b, n, e.loc);
+    } else if (m.index.nodes.find(e.target) != model::IdIndex::kNone) {
+      claim(b, node_of(e.target), e.loc);
+    }
+  }
+  for (std::size_t k = 0; k < m.nodal_rigid_bodies.size(); ++k)
+    for (const Index n : node_set_nodes(m, m.nodal_rigid_bodies[k].node_set))
+      claim(static_cast<Index>(part_bodies + k), n, m.nodal_rigid_bodies[k].loc);
   for (std::size_t b = 0; b < s.rigid_bodies.size(); ++b) {
     RigidBody& body = s.rigid_bodies[b];
     MassMoments& mm = moments[b];
     body.nodes = nodes[b];
     std::sort(body.nodes.begin(), body.nodes.end());
-    // Lumped mass that deformable elements attached to the body put on its nodes.
-    for (const Index n : body.nodes)
+    // Lumped mass that deformable elements attached to the body put on its nodes, and their
+    // rotary inertia (shell nodes).
+    double rotary = 0.0;
+    for (const Index n : body.nodes) {
       mm.add(s.nodes.mass[static_cast<std::size_t>(n)], s.nodes.initial.col(n));
+      if (!s.nodes.rotary_inertia.empty())
+        rotary += s.nodes.rotary_inertia[static_cast<std::size_t>(n)];
+    }
+    const bool nodal = b >= part_bodies;
     if (!(mm.mass > 0.0)) {
-      d.error(core::SourceLoc{}, "rigid part {} has no mass (density or thickness zero)",
-              body.part_id);
+      d.error(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
+              "{} {} has no mass ({})", nodal ? "nodal rigid body" : "rigid part", body.part_id,
+              nodal ? "its nodes belong to no element" : "density or thickness zero");
       continue;
     }
     body.mass = mm.mass;
     body.center = body.initial_center = mm.first / mm.mass;
     const Mat3 about_centre = mm.second - mm.mass * body.center * body.center.transpose();
-    body.inertia0 = about_centre.trace() * Mat3::Identity() - about_centre;
+    body.inertia0 =
+        about_centre.trace() * Mat3::Identity() - about_centre + rotary * Mat3::Identity();
+    // A body of collinear point masses (a two-node weld of solid nodes) has no inertia about
+    // its line, and the forces on its nodes no moment about it: that axis takes the other
+    // principal moment, so the rotation about it stays defined (and at rest).
+    Eigen::SelfAdjointEigenSolver<Mat3> principal(body.inertia0);
+    Vec3 principal_moments = principal.eigenvalues();  // ascending
+    if (!(principal_moments[2] > 0.0)) {
+      d.error(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
+              "rigid body {} is a single point: it has no rotary inertia", body.part_id);
+      continue;
+    }
+    if (principal_moments[0] <= 1e-9 * principal_moments[2]) {
+      principal_moments[0] = principal_moments[1];
+      body.inertia0 = principal.eigenvectors() * principal_moments.asDiagonal() *
+                      principal.eigenvectors().transpose();
+      d.note(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
+             "rigid body {}: its nodes lie on a line; the inertia about that line is taken as "
+             "{:.4g}, the other principal moment",
+             body.part_id, principal_moments[0]);
+    }
     body.offsets.resize(3, static_cast<Index>(body.nodes.size()));
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       body.offsets.col(static_cast<Index>(k)) = s.nodes.initial.col(body.nodes[k]) - body.center;

@@ -4,82 +4,14 @@
 
 #include <cmath>
 
+#include "shell_decks.hpp"
 #include "solver/results.hpp"
 #include "solver_support.hpp"
 
 using namespace mcdyna;
-
-namespace {
-
-// The first cantilever mode: phi(s) at s = x / L (2 at the tip) and its slope d phi / ds.
-constexpr double kBetaL = 1.8751040687119611;
-double mode(double s, bool slope) {
-  const double b = kBetaL * s;
-  const double sigma =
-      (std::cosh(kBetaL) + std::cos(kBetaL)) / (std::sinh(kBetaL) + std::sin(kBetaL));
-  if (slope) return kBetaL * (std::sinh(b) + std::sin(b) - sigma * (std::cosh(b) - std::cos(b)));
-  return std::cosh(b) - std::cos(b) - sigma * (std::sinh(b) - std::sin(b));
-}
-
-// The cantilever strip of tools/decks/shell_cantilever.py: steel 100 x 10 x 1 mm (SI units),
-// clamped at x = 0, released with its first mode's velocity field (tip velocity 0.1 m/s).
-std::string cantilever(int nx, int ny, double end, const std::string& extra = "", int elform = 2,
-                       double poisson = 0.3) {
-  const double length = 0.1, width = 0.01, v0 = 0.1, tip = mode(1.0, false);
-  auto id = [&](int i, int j) { return 1 + i + (nx + 1) * j; };
-  std::string s = fmt::format(
-      "*KEYWORD\n*CONTROL_TERMINATION\n{}\n*PART\nstrip\n1,1,1\n"
-      "*SECTION_SHELL\n1,{},0.8333333,2\n0.001,0.001,0.001,0.001\n*MAT_ELASTIC\n1,7850,210e9,{}\n",
-      end, elform, poisson);
-  s += extra + "*NODE\n";
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i)
-      s += fmt::format("{},{:.10g},{:.10g},0\n", id(i, j), length * i / nx,
-                       width * (static_cast<double>(j) / ny - 0.5));
-  s += "*ELEMENT_SHELL\n";
-  int e = 0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      s += fmt::format("{},1,{},{},{},{}\n", ++e, id(i, j), id(i + 1, j), id(i + 1, j + 1),
-                       id(i, j + 1));
-  s += "*SET_NODE_LIST\n1\n";
-  for (int j = 0; j <= ny; ++j)
-    s += fmt::format("{}\n", id(0, j));
-  s += "*BOUNDARY_SPC_SET\n1,0,1,1,1,1,1,1\n*INITIAL_VELOCITY_NODE\n";
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 1; i <= nx; ++i) {
-      const double x = static_cast<double>(i) / nx;
-      s += fmt::format("{},0,0,{:.10g},0,{:.10g},0\n", id(i, j), v0 * mode(x, false) / tip,
-                       -v0 * mode(x, true) / tip / length);
-    }
-  return s + "*END\n";
-}
-
-}  // namespace
-
-// The first-mode period of the cantilever deck (tip crossings of z = 0) and the energy drift.
-std::pair<double, double> cantilever_period(const std::string& deck) {
-  test::TempDir dir;
-  test::Simulation sim = test::prepare(dir, deck);
-  const solver::Index tip = sim.state->nodes.count() / 3 * 2 - 1;  // (nx, ny / 2)
-  REQUIRE(sim.state->nodes.initial(0, tip) == doctest::Approx(0.1));
-  std::vector<double> crossings;
-  double last_z = 0.0, last_t = 0.0;
-  test::EnergyDrift drift;
-  solver::RunHooks hooks = drift.hooks();
-  hooks.progress = [&](const solver::State& s) {
-    const double z = s.nodes.position(2, tip);
-    if (last_t > 0.0 && z * last_z < 0.0)
-      crossings.push_back(last_t - last_z * (s.time - last_t) / (z - last_z));
-    last_z = z;
-    last_t = s.time;
-  };
-  test::run(sim, hooks);
-  REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  REQUIRE(crossings.size() >= 3);
-  return {2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1),
-          drift.worst};
-}
+using test::cantilever;
+using test::cantilever_period;
+using test::kBetaL;
 
 // Euler-Bernoulli: f1 = (beta1 L)^2 / (2 pi L^2) sqrt(E t^2 / (12 rho)) = 83.55 Hz.
 const double kBeamPeriod =
@@ -87,7 +19,7 @@ const double kBeamPeriod =
 
 TEST_CASE("shell cantilever: first-mode period against beam theory, energy kept") {
   // Steel strip 100 x 10 x 1 mm, 20 x 2 Belytschko-Tsay shells, released in its first mode.
-  const auto [measured, drift] = cantilever_period(cantilever(20, 2, 0.025));
+  const auto [measured, drift] = cantilever_period(cantilever(20, 2, 0.025), 20);
   MESSAGE("period ", measured * 1e3, " ms, beam theory ", kBeamPeriod * 1e3, " ms, error ",
           100.0 * (measured / kBeamPeriod - 1.0), " %; energy drift ", drift);
   // The mesh study (manual/verification.md) converges at second order: 1.37 %, 0.34 %, 0.08 %,
@@ -103,8 +35,8 @@ TEST_CASE("shell cantilever: the fully integrated shell (ELFORM 16) against beam
   // anticlastic curvature and the plate is stiffer than the beam: the fully integrated shell
   // finds it with 2 elements across (-0.57 %), Belytschko-Tsay with 8 (-0.55 %, against
   // -0.60 % for ELFORM 16 at 40 x 8); the bound is the plate modulus E / (1 - nu^2), -4.7 %.
-  const auto [beam, drift] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.0));
-  const auto [plate, unused] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.3));
+  const auto [beam, drift] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.0), 20);
+  const auto [plate, unused] = cantilever_period(cantilever(20, 2, 0.025, "", 16, 0.3), 20);
   MESSAGE("ELFORM 16 period, nu = 0: ", 100.0 * (beam / kBeamPeriod - 1.0),
           " %; nu = 0.3: ", 100.0 * (plate / kBeamPeriod - 1.0), " %; energy drift ", drift);
   CHECK(std::abs(beam / kBeamPeriod - 1.0) < 0.003);

@@ -63,6 +63,10 @@ void initial_velocity(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_node(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_generation(KeywordRecord& r, model::ModelDatabase& m);
 void rigidwall_planar(KeywordRecord& r, model::ModelDatabase& m);
+// constrained.cpp
+void constrained_extra_nodes(KeywordRecord& r, model::ModelDatabase& m);
+void constrained_rigid_bodies(KeywordRecord& r, model::ModelDatabase& m);
+void constrained_nodal_rigid_body(KeywordRecord& r, model::ModelDatabase& m);
 // define_sets.cpp
 void define_curve(KeywordRecord& r, model::ModelDatabase& m);
 void define_vector(KeywordRecord& r, model::ModelDatabase& m);

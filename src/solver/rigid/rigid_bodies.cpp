@@ -82,10 +82,12 @@ std::pair<Vec3, Vec3> node_resultants(const State& state, const RigidBody& b) {
   const Nodes& nd = state.nodes;
   const parallel::Ownership& own = state.ownership;
   std::vector<core::ExactSum> sums(6);
+  const bool rotations = nd.moment.cols() > 0;  // shell nodes carry moments too
   for (const Index n : b.nodes) {
     const Vec3 f = nd.force.col(n);
-    if (!own.owns_node(n) || f.isZero(0.0)) continue;
-    const Vec3 m = (Vec3(nd.position.col(n)) - b.center).cross(f);
+    const Vec3 couple = rotations ? Vec3(nd.moment.col(n)) : Vec3::Zero();
+    if (!own.owns_node(n) || (f.isZero(0.0) && couple.isZero(0.0))) continue;
+    const Vec3 m = (Vec3(nd.position.col(n)) - b.center).cross(f) + couple;
     for (int k = 0; k < 3; ++k) {
       sums[static_cast<std::size_t>(k)].add(f[k]);
       sums[static_cast<std::size_t>(3 + k)].add(m[k]);
@@ -135,11 +137,16 @@ void advance_rigid_bodies(State& state, const StepTimes& t) {
     b.velocity = v_new;
     b.omega = w_new;
     // Node velocities and accelerations at the half step, positions come in place_rigid_nodes.
+    const bool rotations = nd.angular_velocity.cols() > 0;
     for (const Index n : b.nodes) {
       const Vec3 r = Vec3(nd.position.col(n)) - b.center;
       const Vec3 vn = v_new + w_new.cross(r);
       nd.acceleration.col(n) = (vn - Vec3(nd.velocity.col(n))) / t.mean;
       nd.velocity.col(n) = vn;
+      if (rotations) {  // a shell node on the body turns with it
+        nd.previous_angular_velocity.col(n) = nd.angular_velocity.col(n);
+        nd.angular_velocity.col(n) = w_new;
+      }
     }
   }
 }
