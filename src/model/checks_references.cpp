@@ -207,6 +207,9 @@ void check_joins(const ModelDatabase& m, core::Diagnostics& diags) {
     need_rigid_part(m, r.lead, r.loc, "*CONSTRAINED_RIGID_BODIES", diags);
     need_rigid_part(m, r.constrained, r.loc, "*CONSTRAINED_RIGID_BODIES", diags);
   }
+  for (const Joint& j : m.joints)
+    for (const Id n : j.nodes)
+      need(ix.nodes, n, j.loc, "node", "*CONSTRAINED_JOINT", diags, true);
   for (const NodalRigidBody& b : m.nodal_rigid_bodies) {
     need(ix.node_sets, b.node_set, b.set_loc, "node set", "*CONSTRAINED_NODAL_RIGID_BODY", diags);
     if (ix.parts.find(b.id) != IdIndex::kNone) {

@@ -62,6 +62,20 @@ struct NodalRigidBody {
   core::SourceLoc loc, set_loc;
 };
 
+enum class JointKind { spherical, revolute, cylindrical, translational };
+
+/// *CONSTRAINED_JOINT_SPHERICAL / REVOLUTE / CYLINDRICAL / TRANSLATIONAL: node pairs (N1, N2),
+/// (N3, N4), (N5, N6), the first of each in body A.
+struct Joint {
+  Id id = 0;  ///< JID of the _ID card, 0 = numbered in deck order
+  std::string heading;
+  JointKind kind = JointKind::spherical;
+  std::array<Id, 6> nodes{};
+  double relative_stiffness = 1.0;  ///< RPS
+  double damping = 1.0;             ///< DAMP
+  core::SourceLoc loc;
+};
+
 /// *LOAD_BODY_X / _Y / _Z: a base acceleration SF x curve(t) along an axis; the body force on a
 /// node is -m a (gravity down -z is LOAD_BODY_Z with +9.81).
 struct BodyLoad {

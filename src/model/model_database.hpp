@@ -40,6 +40,7 @@ struct ModelDatabase {
   std::vector<ExtraNodes> extra_nodes;
   std::vector<RigidMerge> rigid_merges;
   std::vector<NodalRigidBody> nodal_rigid_bodies;
+  std::vector<Joint> joints;
 
   Controls controls;
   OutputRequests outputs;

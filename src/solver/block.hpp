@@ -89,6 +89,7 @@ void add_hexahedra_blocks(State& s, Blocks& blocks);         // fe/hexahedra_blo
 void add_shell_blocks(State& s, Blocks& blocks);             // fe/shell_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
+void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp
 void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp
 void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_blocks.cpp
 void add_rigid_wall_blocks(State& s, Blocks& blocks);        // loads/condition_blocks.cpp

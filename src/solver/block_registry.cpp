@@ -11,6 +11,7 @@ Blocks make_blocks(State& s) {
       add_hexahedra_blocks,
       add_shell_blocks,
       add_spg_blocks,
+      add_joint_blocks,
       add_rigid_body_blocks,
       add_nodal_constraint_blocks,
       add_nodal_motion_blocks,

@@ -245,6 +245,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_rigid_bodies(m, *s, diags);
   // The conditions below read the elements' and rigid bodies' arrays whole: stop at a broken one.
   if (diags.error_count() > errors) return nullptr;
+  detail::compile_joints(m, *s, diags);
   detail::compile_constraints(m, *s, diags);
   detail::compile_motions(m, *s, diags);
   detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles

@@ -44,6 +44,8 @@ void build_node_corners(Index nodes, const std::vector<std::array<Index, N>>& co
 void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+/// *CONSTRAINED_JOINT_*: after the rigid bodies (a joint node's mass may be a body's).
+void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// The rigid body of part `id` (merged parts share their lead's) or of the nodal rigid body
 /// `id`; -1 for neither.
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);

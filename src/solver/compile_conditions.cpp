@@ -69,21 +69,27 @@ Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::S
   return Vec3::UnitX();
 }
 
-// Velocity of the rigid motion that best fits the given nodal velocities (exact for a rigid
-// field): centroid velocity plus the spin from sum r x v = (sum r^2 I - r r^T) omega.
-void fit_rigid_velocity(const State& s, RigidBody& body) {
-  if (body.nodes.empty()) return;
+// Velocity of the rigid motion that best fits the velocities of the body's nodes a record gave
+// one (exact for a rigid field): centroid velocity plus the spin from sum r x v = (sum r^2 I - r
+// r^T) omega.
+void fit_rigid_velocity(const State& s, RigidBody& body, const std::vector<std::uint8_t>& given) {
+  // The nodes given a velocity; all of them when none is (the body then stays at rest).
+  std::vector<Index> fitted;
+  for (const Index n : body.nodes)
+    if (given[static_cast<std::size_t>(n)]) fitted.push_back(n);
+  if (fitted.empty()) fitted = body.nodes;
+  if (fitted.empty()) return;
   Vec3 xm = Vec3::Zero(), vm = Vec3::Zero();
-  for (const Index n : body.nodes) {
+  for (const Index n : fitted) {
     xm += s.nodes.initial.col(n);
     vm += s.nodes.velocity.col(n);
   }
-  xm /= static_cast<double>(body.nodes.size());
-  vm /= static_cast<double>(body.nodes.size());
+  xm /= static_cast<double>(fitted.size());
+  vm /= static_cast<double>(fitted.size());
   Mat3 a = Mat3::Zero();
   Vec3 h = Vec3::Zero();
   const Nodes& nd = s.nodes;
-  for (const Index n : body.nodes) {
+  for (const Index n : fitted) {
     const Vec3 r = nd.initial.col(n) - xm;
     a += r.squaredNorm() * Mat3::Identity() - r * r.transpose();
     h += r.cross(Vec3(nd.velocity.col(n)) - vm);
@@ -241,6 +247,9 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   auto& v = s.nodes.velocity;
   const Nodes& nd = s.nodes;
+  // The nodes a record gives a velocity: a rigid body's motion is fitted to those of its nodes
+  // (its extra nodes and weld nodes, given none, would pull it towards rest).
+  std::vector<std::uint8_t> given(static_cast<std::size_t>(nd.count()), 0);
   auto rotates = [&](Index n) {
     return !nd.rotary_inertia.empty() && nd.rotary_inertia[static_cast<std::size_t>(n)] > 0.0;
   };
@@ -255,6 +264,7 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
       case model::InitialVelocityKind::per_node: {
         const auto n = static_cast<Index>(m.index.nodes.find(iv.target));
         v.col(n) = vel;
+        given[static_cast<std::size_t>(n)] = 1;
         spin(n, omega);
         if (omega != Vec3::Zero() && !rotates(n))
           d.warning(iv.loc,
@@ -273,6 +283,7 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
           if (!inside(box, s.nodes.initial.col(n))) continue;
           const bool ex = std::binary_search(exempt.begin(), exempt.end(), n);
           v.col(n) = ex ? ve : vel;
+          given[static_cast<std::size_t>(n)] = 1;
           if (!ex) spin(n, omega);
         }
         if (omega != Vec3::Zero() &&
@@ -307,6 +318,7 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
         const Vec3 c(iv.axis_point[0], iv.axis_point[1], iv.axis_point[2]);
         for (const Index n : nodes) {
           v.col(n) = vel + iv.omega * axis.cross(Vec3(s.nodes.initial.col(n)) - c);
+          given[static_cast<std::size_t>(n)] = 1;
           spin(n, iv.omega * axis);  // a shell node turns with the body
         }
         break;
@@ -314,7 +326,7 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
     }
   }
   for (RigidBody& body : s.rigid_bodies) {
-    fit_rigid_velocity(s, body);
+    fit_rigid_velocity(s, body, given);
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       v.col(body.nodes[k]) =
           body.velocity + body.omega.cross(Vec3(body.offsets.col(static_cast<Index>(k))));

@@ -28,6 +28,8 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.stonewall += w.energy;
   for (const contact::Interface& c : s.contacts)
     e.sliding += c.energy;
+  for (const JointState& j : s.joints)
+    e.internal += j.energy;
   for (const NodalMotion& m : s.nodal_motions)
     e.external_work += m.work();
   for (const RigidBody& b : s.rigid_bodies) {

@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 20> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 21> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -30,12 +30,13 @@ constexpr std::array<std::size_t, 20> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(contact::Interface),
                                                       sizeof(contact::Pass),
                                                       sizeof(contact::Surface),
-                                                      sizeof(ResumePoint)};
+                                                      sizeof(ResumePoint),
+                                                      sizeof(JointState)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 20>{368, 512, 72,  80,  488, 248,  80,
-                                                          528, 72,  112, 128, 240, 2168, 1992,
-                                                          96,  112, 352, 352, 144, 192},
+static_assert(kDumpedSizes == std::array<std::size_t, 21>{368, 512, 72,  80,  488, 248,  80,
+                                                          528, 72,  112, 128, 240, 2192, 1992,
+                                                          96,  112, 352, 352, 144, 192,  136},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -106,6 +107,12 @@ void fields(Ar& ar, RigidBody& b) {
      b.angular_momentum, b.omega, b.previous_velocity, b.previous_omega, b.nodes, b.offsets,
      b.fixed_translation, b.fixed_rotation, b.motions, b.body_force, b.force, b.moment,
      b.constraint_force, b.constraint_moment, b.constraint_work);
+}
+
+template <class Ar>
+void fields(Ar& ar, JointState& j) {
+  ar(j.id, j.heading, j.kind, j.nodes, j.pairs, j.relative_stiffness, j.reduced_mass, j.stiffness,
+     j.initial_step, j.energy, j.force);
 }
 
 template <class Ar>
@@ -252,7 +259,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 2:
       return ar(s.spg);
     case 3:
-      return ar(s.rigid_bodies);
+      return ar(s.rigid_bodies, s.joints);
     case 4:
       return ar(s.constraints, s.nodal_motions);
     case 5:

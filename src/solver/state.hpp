@@ -208,6 +208,24 @@ struct RigidBody {
   [[nodiscard]] Mat3 inertia() const { return rotation * inertia0 * rotation.transpose(); }
 };
 
+/// A joint (*CONSTRAINED_JOINT_*): a penalty spring on each node pair (body A's node first)
+/// along the directions the joint holds (all three, or those normal to the axis N1 -> N3).
+struct JointState {
+  model::Id id = 0;
+  std::string heading;
+  int kind = 0;  ///< model::JointKind
+  std::array<Index, 6> nodes{};
+  int pairs = 1;
+  double relative_stiffness = 1.0;  ///< RPS
+  /// The smallest reduced mass of a pair, each node's mass as the force on it sees it (for a
+  /// rigid body's node, the least over the directions of the mass its point answers with).
+  double reduced_mass = 0.0;
+  double stiffness = 0.0;     ///< RPS m* / (4 dt0^2) with the first cycle's step; 0 until then
+  double initial_step = 0.0;  ///< dt0
+  double energy = 0.0;        ///< stored in the springs, 1/2 k |d|^2
+  Vec3 force = Vec3::Zero();  ///< on body B, summed over the pairs, this cycle
+};
+
 /// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
 struct NodalConstraints {
   std::vector<Index> nodes;  ///< ascending
@@ -291,6 +309,7 @@ struct State {
   std::vector<PartInfo> parts;
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<JointState> joints;
   DisplayCells rigid_cells;
   std::vector<LoadCurve> curves;
   NodalConstraints constraints;

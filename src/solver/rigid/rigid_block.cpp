@@ -14,8 +14,7 @@ class RigidBodiesBlock final : public Block {
  public:
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
   Index advance_velocities(State& s, const StepTimes& t) override {
-    advance_rigid_bodies(s, t);
-    return -1;
+    return advance_rigid_bodies(s, t);
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
 };

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -99,8 +100,9 @@ std::pair<Vec3, Vec3> node_resultants(const State& state, const RigidBody& b) {
 
 }  // namespace
 
-void advance_rigid_bodies(State& state, const StepTimes& t) {
+Index advance_rigid_bodies(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
+  Index bad = -1;  // the first node of the first body whose motion is not finite
   for (RigidBody& b : state.rigid_bodies) {
     auto [force, moment] = node_resultants(state, b);
     force += b.body_force;  // at the centre of mass: no moment
@@ -136,6 +138,8 @@ void advance_rigid_bodies(State& state, const StepTimes& t) {
     b.previous_omega = b.omega;
     b.velocity = v_new;
     b.omega = w_new;
+    if (bad < 0 && !b.nodes.empty() && !std::isfinite(v_new.sum() + w_new.sum()))
+      bad = b.nodes.front();
     // Node velocities and accelerations at the half step, positions come in place_rigid_nodes.
     const bool rotations = nd.angular_velocity.cols() > 0;
     for (const Index n : b.nodes) {
@@ -149,6 +153,23 @@ void advance_rigid_bodies(State& state, const StepTimes& t) {
       }
     }
   }
+  return bad;
+}
+
+double point_mass(const State& state, Index b, const Vec3& point) {
+  const RigidBody& body = state.rigid_bodies[static_cast<std::size_t>(b)];
+  const Vec3 r = point - body.center;
+  Mat3 arm;
+  arm << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  Mat3 free_translation = Mat3::Zero(), free_rotation = Mat3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    free_translation(k, k) = body.fixed_translation[static_cast<std::size_t>(k)] ? 0.0 : 1.0;
+    free_rotation(k, k) = body.fixed_rotation[static_cast<std::size_t>(k)] ? 0.0 : 1.0;
+  }
+  const Mat3 w = free_translation / body.mass +
+                 arm.transpose() * free_rotation * body.inertia().inverse() * free_rotation * arm;
+  const double most = Eigen::SelfAdjointEigenSolver<Mat3>(w).eigenvalues()[2];
+  return most > 0.0 ? 1.0 / most : std::numeric_limits<double>::infinity();
 }
 
 void place_rigid_nodes(State& state, double step) {

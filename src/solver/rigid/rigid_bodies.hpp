@@ -14,8 +14,15 @@ struct StepTimes {
 };
 
 /// Sums nodal forces into each body, integrates its velocities under constraints and prescribed
-/// motion, then sets its nodes' velocities (half step) and accelerations.
-void advance_rigid_bodies(State& state, const StepTimes& t);
+/// motion, then sets its nodes' velocities (half step) and accelerations. Returns the first node
+/// of the first body whose velocities are not finite, or -1.
+Index advance_rigid_bodies(State& state, const StepTimes& t);
+
+/// The least mass rigid body `b` answers a force at `point` with, over the force's directions:
+/// 1 / lambda_max(W), dv = W f, W = P_t / M + [r]x^T P_r J^-1 P_r [r]x at the current geometry
+/// (r from the centre, J the current inertia, P the directions its CMO constraints leave free);
+/// infinite for a body held in every direction.
+double point_mass(const State& state, Index b, const Vec3& point);
 
 /// Moves rigid-body nodes to x = c + R X (after the body positions are advanced).
 void place_rigid_nodes(State& state, double step);

@@ -1,0 +1,92 @@
+// *CONSTRAINED_JOINT_* -> joints: node indices and the reduced mass that sizes their penalty
+// springs (rigid/joints.cpp applies them).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solver/compile.hpp"
+#include "solver/rigid/rigid_bodies.hpp"
+
+namespace mcdyna::solver::detail {
+
+namespace {
+
+// The mass a force on node n moves: the nodal mass, or for a rigid body's node the least mass
+// its point answers a force with (rigid/rigid_bodies.hpp).
+double effective_mass(const State& s, Index n) {
+  const Index b = s.nodes.rigid_body[static_cast<std::size_t>(n)];
+  if (b < 0) return s.nodes.mass[static_cast<std::size_t>(n)];
+  return point_mass(s, b, s.nodes.initial.col(n));
+}
+
+}  // namespace
+
+void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  for (std::size_t k = 0; k < m.joints.size(); ++k) {
+    const model::Joint& j = m.joints[k];
+    JointState js;
+    js.id = j.id > 0 ? j.id : static_cast<model::Id>(k + 1);
+    js.heading = j.heading;
+    js.kind = static_cast<int>(j.kind);
+    js.pairs = j.kind == model::JointKind::spherical       ? 1
+               : j.kind == model::JointKind::translational ? 3
+                                                           : 2;
+    js.relative_stiffness = j.relative_stiffness > 0.0 ? j.relative_stiffness : 1.0;
+    js.reduced_mass = std::numeric_limits<double>::infinity();
+    bool ok = true;
+    for (int p = 0; p < js.pairs; ++p) {
+      double pair_mass[2] = {};
+      for (int side = 0; side < 2; ++side) {
+        const auto i = static_cast<std::size_t>(2 * p + side);
+        const auto n = m.index.nodes.find(j.nodes[i]);
+        if (n == model::IdIndex::kNone) {
+          ok = false;  // reported by check
+          continue;
+        }
+        js.nodes[i] = static_cast<Index>(n);
+        pair_mass[side] = effective_mass(s, js.nodes[i]);
+      }
+      if (!ok) break;
+      if (!(pair_mass[0] > 0.0) || !(pair_mass[1] > 0.0)) {
+        d.error(j.loc,
+                "joint {}: node {} or {} has no mass (it belongs to no element and no rigid "
+                "body)",
+                js.id, j.nodes[static_cast<std::size_t>(2 * p)],
+                j.nodes[static_cast<std::size_t>(2 * p + 1)]);
+        ok = false;
+        break;
+      }
+      if (js.nodes[static_cast<std::size_t>(2 * p)] ==
+          js.nodes[static_cast<std::size_t>(2 * p + 1)]) {
+        d.error(j.loc, "joint {}: a pair joins node {} to itself", js.id,
+                j.nodes[static_cast<std::size_t>(2 * p)]);
+        ok = false;
+        break;
+      }
+      // A held body's side is infinitely heavy: the pair then moves the other side alone.
+      const double reduced = std::isinf(pair_mass[0]) ? pair_mass[1]
+                             : std::isinf(pair_mass[1])
+                                 ? pair_mass[0]
+                                 : pair_mass[0] * pair_mass[1] / (pair_mass[0] + pair_mass[1]);
+      js.reduced_mass = std::min(js.reduced_mass, reduced);
+    }
+    if (!ok) continue;
+    if (std::isinf(js.reduced_mass)) {
+      d.note(j.loc, "joint {}: both its bodies are held (CMO), so it has nothing to do", js.id);
+      continue;
+    }
+    if (j.kind == model::JointKind::cylindrical || j.kind == model::JointKind::translational) {
+      if ((s.nodes.initial.col(js.nodes[2]) - s.nodes.initial.col(js.nodes[0])).norm() == 0.0) {
+        d.error(j.loc, "joint {}: N1 and N3 coincide, so they give no axis", js.id);
+        continue;
+      }
+    }
+    if (j.damping != 1.0) {
+      d.note(j.loc, "joint {}: DAMP = {:g} has no effect (mcdyna's joint springs are undamped)",
+             js.id, j.damping);
+    }
+    s.joints.push_back(js);
+  }
+}
+
+}  // namespace mcdyna::solver::detail

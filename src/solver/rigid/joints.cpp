@@ -1,0 +1,134 @@
+// The joints as one block of the time loop (*CONSTRAINED_JOINT_*): a penalty spring on each node
+// pair pulls body B's node back onto body A's along the directions the joint holds: all three
+// (spherical: one pair; revolute: two pairs on the axis, which leaves the turning about it), or
+// those normal to the axis N1 -> N3 (cylindrical: two pairs, sliding and turning free;
+// translational: a third pair off the axis, which stops the turning).
+//
+// The spring is k = RPS m* / (4 dt0^2), m* the smallest reduced mass of the pairs (a rigid body's
+// node counts the least mass its point answers a force with, compile_joints.cpp) and dt0 the
+// first cycle's step: the pair's own period is
+// then 4 pi dt0, far inside the central-difference limit of pi dt0 for any step up to four times
+// the first. LS-DYNA's joint stiffness and damping are not published; these springs are
+// undamped, and the energy they store counts as internal energy.
+//
+// Every process computes every joint whole and moves its nodes itself (mark_replicated).
+#include <cmath>
+
+#include "model/conditions.hpp"
+#include "solver/block.hpp"
+#include "solver/rigid/rigid_bodies.hpp"
+
+namespace mcdyna::solver {
+
+namespace {
+
+Vec3 at(const State& s, Index n) {
+  return s.nodes.position.col(n);
+}
+
+// Spherical and revolute: each pair's B node is pulled onto its A node, all three directions.
+void hold_points(State& s, JointState& j) {
+  for (int p = 0; p < j.pairs; ++p) {
+    const Index a = j.nodes[static_cast<std::size_t>(2 * p)];
+    const Index b = j.nodes[static_cast<std::size_t>(2 * p + 1)];
+    const Vec3 d = at(s, b) - at(s, a);
+    const Vec3 f = j.stiffness * d;  // pulls a towards b and b towards a
+    s.nodes.force.col(a) += f;
+    s.nodes.force.col(b) -= f;
+    j.force -= f;
+    j.energy += 0.5 * j.stiffness * d.squaredNorm();
+  }
+}
+
+// The mass the force point moves: a rigid body's at the point, else the node's.
+double side_mass(const State& s, Index node, const Vec3& point) {
+  const Index b = s.nodes.rigid_body[static_cast<std::size_t>(node)];
+  return b >= 0 ? point_mass(s, b, point) : s.nodes.mass[static_cast<std::size_t>(node)];
+}
+
+// The spring of a pair held on a line: sized, like the others, to the reduced mass of its two
+// sides, but where A is pulled, at the B node's place along the line. On a rigid A that is the
+// body's mass at that point (the couple on N1 and N3 turns it as a force there would); on
+// deformable nodes the couple's lever t = s / l raises the stiffness they feel by up to
+// (1 + |t|)^2, and the spring softens by as much. Either way the joint stays inside the step
+// however far it slides.
+double line_stiffness(const State& s, const JointState& j, Index anchor, Index b, const Vec3& point,
+                      double lever) {
+  const Index body = s.nodes.rigid_body[static_cast<std::size_t>(anchor)];
+  const bool rigid_line = body >= 0 &&
+                          s.nodes.rigid_body[static_cast<std::size_t>(j.nodes[0])] == body &&
+                          s.nodes.rigid_body[static_cast<std::size_t>(j.nodes[2])] == body;
+  if (!rigid_line) {
+    const double soften = 1.0 + std::abs(lever);
+    return j.stiffness / (soften * soften);
+  }
+  const double ma = point_mass(s, body, point), mb = side_mass(s, b, at(s, b));
+  const double reduced = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+  if (std::isinf(reduced)) return 0.0;
+  return 0.25 * j.relative_stiffness * reduced / (j.initial_step * j.initial_step);
+}
+
+// Cylindrical and translational: each pair's B node is pulled onto the line through its anchor
+// (N1 for the axis pairs, N5 for the translational third) along A's axis N1 -> N3. The pull on A
+// acts where the B node is along the line, not at the anchor: the force at the anchor plus the
+// couple s/l f on N3 and -s/l f on N1 (s the B node's distance along the axis from the anchor,
+// l = |N3 - N1|), the statics of a rigid line. At the anchor alone it would be a follower
+// moment that grows with the slide and feeds the motion.
+void hold_on_lines(State& s, JointState& j) {
+  const Index n1 = j.nodes[0], n3 = j.nodes[2];
+  const Vec3 axis = at(s, n3) - at(s, n1);
+  const double length = axis.norm();
+  const Vec3 unit = axis / length;
+  for (int p = 0; p < j.pairs; ++p) {
+    const Index anchor = p < 2 ? n1 : j.nodes[4];
+    const Index b = j.nodes[static_cast<std::size_t>(2 * p + 1)];
+    const Vec3 r = at(s, b) - at(s, anchor);
+    const double along = r.dot(unit);
+    const Vec3 d = r - along * unit;
+    const double k = line_stiffness(s, j, anchor, b, at(s, anchor) + along * unit, along / length);
+    const Vec3 f = k * d;
+    s.nodes.force.col(anchor) += f;
+    s.nodes.force.col(n3) += (along / length) * f;
+    s.nodes.force.col(n1) -= (along / length) * f;
+    s.nodes.force.col(b) -= f;
+    j.force -= f;
+    j.energy += 0.5 * k * d.squaredNorm();
+  }
+}
+
+void joint_forces(State& s, JointState& j) {
+  if (j.stiffness == 0.0) {
+    if (!(s.step > 0.0)) return;  // the first cycle: the pairs still coincide
+    j.initial_step = s.step;
+    j.stiffness = 0.25 * j.relative_stiffness * j.reduced_mass / (s.step * s.step);
+  }
+  j.energy = 0.0;
+  j.force.setZero();
+  const auto kind = static_cast<model::JointKind>(j.kind);
+  if (kind == model::JointKind::cylindrical || kind == model::JointKind::translational)
+    hold_on_lines(s, j);
+  else
+    hold_points(s, j);
+}
+
+class JointsBlock final : public Block {
+ public:
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    for (const JointState& j : s.joints)
+      for (int k = 0; k < 2 * j.pairs; ++k)
+        nodes[static_cast<std::size_t>(j.nodes[static_cast<std::size_t>(k)])] = 1;
+  }
+  void forces(State& s, ForceReport& /*report*/) override {
+    for (JointState& j : s.joints)
+      joint_forces(s, j);
+  }
+};
+
+}  // namespace
+
+void add_joint_blocks(State& s, Blocks& blocks) {
+  if (!s.joints.empty()) blocks.push_back(std::make_unique<JointsBlock>());
+}
+
+}  // namespace mcdyna::solver
