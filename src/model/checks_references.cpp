@@ -276,6 +276,29 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
         break;
     }
   }
+  for (const PointLoad& p : m.point_loads) {
+    switch (p.target_kind) {
+      case LoadTarget::node:
+        need(ix.nodes, p.target, p.loc, "node", "*LOAD_NODE_POINT", diags);
+        break;
+      case LoadTarget::node_set:
+        need(ix.node_sets, p.target, p.loc, "node set", "*LOAD_NODE_SET", diags);
+        break;
+      case LoadTarget::rigid_part:
+        if (!is_nodal_rigid_body(m, p.target))
+          need_rigid_part(m, p.target, p.loc, "*LOAD_RIGID_BODY", diags);
+        break;
+    }
+    need(ix.curves, p.curve, p.curve_loc, "curve", "*LOAD_NODE / *LOAD_RIGID_BODY", diags);
+  }
+  for (const SegmentLoad& l : m.segment_loads) {
+    if (l.is_set)
+      need(ix.segment_sets, l.set, l.loc, "segment set", "*LOAD_SEGMENT_SET", diags);
+    else
+      for (const Id n : l.nodes)
+        need(ix.nodes, n, l.loc, "node", "*LOAD_SEGMENT", diags);
+    need(ix.curves, l.curve, l.curve_loc, "curve", "*LOAD_SEGMENT", diags);
+  }
   for (const BodyLoad& b : m.body_loads)
     need(ix.curves, b.curve, b.curve_loc, "curve", "*LOAD_BODY", diags);
   for (const RigidWall& w : m.rigid_walls) {

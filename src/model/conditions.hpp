@@ -76,6 +76,29 @@ struct Joint {
   core::SourceLoc loc;
 };
 
+enum class LoadTarget { node, node_set, rigid_part };
+
+/// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: SF x curve(t), a force along DOF 1-3 or a moment
+/// about DOF 5-7 (global axes).
+struct PointLoad {
+  LoadTarget target_kind = LoadTarget::node;
+  Id target = 0;
+  int dof = 1;
+  Id curve = 0;
+  double scale = 1.0;
+  core::SourceLoc loc, curve_loc;
+};
+
+/// *LOAD_SEGMENT / _SET: pressure SF x curve(t - AT) on segments, positive against their normal.
+struct SegmentLoad {
+  bool is_set = false;
+  Id set = 0;
+  std::array<Id, 4> nodes{};
+  Id curve = 0;
+  double scale = 1.0, arrival = 0.0;
+  core::SourceLoc loc, curve_loc;
+};
+
 /// *LOAD_BODY_X / _Y / _Z: a base acceleration SF x curve(t) along an axis; the body force on a
 /// node is -m a (gravity down -z is LOAD_BODY_Z with +9.81).
 struct BodyLoad {

@@ -36,6 +36,8 @@ struct ModelDatabase {
   std::vector<PrescribedMotion> prescribed_motions;
   std::vector<InitialVelocity> initial_velocities;
   std::vector<BodyLoad> body_loads;
+  std::vector<PointLoad> point_loads;
+  std::vector<SegmentLoad> segment_loads;
   std::vector<RigidWall> rigid_walls;
   std::vector<ExtraNodes> extra_nodes;
   std::vector<RigidMerge> rigid_merges;
@@ -63,6 +65,9 @@ struct ModelDatabase {
   }
   [[nodiscard]] const NodeSet* node_set(Id id) const {
     return lookup(node_sets, index.node_sets, id);
+  }
+  [[nodiscard]] const SegmentSet* segment_set(Id id) const {
+    return lookup(segment_sets, index.segment_sets, id);
   }
   [[nodiscard]] const PartSet* part_set(Id id) const {
     return lookup(part_sets, index.part_sets, id);

@@ -17,6 +17,7 @@ Blocks make_blocks(State& s) {
       add_nodal_motion_blocks,
       add_rigid_wall_blocks,
       add_body_load_blocks,
+      add_applied_load_blocks,
       add_contact_blocks,
   };
   Blocks blocks;

@@ -248,6 +248,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_joints(m, *s, diags);
   detail::compile_constraints(m, *s, diags);
   detail::compile_motions(m, *s, diags);
+  detail::compile_loads(m, *s, diags);
   detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles
   detail::compile_initial_velocities(m, *s, diags);
   detail::compile_rigid_walls(m, *s, diags);  // after SPG: walls track nodes that have mass

@@ -51,6 +51,8 @@ void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& 
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+/// *LOAD_NODE, *LOAD_RIGID_BODY, *LOAD_SEGMENT (after the rigid bodies and shells).
+void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);

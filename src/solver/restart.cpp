@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 21> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 23> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -31,12 +31,14 @@ constexpr std::array<std::size_t, 21> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(contact::Pass),
                                                       sizeof(contact::Surface),
                                                       sizeof(ResumePoint),
-                                                      sizeof(JointState)};
+                                                      sizeof(JointState),
+                                                      sizeof(PointLoadState),
+                                                      sizeof(PressureLoadState)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 21>{368, 512, 72,  80,  488, 248,  80,
-                                                          528, 72,  112, 128, 240, 2192, 1992,
-                                                          96,  112, 352, 352, 144, 192,  136},
+static_assert(kDumpedSizes == std::array<std::size_t, 23>{368, 512, 72,  80,  488,  248,  80, 576,
+                                                          72,  112, 128, 240, 2248, 1992, 96, 112,
+                                                          352, 352, 144, 192, 136,  56,   64},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -105,14 +107,24 @@ template <class Ar>
 void fields(Ar& ar, RigidBody& b) {
   ar(b.part_id, b.mass, b.center, b.initial_center, b.inertia0, b.rotation, b.velocity,
      b.angular_momentum, b.omega, b.previous_velocity, b.previous_omega, b.nodes, b.offsets,
-     b.fixed_translation, b.fixed_rotation, b.motions, b.body_force, b.force, b.moment,
-     b.constraint_force, b.constraint_moment, b.constraint_work);
+     b.fixed_translation, b.fixed_rotation, b.motions, b.body_force, b.load_force, b.load_moment,
+     b.force, b.moment, b.constraint_force, b.constraint_moment, b.constraint_work);
 }
 
 template <class Ar>
 void fields(Ar& ar, JointState& j) {
   ar(j.id, j.heading, j.kind, j.nodes, j.pairs, j.relative_stiffness, j.reduced_mass, j.stiffness,
      j.initial_step, j.energy, j.force);
+}
+
+template <class Ar>
+void fields(Ar& ar, PointLoadState& p) {
+  ar(p.nodes, p.body, p.axis, p.moment, p.curve, p.scale, p.last);
+}
+
+template <class Ar>
+void fields(Ar& ar, PressureLoadState& p) {
+  ar(p.segments, p.curve, p.scale, p.arrival, p.last);
 }
 
 template <class Ar>
@@ -261,7 +273,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 3:
       return ar(s.rigid_bodies, s.joints);
     case 4:
-      return ar(s.constraints, s.nodal_motions);
+      return ar(s.constraints, s.nodal_motions, s.point_loads, s.pressure_loads, s.load_work);
     case 5:
       return ar(s.rigid_walls);
     case 6:

@@ -200,6 +200,7 @@ struct RigidBody {
   std::array<bool, 3> fixed_translation{}, fixed_rotation{};
   std::vector<RigidMotion> motions;
   Vec3 body_force = Vec3::Zero();  ///< *LOAD_BODY on the whole mass, at the centre, this cycle
+  Vec3 load_force = Vec3::Zero(), load_moment = Vec3::Zero();  ///< *LOAD_RIGID_BODY, this cycle
   Vec3 force = Vec3::Zero();       ///< resultant of element, contact and wall forces on the body
   Vec3 moment = Vec3::Zero();      ///< about the centre
   Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
@@ -278,6 +279,26 @@ struct BodyLoadState {
   double scale = 1.0;
 };
 
+/// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: SF x curve(t) along `axis`, a force or a moment,
+/// on each node or on a rigid body at its centre (body >= 0).
+struct PointLoadState {
+  std::vector<Index> nodes;
+  Index body = -1;
+  int axis = 0;
+  bool moment = false;
+  Index curve = -1;
+  double scale = 1.0;
+  double last = 0.0;  ///< the load last cycle, for its work
+};
+
+/// *LOAD_SEGMENT / _SET: pressure SF x curve(t - AT) on segments (a triangle repeats N3).
+struct PressureLoadState {
+  std::vector<std::array<Index, 4>> segments;
+  Index curve = -1;
+  double scale = 1.0, arrival = 0.0;
+  Eigen::Matrix3Xd last;  ///< the force on each segment's corners last cycle, 4 per segment
+};
+
 /// Elements drawn but not integrated: those of rigid parts (solids and shells).
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
@@ -317,6 +338,9 @@ struct State {
   std::vector<RigidWallState> rigid_walls;
   std::vector<contact::Interface> contacts;
   std::vector<BodyLoadState> body_loads;
+  std::vector<PointLoadState> point_loads;
+  std::vector<PressureLoadState> pressure_loads;
+  double load_work = 0.0;  ///< work of the point and pressure loads so far (glstat external work)
   TimeControl time_control;
 
   double time = 0.0;

@@ -21,7 +21,7 @@ TEST_CASE("check: a clean deck exits 0 with summary and migration report") {
   const Run r = run_mcdyna("check " + kDataDir + "all_keywords.k");
   CHECK(r.exit_code == 0);
   CHECK(r.output.find("nodes            12") != std::string::npos);
-  CHECK(r.output.find("Migration report: 78 keywords") != std::string::npos);
+  CHECK(r.output.find("Migration report: 83 keywords") != std::string::npos);
   CHECK(r.output.find("ready to run") != std::string::npos);
 }
 
@@ -73,11 +73,12 @@ TEST_CASE("unsupported physics fails check unless --allow-unsupported, no-effect
   const std::string body = "*INCLUDE\n" + kDataDir + "all_keywords.k\n";
   const auto deck = d.write("deck.k",
                             "*KEYWORD\n*CONTROL_MPP_IO_NODUMP\n*DATABASE_ELOUT\n0.1\n"
-                            "*LOAD_NODE_POINT\n1,3,1\n" +
+                            "*AIRBAG_SIMPLE_AIRBAG_MODEL\n1,3,1\n" +
                                 body);
   const Run strict = run_mcdyna("check " + deck.string());
   CHECK(strict.exit_code == 1);
-  CHECK(strict.output.find("UNSUPPORTED        *LOAD_NODE_POINT (deck.k: 5)") != std::string::npos);
+  CHECK(strict.output.find("UNSUPPORTED        *AIRBAG_SIMPLE_AIRBAG_MODEL (deck.k: 5)") !=
+        std::string::npos);
   CHECK(strict.output.find("read, no effect    *CONTROL_MPP_IO_NODUMP (deck.k: 2): MPP") !=
         std::string::npos);
   CHECK(strict.output.find("unsupported output *DATABASE_ELOUT") != std::string::npos);

@@ -228,3 +228,51 @@ void rigidwall_planar(KeywordRecord& r, model::ModelDatabase& m) {
 }
 
 }  // namespace mcdyna::deck::builders
+
+namespace mcdyna::deck::builders {
+
+void load_point(KeywordRecord& r, model::ModelDatabase& m) {
+  const std::string& name = r.schema().name;
+  const model::LoadTarget target = name == "LOAD_NODE_SET"     ? model::LoadTarget::node_set
+                                   : name == "LOAD_RIGID_BODY" ? model::LoadTarget::rigid_part
+                                                               : model::LoadTarget::node;
+  Group g;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    model::PointLoad p;
+    p.target_kind = target;
+    p.target = row.integer("NID");
+    p.dof = static_cast<int>(row.integer("DOF"));
+    p.curve = row.integer("LCID");
+    p.scale = row.real("SF");
+    p.loc = row.loc();
+    p.curve_loc = row.loc("LCID");
+    m.point_loads.push_back(p);
+  }
+}
+
+void load_segment(KeywordRecord& r, model::ModelDatabase& m) {
+  const bool is_set = r.schema().name == "LOAD_SEGMENT_SET";
+  Group g;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    model::SegmentLoad l;
+    l.is_set = is_set;
+    if (is_set) {
+      l.set = row.integer("SSID");
+    } else {
+      const int first = row.index("N1");
+      for (int k = 0; k < 4; ++k)
+        l.nodes[static_cast<std::size_t>(k)] = row.integer(first + k);
+      if (l.nodes[3] == 0) l.nodes[3] = l.nodes[2];
+    }
+    l.curve = row.integer("LCID");
+    l.scale = row.real("SF");
+    l.arrival = row.real("AT");
+    l.loc = row.loc();
+    l.curve_loc = row.loc("LCID");
+    m.segment_loads.push_back(l);
+  }
+}
+
+}  // namespace mcdyna::deck::builders

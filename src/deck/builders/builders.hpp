@@ -59,6 +59,8 @@ void contact(KeywordRecord& r, model::ModelDatabase& m);
 void boundary_spc(KeywordRecord& r, model::ModelDatabase& m);
 void boundary_prescribed_motion(KeywordRecord& r, model::ModelDatabase& m);
 void load_body(KeywordRecord& r, model::ModelDatabase& m);
+void load_point(KeywordRecord& r, model::ModelDatabase& m);
+void load_segment(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_node(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_generation(KeywordRecord& r, model::ModelDatabase& m);

@@ -105,7 +105,8 @@ Index advance_rigid_bodies(State& state, const StepTimes& t) {
   Index bad = -1;  // the first node of the first body whose motion is not finite
   for (RigidBody& b : state.rigid_bodies) {
     auto [force, moment] = node_resultants(state, b);
-    force += b.body_force;  // at the centre of mass: no moment
+    force += b.body_force + b.load_force;  // at the centre of mass: no moment
+    moment += b.load_moment;
     b.force = force;
     b.moment = moment;
     const Vec3 v_free = b.velocity + t.mean * force / b.mass;

@@ -1,0 +1,66 @@
+// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure
+// loads loads/applied_loads.cpp applies.
+#include "solver/compile.hpp"
+
+namespace mcdyna::solver::detail {
+
+void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  for (const model::PointLoad& p : m.point_loads) {
+    PointLoadState l;
+    l.curve = curve_index(m, p.curve);
+    if (l.curve < 0) continue;  // reported by the reference checks
+    l.scale = p.scale;
+    l.moment = p.dof >= 5;
+    l.axis = (p.dof - 1) % 4;  // 1-3 and 5-7
+    switch (p.target_kind) {
+      case model::LoadTarget::rigid_part:
+        l.body = rigid_body_of(m, s, p.target);
+        if (l.body < 0) continue;  // reported by the reference checks
+        break;
+      case model::LoadTarget::node_set:
+        l.nodes = node_set_nodes(m, p.target);
+        break;
+      case model::LoadTarget::node:
+        l.nodes = {static_cast<Index>(m.index.nodes.find(p.target))};
+        break;
+    }
+    if (l.moment) {
+      for (const Index n : l.nodes) {
+        const auto i = static_cast<std::size_t>(n);
+        if (s.nodes.rotary_inertia.empty() || !(s.nodes.rotary_inertia[i] > 0.0)) {
+          d.error(p.loc,
+                  "*LOAD_NODE: a moment (DOF {}) on node {}, which has no rotations (only shell "
+                  "nodes do)",
+                  p.dof, s.nodes.ids[i]);
+          break;
+        }
+      }
+    }
+    s.point_loads.push_back(std::move(l));
+  }
+  for (const model::SegmentLoad& g : m.segment_loads) {
+    PressureLoadState l;
+    l.curve = curve_index(m, g.curve);
+    if (l.curve < 0) continue;
+    l.scale = g.scale;
+    l.arrival = g.arrival;
+    auto node = [&](model::Id id) { return static_cast<Index>(m.index.nodes.find(id)); };
+    std::vector<std::array<model::Id, 4>> segments;
+    if (g.is_set) {
+      if (const model::SegmentSet* set = m.segment_set(g.set)) segments = set->segments;
+    } else {
+      segments.push_back(g.nodes);
+    }
+    for (std::array<model::Id, 4> seg : segments) {
+      if (seg[3] == 0) seg[3] = seg[2];
+      std::array<Index, 4> conn{};
+      for (std::size_t k = 0; k < 4; ++k)
+        conn[k] = node(seg[k]);
+      l.segments.push_back(conn);
+    }
+    l.last.setZero(3, 4 * static_cast<Index>(l.segments.size()));
+    s.pressure_loads.push_back(std::move(l));
+  }
+}
+
+}  // namespace mcdyna::solver::detail

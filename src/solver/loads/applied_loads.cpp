@@ -1,0 +1,95 @@
+// The point and pressure loads as one block of the time loop: *LOAD_NODE forces and moments on
+// nodes, *LOAD_RIGID_BODY on bodies at their centres, *LOAD_SEGMENT pressure on segments (their
+// current area and normal: a follower load), each SF x curve(t). Their work is the trapezoidal
+// rule over each step, half the force at either end times x^{n+1} - x^n = dt v^{n+1/2}, charged
+// when the next cycle's forces are known (as the contact's); it goes to glstat's external work.
+//
+// Every process applies every load; over several processes the loaded nodes are moved by every
+// process (mark_replicated), and a rigid body sums its nodes on their owners.
+#include "solver/block.hpp"
+
+namespace mcdyna::solver {
+
+namespace {
+
+double value(const State& s, Index curve, double scale, double shift) {
+  return scale * s.curves[static_cast<std::size_t>(curve)](s.time - shift);
+}
+
+void apply_point_loads(State& s) {
+  Nodes& nd = s.nodes;
+  for (RigidBody& b : s.rigid_bodies) {
+    b.load_force.setZero();
+    b.load_moment.setZero();
+  }
+  for (PointLoadState& l : s.point_loads) {
+    const double now = value(s, l.curve, l.scale, 0.0);
+    // Work of last cycle's load and this one over the step just taken, at v^{n+1/2}.
+    double speed = 0.0;
+    if (l.body >= 0) {
+      const RigidBody& b = s.rigid_bodies[static_cast<std::size_t>(l.body)];
+      speed = l.moment ? b.omega[l.axis] : b.velocity[l.axis];
+    }
+    for (const Index n : l.nodes)
+      speed += l.moment ? nd.angular_velocity(l.axis, n) : nd.velocity(l.axis, n);
+    s.load_work += 0.5 * s.step * (l.last + now) * speed;
+    l.last = now;
+    if (l.body >= 0) {
+      RigidBody& b = s.rigid_bodies[static_cast<std::size_t>(l.body)];
+      (l.moment ? b.load_moment : b.load_force)[l.axis] += now;
+    }
+    for (const Index n : l.nodes)
+      (l.moment ? nd.moment : nd.force)(l.axis, n) += now;
+  }
+}
+
+void apply_pressure_loads(State& s) {
+  Nodes& nd = s.nodes;
+  for (PressureLoadState& l : s.pressure_loads) {
+    const double p = s.time >= l.arrival ? value(s, l.curve, l.scale, l.arrival) : 0.0;
+    for (std::size_t k = 0; k < l.segments.size(); ++k) {
+      const std::array<Index, 4>& seg = l.segments[k];
+      const bool triangle = seg[3] == seg[2];
+      const int corners = triangle ? 3 : 4;
+      auto x = [&](std::size_t c) { return Vec3(nd.position.col(seg[c])); };
+      // Area times unit normal (right-hand rule over N1 N2 N3 N4).
+      const Vec3 area = triangle ? Vec3(0.5 * (x(1) - x(0)).cross(x(2) - x(0)))
+                                 : Vec3(0.5 * (x(2) - x(0)).cross(x(3) - x(1)));
+      const Vec3 f = -p * area / corners;
+      for (int c = 0; c < corners; ++c) {
+        const Index n = seg[static_cast<std::size_t>(c)];
+        const auto col = static_cast<Index>(4 * k + static_cast<std::size_t>(c));
+        s.load_work += 0.5 * s.step * (Vec3(l.last.col(col)) + f).dot(nd.velocity.col(n));
+        l.last.col(col) = f;
+        nd.force.col(n) += f;
+      }
+    }
+  }
+}
+
+class AppliedLoadsBlock final : public Block {
+ public:
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    for (const PointLoadState& l : s.point_loads)
+      for (const Index n : l.nodes)
+        nodes[static_cast<std::size_t>(n)] = 1;
+    for (const PressureLoadState& l : s.pressure_loads)
+      for (const auto& seg : l.segments)
+        for (const Index n : seg)
+          nodes[static_cast<std::size_t>(n)] = 1;
+  }
+  void forces(State& s, ForceReport& /*report*/) override {
+    apply_point_loads(s);
+    apply_pressure_loads(s);
+  }
+};
+
+}  // namespace
+
+void add_applied_load_blocks(State& s, Blocks& blocks) {
+  if (!s.point_loads.empty() || !s.pressure_loads.empty())
+    blocks.push_back(std::make_unique<AppliedLoadsBlock>());
+}
+
+}  // namespace mcdyna::solver
