@@ -326,6 +326,10 @@ void check_outputs(const ModelDatabase& m, core::Diagnostics& diags) {
     need(ix.part_sets, d.excluded_parts, d.loc, "part set (PSETID)", "*DATABASE_BINARY_D3PLOT",
          diags, true);
   }
+  if (m.controls.damping) {
+    need(ix.curves, m.controls.damping->curve, m.controls.damping->curve_loc, "curve (LCID)",
+         "*DAMPING_GLOBAL", diags, true);
+  }
   if (m.controls.time_step) {
     need(ix.curves, m.controls.time_step->max_step_curve, m.controls.time_step->loc, "curve (LCTM)",
          "*CONTROL_TIMESTEP", diags, true);

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 /// *CONTROL_* settings and *DATABASE_* output requests.
 #include <optional>
 #include <string>
@@ -52,6 +53,15 @@ struct ContactControl {
   int ignore_penetration = 0;  ///< card 4 IGNORE
   int friction_energy = 0;     ///< FRCENG
   core::SourceLoc loc;
+};
+
+/// *DAMPING_GLOBAL: force -D m v on every deformable node and rigid body (D from a curve or
+/// VALDMP), scaled per translation and rotation.
+struct GlobalDamping {
+  Id curve = 0;
+  double value = 0.0;
+  std::array<double, 6> scale{1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  core::SourceLoc loc, curve_loc;
 };
 
 struct SolidControl {
@@ -111,6 +121,7 @@ struct Controls {
   std::optional<TimeStepControl> time_step;
   std::optional<HourglassControl> hourglass;
   std::optional<ContactControl> contact;
+  std::optional<GlobalDamping> damping;
   std::optional<SolidControl> solid;
   std::optional<ShellControl> shell;
   std::optional<EnergyControl> energy;

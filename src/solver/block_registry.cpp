@@ -18,6 +18,7 @@ Blocks make_blocks(State& s) {
       add_rigid_wall_blocks,
       add_body_load_blocks,
       add_applied_load_blocks,
+      add_global_damping_blocks,
       add_contact_blocks,
   };
   Blocks blocks;

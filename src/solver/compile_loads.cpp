@@ -1,10 +1,18 @@
 // *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure
-// loads loads/applied_loads.cpp applies.
+// loads loads/applied_loads.cpp applies; *DAMPING_GLOBAL -> loads/global_damping.cpp.
 #include "solver/compile.hpp"
 
 namespace mcdyna::solver::detail {
 
 void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  if (m.controls.damping) {
+    const model::GlobalDamping& g = *m.controls.damping;
+    GlobalDampingState ds;
+    ds.curve = g.curve > 0 ? curve_index(m, g.curve) : -1;
+    ds.value = g.value;
+    ds.scale = g.scale;
+    if (g.curve == 0 || ds.curve >= 0) s.damping.push_back(ds);
+  }
   for (const model::PointLoad& p : m.point_loads) {
     PointLoadState l;
     l.curve = curve_index(m, p.curve);

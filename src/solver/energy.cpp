@@ -33,6 +33,7 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
   for (const NodalMotion& m : s.nodal_motions)
     e.external_work += m.work();
   e.external_work += s.load_work;
+  e.damping += s.damping_work;
   for (const RigidBody& b : s.rigid_bodies) {
     e.kinetic += rigid_kinetic(b);
     e.external_work += b.constraint_work;

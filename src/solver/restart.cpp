@@ -37,7 +37,7 @@ constexpr std::array<std::size_t, 23> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 23>{368, 512, 72,  80,  488,  248,  80, 576,
-                                                          72,  112, 128, 240, 2248, 1992, 96, 112,
+                                                          72,  112, 128, 240, 2280, 1992, 96, 112,
                                                           352, 352, 144, 192, 136,  56,   64},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
@@ -258,7 +258,7 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
-// curves, body_loads, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by
+// curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by
 // --fixed-step). Each section of kStateSections is checksummed on its own in the dump, so a damaged
 // one is named.
 template <class Ar>
@@ -273,7 +273,8 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 3:
       return ar(s.rigid_bodies, s.joints);
     case 4:
-      return ar(s.constraints, s.nodal_motions, s.point_loads, s.pressure_loads, s.load_work);
+      return ar(s.constraints, s.nodal_motions, s.point_loads, s.pressure_loads, s.load_work,
+                s.damping_work);
     case 5:
       return ar(s.rigid_walls);
     case 6:

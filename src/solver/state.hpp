@@ -200,7 +200,8 @@ struct RigidBody {
   std::array<bool, 3> fixed_translation{}, fixed_rotation{};
   std::vector<RigidMotion> motions;
   Vec3 body_force = Vec3::Zero();  ///< *LOAD_BODY on the whole mass, at the centre, this cycle
-  Vec3 load_force = Vec3::Zero(), load_moment = Vec3::Zero();  ///< *LOAD_RIGID_BODY, this cycle
+  /// *LOAD_RIGID_BODY and *DAMPING_GLOBAL at the centre, this cycle (zeroed once taken)
+  Vec3 load_force = Vec3::Zero(), load_moment = Vec3::Zero();
   Vec3 force = Vec3::Zero();       ///< resultant of element, contact and wall forces on the body
   Vec3 moment = Vec3::Zero();      ///< about the centre
   Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
@@ -299,6 +300,13 @@ struct PressureLoadState {
   Eigen::Matrix3Xd last;  ///< the force on each segment's corners last cycle, 4 per segment
 };
 
+/// *DAMPING_GLOBAL, compiled (curve < 0: the constant D).
+struct GlobalDampingState {
+  Index curve = -1;
+  double value = 0.0;
+  std::array<double, 6> scale{};
+};
+
 /// Elements drawn but not integrated: those of rigid parts (solids and shells).
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
@@ -341,6 +349,8 @@ struct State {
   std::vector<PointLoadState> point_loads;
   std::vector<PressureLoadState> pressure_loads;
   double load_work = 0.0;  ///< work of the point and pressure loads so far (glstat external work)
+  std::vector<GlobalDampingState> damping;  ///< none or one
+  double damping_work = 0.0;                ///< taken by *DAMPING_GLOBAL so far
   TimeControl time_control;
 
   double time = 0.0;

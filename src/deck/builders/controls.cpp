@@ -75,6 +75,23 @@ void control_contact(KeywordRecord& r, model::ModelDatabase& m) {
   set_once(m.controls.contact, c, r);
 }
 
+void damping_global(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::GlobalDamping g;
+  g.curve = c.integer("LCID");
+  g.value = c.real("VALDMP");
+  const int first = c.index("STX");
+  bool any = false;
+  for (int k = 0; k < 6; ++k) {
+    g.scale[static_cast<std::size_t>(k)] = c.real(first + k);
+    any = any || g.scale[static_cast<std::size_t>(k)] != 0.0;
+  }
+  if (!any) g.scale.fill(1.0);  // all six zero: every direction damped
+  g.loc = c.loc();
+  g.curve_loc = c.loc("LCID");
+  set_once(m.controls.damping, g, r);
+}
+
 void control_solid(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c = r.card("1");
   set_once(m.controls.solid,

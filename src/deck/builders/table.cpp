@@ -32,6 +32,7 @@ const std::vector<BuilderEntry>& builder_table() {
       {"CONTROL_ENERGY", control_energy},
       {"CONTROL_BULK_VISCOSITY", control_bulk_viscosity},
       {"CONTROL_ACCURACY", control_accuracy},
+      {"DAMPING_GLOBAL", damping_global},
       {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", contact},
       {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", contact},
       {"CONTACT_AUTOMATIC_SINGLE_SURFACE", contact},

@@ -18,10 +18,6 @@ double value(const State& s, Index curve, double scale, double shift) {
 
 void apply_point_loads(State& s) {
   Nodes& nd = s.nodes;
-  for (RigidBody& b : s.rigid_bodies) {
-    b.load_force.setZero();
-    b.load_moment.setZero();
-  }
   for (PointLoadState& l : s.point_loads) {
     const double now = value(s, l.curve, l.scale, 0.0);
     // Work of last cycle's load and this one over the step just taken, at v^{n+1/2}.

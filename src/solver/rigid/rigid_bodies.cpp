@@ -107,6 +107,8 @@ Index advance_rigid_bodies(State& state, const StepTimes& t) {
     auto [force, moment] = node_resultants(state, b);
     force += b.body_force + b.load_force;  // at the centre of mass: no moment
     moment += b.load_moment;
+    b.load_force.setZero();  // this cycle's loads and damping, taken
+    b.load_moment.setZero();
     b.force = force;
     b.moment = moment;
     const Vec3 v_free = b.velocity + t.mean * force / b.mass;
