@@ -54,15 +54,16 @@ void check_accuracy_control(const model::ModelDatabase& m, core::Diagnostics& d)
   if (a.invariant != 1 && a.invariant != 0)
     d.note(a.loc,
            "*CONTROL_ACCURACY: INN {} (invariant node numbering) has no effect: mcdyna's "
-           "solids and particles are isotropic and do not depend on the node order",
+           "solids and particles do not depend on the node order, and its shells take their "
+           "frame from the first side (LS-DYNA's INN 1)",
            a.invariant);
   if (a.implicit != 0)
     d.note(a.loc, "*CONTROL_ACCURACY: IACC {} (implicit accuracy) has no effect: explicit solver",
            a.implicit);
   if (a.explicit_accuracy != 0.0)
     d.note(a.loc,
-           "*CONTROL_ACCURACY: EXACC {:g} (shell accuracy) has no effect: no deformable "
-           "shells",
+           "*CONTROL_ACCURACY: EXACC {:g} (explicit accuracy of the shells) has no effect: "
+           "mcdyna's shells run their standard update",
            a.explicit_accuracy);
 }
 

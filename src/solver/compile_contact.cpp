@@ -440,10 +440,10 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
                   control.penalty_option);
         in.penalty_scale = contact::PenaltyScale::smaller;
     }
-    if (c.soft == 2 || c.soft > 2) {
-      d.warning(c.loc,
-                "contact {}: SOFT = {} (segment-based) runs as SOFT = 1, node-to-segment with the "
-                "soft-constraint stiffness",
+    // SOFT 2, 4 and 6 are refused by the reader (segment-based and forming contacts are not
+    // there); other values above 1 are not LS-DYNA's and run as 1.
+    if (c.soft > 1) {
+      d.warning(c.loc, "contact {}: SOFT = {} runs as SOFT = 1 (the soft-constraint stiffness)",
                 number, c.soft);
     }
     // One direction: the nodes of one side on the segments of the other. `node_thickness` is

@@ -4,6 +4,12 @@ ran to normal termination, or rejected, by the first reason in the order below (
 corpus": decks read, run to termination, rejected by reason).
 
   tools/verify/corpus_survey.py [--mcdyna build/mcdyna] [--cycles 300] [--out DIR] [--list]
+                                [--expect FILE] [--write-expect FILE]
+
+--expect compares every deck's outcome and reason with FILE (lines "outcome<TAB>deck<TAB>reason",
+as --write-expect writes them) and exits 1 on any difference: the corpus test
+(tests/CMakeLists.txt). A deck that starts to run, or is rejected for another reason, is a
+change to make on purpose: rewrite the file and say why in the commit.
 
 Reasons, in the order they are decided (a deck is counted once, under the first that applies):
   fragment      a piece of a larger model: an *INCLUDE not in the corpus, entities defined in
@@ -89,7 +95,10 @@ def main():
     ap.add_argument("--cycles", type=int, default=300)
     ap.add_argument("--out", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "corpus_survey"))
     ap.add_argument("--list", action="store_true", help="one line per deck")
+    ap.add_argument("--expect", help="the outcome expected of each deck; exit 1 on a difference")
+    ap.add_argument("--write-expect", help="write each deck's outcome to this file")
     args = ap.parse_args()
+    found = {}
     os.makedirs(args.out, exist_ok=True)
     outcomes = Counter()
     details = defaultdict(Counter)
@@ -100,10 +109,10 @@ def main():
             [args.mcdyna, "run", deck, "--out", os.path.join(args.out, f"deck{i:02d}"), "-q",
              "--threads", "1", "--cycles", str(args.cycles), "--max-messages", "0"],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-            text=True, errors="replace", timeout=1800)
+            text=True, errors="replace", timeout=1800, cwd=ROOT)
         check = subprocess.run([args.mcdyna, "check", deck, "--max-messages", "0"],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               stdin=subprocess.DEVNULL, text=True, errors="replace")
+                               stdin=subprocess.DEVNULL, text=True, errors="replace", cwd=ROOT)
         if run.returncode == 0:
             outcome, detail = "ran", ""
         else:
@@ -114,6 +123,8 @@ def main():
         for k in unsupported_keywords(check.stdout):
             keywords[k] += 1
         outcomes[outcome] += 1
+        # The reason as the expectation file keeps it: this checkout's path left out.
+        found[rel] = (outcome, detail.replace(ROOT, "<root>")[:200])
         short = re.sub(r"\d+", "N", detail)[:110]
         details[outcome][short] += 1
         if args.list:
@@ -129,6 +140,25 @@ def main():
                 print(f"      {n:3d}  {d}")
     print("unsupported keywords (decks using each, from `mcdyna check`):")
     print("  " + "; ".join(f"{k} {n}" for k, n in keywords.most_common()))
+    if args.write_expect:
+        with open(args.write_expect, "w") as f:
+            f.write("# Outcome of every public deck (tools/verify/corpus_survey.py --write-expect)\n")
+            for rel in sorted(found):
+                f.write(f"{found[rel][0]}\t{rel}\t{found[rel][1]}\n")
+    if args.expect:
+        expected = {}
+        with open(args.expect) as f:
+            for line in f:
+                if line.strip() and not line.startswith("#"):
+                    outcome, rel, reason = line.rstrip("\n").split("\t")
+                    expected[rel] = (outcome, reason)
+        wrong = [f"{rel}: expected {expected.get(rel, '(not listed)')}, got {found.get(rel, '(missing)')}"
+                 for rel in sorted(set(expected) | set(found)) if expected.get(rel) != found.get(rel)]
+        for w in wrong:
+            print("MISMATCH " + w)
+        print(f"{max(0, len(expected) - len(wrong))} of {len(expected)} decks as expected")
+        return 1 if wrong else 0
+    return 0
 
 
 if __name__ == "__main__":
