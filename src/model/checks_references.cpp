@@ -1,5 +1,6 @@
 // ID indices, duplicate IDs and dangling references.
 #include <fmt/format.h>
+#include <algorithm>
 
 #include "model/checks.hpp"
 
@@ -210,6 +211,22 @@ void check_joins(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const Joint& j : m.joints)
     for (const Id n : j.nodes)
       need(ix.nodes, n, j.loc, "node", "*CONSTRAINED_JOINT", diags, true);
+  for (const CoordinateSystem& c : m.coordinate_systems)
+    for (const Id n : c.nodes)
+      need(ix.nodes, n, c.loc, "node", "*DEFINE_COORDINATE_NODE", diags);
+  for (const JointStiffness& j : m.joint_stiffnesses) {
+    const std::string user = "*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED";
+    need_rigid_part(m, j.part_a, j.loc, user, diags);
+    need_rigid_part(m, j.part_b, j.loc, user, diags);
+    for (const Id cid : {j.system_a, j.system_b}) {
+      if (std::none_of(m.coordinate_systems.begin(), m.coordinate_systems.end(),
+                       [&](const CoordinateSystem& c) { return c.id == cid; })) {
+        diags.error(j.loc, "{} refers to coordinate system {}, which is not defined", user, cid);
+      }
+    }
+    for (const Id curve : j.curves)
+      need(ix.curves, curve, j.loc, "curve", user, diags, true);
+  }
   for (const NodalRigidBody& b : m.nodal_rigid_bodies) {
     need(ix.node_sets, b.node_set, b.set_loc, "node set", "*CONSTRAINED_NODAL_RIGID_BODY", diags);
     if (ix.parts.find(b.id) != IdIndex::kNone) {

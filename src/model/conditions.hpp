@@ -99,6 +99,23 @@ struct SegmentLoad {
   core::SourceLoc loc, curve_loc;
 };
 
+/// *DEFINE_COORDINATE_NODE: origin N1, x towards N2, x-y plane through N3.
+struct CoordinateSystem {
+  Id id = 0;
+  std::array<Id, 3> nodes{};
+  core::SourceLoc loc;
+};
+
+/// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between rigid parts A and B about
+/// the axes (phi x, theta y, psi z) of their local systems.
+struct JointStiffness {
+  Id id = 0;
+  Id part_a = 0, part_b = 0, system_a = 0, system_b = 0;
+  std::array<Id, 3> curves{};            ///< LCIDPH, LCIDT, LCIDPS
+  std::array<double, 3> elastic{}, friction{};  ///< ESPH EST ESPS, FMPH FMT FMPS
+  core::SourceLoc loc;
+};
+
 /// *LOAD_BODY_X / _Y / _Z: a base acceleration SF x curve(t) along an axis; the body force on a
 /// node is -m a (gravity down -z is LOAD_BODY_Z with +9.81).
 struct BodyLoad {

@@ -43,6 +43,8 @@ struct ModelDatabase {
   std::vector<RigidMerge> rigid_merges;
   std::vector<NodalRigidBody> nodal_rigid_bodies;
   std::vector<Joint> joints;
+  std::vector<JointStiffness> joint_stiffnesses;
+  std::vector<CoordinateSystem> coordinate_systems;
 
   Controls controls;
   OutputRequests outputs;

@@ -247,6 +247,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   // The conditions below read the elements' and rigid bodies' arrays whole: stop at a broken one.
   if (diags.error_count() > errors) return nullptr;
   detail::compile_joints(m, *s, diags);
+  detail::compile_joint_stiffnesses(m, *s, diags);
   detail::compile_constraints(m, *s, diags);
   detail::compile_motions(m, *s, diags);
   detail::compile_loads(m, *s, diags);

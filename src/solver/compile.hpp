@@ -46,6 +46,7 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// *CONSTRAINED_JOINT_*: after the rigid bodies (a joint node's mass may be a body's).
 void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// The rigid body of part `id` (merged parts share their lead's) or of the nodal rigid body
 /// `id`; -1 for neither.
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);

@@ -89,4 +89,55 @@ void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& 
   }
 }
 
+namespace {
+
+// The axes of a *DEFINE_COORDINATE_NODE system at the initial positions (columns x y z).
+Mat3 coordinate_axes(const model::ModelDatabase& m, const State& s, model::Id cid) {
+  for (const model::CoordinateSystem& c : m.coordinate_systems) {
+    if (c.id != cid) continue;
+    auto x = [&](std::size_t k) {
+      return Vec3(s.nodes.initial.col(static_cast<Index>(m.index.nodes.find(c.nodes[k]))));
+    };
+    const Vec3 ex = (x(1) - x(0)).normalized();
+    const Vec3 ez = ex.cross(x(2) - x(0)).normalized();
+    Mat3 axes;
+    axes.col(0) = ex;
+    axes.col(1) = ez.cross(ex);
+    axes.col(2) = ez;
+    return axes;
+  }
+  return Mat3::Identity();
+}
+
+}  // namespace
+
+void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  for (const model::JointStiffness& j : m.joint_stiffnesses) {
+    JointStiffnessState js;
+    js.id = j.id;
+    js.body_a = rigid_body_of(m, s, j.part_a);
+    js.body_b = rigid_body_of(m, s, j.part_b);
+    if (js.body_a < 0 || js.body_b < 0) continue;  // reported by check
+    const Mat3 a = coordinate_axes(m, s, j.system_a), b = coordinate_axes(m, s, j.system_b);
+    if (!a.allFinite() || !b.allFinite()) {
+      d.error(j.loc, "joint stiffness {}: a local system's nodes coincide or lie on a line", j.id);
+      continue;
+    }
+    js.frame_a = a;
+    js.frame_b = b;
+    for (std::size_t k = 0; k < 3; ++k) {
+      js.curves[k] = j.curves[k] > 0 ? curve_index(m, j.curves[k]) : -1;
+      // ES acts with FM only: the friction's elastic part (LS-DYNA: 0 FM, no friction).
+      if (j.friction[k] > 0.0 && !(j.elastic[k] > 0.0)) {
+        d.error(j.loc,
+                "joint stiffness {}: a friction moment limit needs its elastic stiffness (ES)",
+                j.id);
+      }
+      js.elastic[static_cast<Index>(k)] = j.friction[k] > 0.0 ? j.elastic[k] : 0.0;
+      js.friction[static_cast<Index>(k)] = j.friction[k];
+    }
+    s.joint_stiffnesses.push_back(js);
+  }
+}
+
 }  // namespace mcdyna::solver::detail

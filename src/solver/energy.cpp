@@ -30,6 +30,8 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     e.sliding += c.energy;
   for (const JointState& j : s.joints)
     e.internal += j.energy;
+  for (const JointStiffnessState& j : s.joint_stiffnesses)
+    e.internal += j.work;
   for (const NodalMotion& m : s.nodal_motions)
     e.external_work += m.work();
   e.external_work += s.load_work;

@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 23> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 24> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -33,12 +33,13 @@ constexpr std::array<std::size_t, 23> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(ResumePoint),
                                                       sizeof(JointState),
                                                       sizeof(PointLoadState),
-                                                      sizeof(PressureLoadState)};
+                                                      sizeof(PressureLoadState),
+                                                      sizeof(JointStiffnessState)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 23>{368, 512, 72,  80,  488,  248,  80, 576,
-                                                          72,  112, 128, 240, 2280, 1992, 96, 112,
-                                                          352, 352, 144, 192, 136,  56,   64},
+static_assert(kDumpedSizes == std::array<std::size_t, 24>{368, 512, 72,  80,  488,  248,  80, 576,
+                                                          72,  112, 128, 240, 2304, 1992, 96, 112,
+                                                          352, 352, 144, 192, 136,  56,   64, 304},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -125,6 +126,12 @@ void fields(Ar& ar, PointLoadState& p) {
 template <class Ar>
 void fields(Ar& ar, PressureLoadState& p) {
   ar(p.segments, p.curve, p.scale, p.arrival, p.last);
+}
+
+template <class Ar>
+void fields(Ar& ar, JointStiffnessState& j) {
+  ar(j.id, j.body_a, j.body_b, j.frame_a, j.frame_b, j.curves, j.elastic, j.friction,
+     j.friction_moment, j.angles, j.moment, j.work);
 }
 
 template <class Ar>
@@ -258,7 +265,8 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells,
-// curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by
+// curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed
+// by
 // --fixed-step). Each section of kStateSections is checksummed on its own in the dump, so a damaged
 // one is named.
 template <class Ar>
@@ -271,7 +279,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 2:
       return ar(s.spg);
     case 3:
-      return ar(s.rigid_bodies, s.joints);
+      return ar(s.rigid_bodies, s.joints, s.joint_stiffnesses);
     case 4:
       return ar(s.constraints, s.nodal_motions, s.point_loads, s.pressure_loads, s.load_work,
                 s.damping_work);

@@ -228,6 +228,20 @@ struct JointState {
   Vec3 force = Vec3::Zero();  ///< on body B, summed over the pairs, this cycle
 };
 
+/// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between rigid bodies A and B about
+/// the axes of A's local system, the angles those of B's system turned from A's.
+struct JointStiffnessState {
+  model::Id id = 0;
+  Index body_a = -1, body_b = -1;
+  Mat3 frame_a = Mat3::Identity(), frame_b = Mat3::Identity();  ///< local axes at t = 0
+  std::array<Index, 3> curves{-1, -1, -1};  ///< moment against angle, about x y z
+  Vec3 elastic = Vec3::Zero(), friction = Vec3::Zero();
+  Vec3 friction_moment = Vec3::Zero();  ///< the elastic-plastic part, carried
+  Vec3 angles = Vec3::Zero();           ///< last cycle's
+  Vec3 moment = Vec3::Zero();           ///< last cycle's, on B about A's axes
+  double work = 0.0;                    ///< done on the springs (stored and dissipated)
+};
+
 /// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
 struct NodalConstraints {
   std::vector<Index> nodes;  ///< ascending
@@ -339,6 +353,7 @@ struct State {
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
   std::vector<JointState> joints;
+  std::vector<JointStiffnessState> joint_stiffnesses;
   DisplayCells rigid_cells;
   std::vector<LoadCurve> curves;
   NodalConstraints constraints;

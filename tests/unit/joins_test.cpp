@@ -227,3 +227,43 @@ TEST_CASE(
     CHECK(b.omega.y() == doctest::Approx(cylindrical ? 2.0 : 0.0).epsilon(1e-3).scale(1.0));
   }
 }
+
+TEST_CASE("a generalized joint stiffness turns elastically, then slips at its friction moment") {
+  // The pendulum plate on its revolute joint (axis y), no gravity, turned by a moment about y
+  // rising as 0.2 t N m (*LOAD_RIGID_BODY DOF 6) against a joint stiffness about the axis
+  // (local x = global y, *DEFINE_COORDINATE_NODE on the joint's nodes): ES 1 N m/rad, FM 0.1
+  // N m. Until t = 0.5 s the plate turns M / ES (its own period, 0.13 s, is short against the
+  // ramp: the lag is M' / (ES w) = 4e-3 rad); then the friction slips and the plate speeds up
+  // by (M - FM) / I: at 0.6 s, 0.001 / I = 2.38 rad/s, give or take the ringing left from the
+  // elastic phase, M' / ES = 0.2 rad/s.
+  const std::string stiffness =
+      "*CONSTRAINED_JOINT_REVOLUTE\n101,102,103,104\n"
+      "*DEFINE_COORDINATE_NODE\n1,101,103,105\n*DEFINE_COORDINATE_NODE\n2,102,104,106\n"
+      "*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED\n1,1,2,1,2\n\n1.0,0.1\n"
+      "*LOAD_RIGID_BODY\n1,6,7\n*DEFINE_CURVE\n7\n0,0\n10,2\n";
+  const double length = 0.2, width = 0.02, d = length / 2;
+  const double inertia =
+      7850 * 0.001 * length * width * ((length * length + width * width) / 12 + d * d);
+  for (const double end : {0.45, 0.6}) {
+    std::string text = pendulum_deck(stiffness, "1,1,0\n0,0,0,0,1,0\n", 0.0);
+    text.replace(text.find("1.6\n"), 4, fmt::format("{}\n", end));
+    test::TempDir dir;
+    test::Simulation sim = test::prepare(dir, text);
+    REQUIRE(sim.state->joint_stiffnesses.size() == 1);
+    double turned = 0.0;
+    solver::RunHooks hooks;
+    hooks.progress = [&](const solver::State& s) {
+      turned = Eigen::AngleAxisd(s.rigid_bodies.front().rotation).angle() *
+               Eigen::AngleAxisd(s.rigid_bodies.front().rotation).axis().y();
+    };
+    test::run(sim, hooks);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    const double t = sim.state->time, spin = sim.state->rigid_bodies.front().omega.y();
+    MESSAGE("t ", t, ": turned ", turned, " rad, spin ", spin, " rad/s");
+    if (end < 0.5) {
+      CHECK(turned == doctest::Approx(0.2 * t / 1.0).epsilon(0.05));
+    } else {
+      CHECK(spin == doctest::Approx(0.001 / inertia).epsilon(0.1));
+    }
+  }
+}

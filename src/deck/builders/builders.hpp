@@ -71,6 +71,8 @@ void constrained_extra_nodes(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_rigid_bodies(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_nodal_rigid_body(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_joint(KeywordRecord& r, model::ModelDatabase& m);
+void joint_stiffness_generalized(KeywordRecord& r, model::ModelDatabase& m);
+void define_coordinate_node(KeywordRecord& r, model::ModelDatabase& m);
 // define_sets.cpp
 void define_curve(KeywordRecord& r, model::ModelDatabase& m);
 void define_vector(KeywordRecord& r, model::ModelDatabase& m);

@@ -67,4 +67,40 @@ void constrained_joint(KeywordRecord& r, model::ModelDatabase& m) {
   }
 }
 
+void joint_stiffness_generalized(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  const Row& c2 = r.card("2");
+  const Row& c3 = r.card("3");
+  model::JointStiffness j;
+  j.id = c1.integer("JSID");
+  j.part_a = c1.integer("PIDA");
+  j.part_b = c1.integer("PIDB");
+  j.system_a = c1.integer("CIDA");
+  j.system_b = c1.integer("CIDB") != 0 ? c1.integer("CIDB") : j.system_a;
+  const int curve = c2.index("LCIDPH"), elastic = c3.index("ESPH");
+  for (int k = 0; k < 3; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    j.curves[i] = c2.integer(curve + k);
+    j.elastic[i] = c3.real(elastic + 2 * k);
+    j.friction[i] = c3.real(elastic + 2 * k + 1);
+  }
+  j.loc = c1.loc();
+  m.joint_stiffnesses.push_back(j);
+}
+
+void define_coordinate_node(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c = r.card("1");
+  model::CoordinateSystem cs;
+  cs.id = c.integer("CID");
+  for (int k = 0; k < 3; ++k)
+    cs.nodes[static_cast<std::size_t>(k)] = c.integer(c.index("N1") + k);
+  cs.loc = c.loc();
+  const std::string dir(c.text("DIR"));
+  if (!dir.empty() && dir != "X" && dir != "x") {
+    r.diags().error(c.loc("DIR"), "{}: DIR = {} is not supported (X: N1 -> N2 is the x axis)",
+                    r.display_name(), dir);
+  }
+  m.coordinate_systems.push_back(cs);
+}
+
 }  // namespace mcdyna::deck::builders

@@ -63,6 +63,8 @@ const std::vector<BuilderEntry>& builder_table() {
       {"CONSTRAINED_JOINT_REVOLUTE", constrained_joint},
       {"CONSTRAINED_JOINT_CYLINDRICAL", constrained_joint},
       {"CONSTRAINED_JOINT_TRANSLATIONAL", constrained_joint},
+      {"CONSTRAINED_JOINT_STIFFNESS_GENERALIZED", joint_stiffness_generalized},
+      {"DEFINE_COORDINATE_NODE", define_coordinate_node},
       {"DEFINE_CURVE", define_curve},
       {"DEFINE_VECTOR", define_vector},
       {"DEFINE_BOX", define_box},

@@ -12,6 +12,7 @@
 // undamped, and the energy they store counts as internal energy.
 //
 // Every process computes every joint whole and moves its nodes itself (mark_replicated).
+#include <algorithm>
 #include <cmath>
 
 #include "model/conditions.hpp"
@@ -111,6 +112,37 @@ void joint_forces(State& s, JointState& j) {
     hold_points(s, j);
 }
 
+// A generalized joint stiffness: the rotation that takes A's local axes to B's, as a rotation
+// vector on A's axes, gives the angles (phi, theta, psi); about each axis the moment is the
+// curve's at that angle plus an elastic-plastic friction moment, ES times the angle's change
+// capped at FM. It turns B back (and A the other way) about A's axis.
+void joint_stiffness(State& s, JointStiffnessState& j) {
+  RigidBody& a = s.rigid_bodies[static_cast<std::size_t>(j.body_a)];
+  RigidBody& b = s.rigid_bodies[static_cast<std::size_t>(j.body_b)];
+  const Mat3 axes_a = a.rotation * j.frame_a, axes_b = b.rotation * j.frame_b;
+  const Eigen::AngleAxisd turn(axes_a.transpose() * axes_b);
+  const Vec3 angles = turn.angle() * turn.axis();
+  Vec3 moment = Vec3::Zero();  // on B, about A's axes
+  for (int k = 0; k < 3; ++k) {
+    double m = 0.0;
+    if (j.curves[static_cast<std::size_t>(k)] >= 0)
+      m += s.curves[static_cast<std::size_t>(j.curves[static_cast<std::size_t>(k)])](angles[k]);
+    if (j.friction[k] > 0.0) {
+      double& f = j.friction_moment[k];
+      f = std::clamp(f + j.elastic[k] * (angles[k] - j.angles[k]), -j.friction[k], j.friction[k]);
+      m += f;
+    }
+    moment[k] = -m;
+  }
+  // Work done on the springs over the turn since last cycle, by the trapezoidal rule.
+  j.work -= 0.5 * (j.moment + moment).dot(angles - j.angles);
+  j.angles = angles;
+  j.moment = moment;
+  const Vec3 global = axes_a * moment;
+  b.load_moment += global;
+  a.load_moment -= global;
+}
+
 class JointsBlock final : public Block {
  public:
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
@@ -122,13 +154,16 @@ class JointsBlock final : public Block {
   void forces(State& s, ForceReport& /*report*/) override {
     for (JointState& j : s.joints)
       joint_forces(s, j);
+    for (JointStiffnessState& j : s.joint_stiffnesses)
+      joint_stiffness(s, j);
   }
 };
 
 }  // namespace
 
 void add_joint_blocks(State& s, Blocks& blocks) {
-  if (!s.joints.empty()) blocks.push_back(std::make_unique<JointsBlock>());
+  if (!s.joints.empty() || !s.joint_stiffnesses.empty())
+    blocks.push_back(std::make_unique<JointsBlock>());
 }
 
 }  // namespace mcdyna::solver
