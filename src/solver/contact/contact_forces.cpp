@@ -64,8 +64,14 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
     // its offset faces and, beyond its edges, a rounded rim of radius h, as LS-DYNA's
     // automatic contacts wrap shell edges. The depth is then h minus the distance to the
     // closest point, continuous from one segment to the next over a fold's crest, where
-    // offset faces alone leave a wedge the node enters freely and then is thrown out of.
-    const bool rim = h > 0.0 && beyond_edge > 1e-9 * size;
+    // offset faces alone leave a wedge the node enters freely and then is thrown out of
+    // whenever h reaches beyond the edge tolerance.
+    // Thinner than the edge tolerance, the tolerance band already covers every point within h
+    // of an edge, and the faces act as before. Rigid segments (a tool's nominal skin, as the
+    // FDS screw's 0.02 mm on its facets) keep the faces too: their rims wait for the FDS study
+    // to be measured again with them.
+    const bool rim = h > kEdgeTolerance * size && beyond_edge > 1e-9 * size &&
+                     std::isfinite(p.surface.smallest_node_mass[kk]);
     if (!rim && beyond_edge > kEdgeTolerance * size) continue;
     double side = 1.0;  // one-sided: the normal's side
     if (p.surface.two_sided[kk]) {
