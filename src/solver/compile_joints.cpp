@@ -9,18 +9,6 @@
 
 namespace mcdyna::solver::detail {
 
-namespace {
-
-// The mass a force on node n moves: the nodal mass, or for a rigid body's node the least mass
-// its point answers a force with (rigid/rigid_bodies.hpp).
-double effective_mass(const State& s, Index n) {
-  const Index b = s.nodes.rigid_body[static_cast<std::size_t>(n)];
-  if (b < 0) return s.nodes.mass[static_cast<std::size_t>(n)];
-  return point_mass(s, b, s.nodes.initial.col(n));
-}
-
-}  // namespace
-
 void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (std::size_t k = 0; k < m.joints.size(); ++k) {
     const model::Joint& j = m.joints[k];
@@ -44,7 +32,7 @@ void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& 
           continue;
         }
         js.nodes[i] = static_cast<Index>(n);
-        pair_mass[side] = effective_mass(s, js.nodes[i]);
+        pair_mass[side] = node_mass_at(s, js.nodes[i], s.nodes.initial.col(js.nodes[i]));
       }
       if (!ok) break;
       if (!(pair_mass[0] > 0.0) || !(pair_mass[1] > 0.0)) {
@@ -64,11 +52,7 @@ void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& 
         break;
       }
       // A held body's side is infinitely heavy: the pair then moves the other side alone.
-      const double reduced = std::isinf(pair_mass[0]) ? pair_mass[1]
-                             : std::isinf(pair_mass[1])
-                                 ? pair_mass[0]
-                                 : pair_mass[0] * pair_mass[1] / (pair_mass[0] + pair_mass[1]);
-      js.reduced_mass = std::min(js.reduced_mass, reduced);
+      js.reduced_mass = std::min(js.reduced_mass, reduced_mass(pair_mass[0], pair_mass[1]));
     }
     if (!ok) continue;
     if (std::isinf(js.reduced_mass)) {

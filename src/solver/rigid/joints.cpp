@@ -41,12 +41,6 @@ void hold_points(State& s, JointState& j) {
   }
 }
 
-// The mass the force point moves: a rigid body's at the point, else the node's.
-double side_mass(const State& s, Index node, const Vec3& point) {
-  const Index b = s.nodes.rigid_body[static_cast<std::size_t>(node)];
-  return b >= 0 ? point_mass(s, b, point) : s.nodes.mass[static_cast<std::size_t>(node)];
-}
-
 // The spring of a pair held on a line: sized, like the others, to the reduced mass of its two
 // sides, but where A is pulled, at the B node's place along the line. On a rigid A that is the
 // body's mass at that point (the couple on N1 and N3 turns it as a force there would); on
@@ -63,8 +57,7 @@ double line_stiffness(const State& s, const JointState& j, Index anchor, Index b
     const double soften = 1.0 + std::abs(lever);
     return j.stiffness / (soften * soften);
   }
-  const double ma = point_mass(s, body, point), mb = side_mass(s, b, at(s, b));
-  const double reduced = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+  const double reduced = reduced_mass(point_mass(s, body, point), node_mass_at(s, b, at(s, b)));
   if (std::isinf(reduced)) return 0.0;
   return 0.25 * j.relative_stiffness * reduced / (j.initial_step * j.initial_step);
 }

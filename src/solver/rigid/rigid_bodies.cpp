@@ -175,6 +175,17 @@ double point_mass(const State& state, Index b, const Vec3& point) {
   return most > 0.0 ? 1.0 / most : std::numeric_limits<double>::infinity();
 }
 
+double node_mass_at(const State& state, Index node, const Vec3& point) {
+  const Index b = state.nodes.rigid_body[static_cast<std::size_t>(node)];
+  return b >= 0 ? point_mass(state, b, point) : state.nodes.mass[static_cast<std::size_t>(node)];
+}
+
+double reduced_mass(double a, double b) {
+  if (std::isinf(a)) return b;
+  if (std::isinf(b)) return a;
+  return a * b / (a + b);
+}
+
 void place_rigid_nodes(State& state, double step) {
   Nodes& nd = state.nodes;
   for (RigidBody& b : state.rigid_bodies) {

@@ -24,6 +24,13 @@ Index advance_rigid_bodies(State& state, const StepTimes& t);
 /// infinite for a body held in every direction.
 double point_mass(const State& state, Index b, const Vec3& point);
 
+/// The mass a force on `node` at `point` moves: its rigid body's point_mass there, else the
+/// node's own mass.
+double node_mass_at(const State& state, Index node, const Vec3& point);
+
+/// The reduced mass a b / (a + b) of two sides; an infinite side (a held body) leaves the other.
+double reduced_mass(double a, double b);
+
 /// Moves rigid-body nodes to x = c + R X (after the body positions are advanced).
 void place_rigid_nodes(State& state, double step);
 
