@@ -111,7 +111,7 @@ struct CoordinateSystem {
 struct JointStiffness {
   Id id = 0;
   Id part_a = 0, part_b = 0, system_a = 0, system_b = 0;
-  std::array<Id, 3> curves{};            ///< LCIDPH, LCIDT, LCIDPS
+  std::array<Id, 3> curves{};                   ///< LCIDPH, LCIDT, LCIDPS
   std::array<double, 3> elastic{}, friction{};  ///< ESPH EST ESPS, FMPH FMT FMPS
   core::SourceLoc loc;
 };

@@ -202,8 +202,8 @@ struct RigidBody {
   Vec3 body_force = Vec3::Zero();  ///< *LOAD_BODY on the whole mass, at the centre, this cycle
   /// *LOAD_RIGID_BODY and *DAMPING_GLOBAL at the centre, this cycle (zeroed once taken)
   Vec3 load_force = Vec3::Zero(), load_moment = Vec3::Zero();
-  Vec3 force = Vec3::Zero();       ///< resultant of element, contact and wall forces on the body
-  Vec3 moment = Vec3::Zero();      ///< about the centre
+  Vec3 force = Vec3::Zero();   ///< resultant of element, contact and wall forces on the body
+  Vec3 moment = Vec3::Zero();  ///< about the centre
   Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
   Vec3 constraint_moment = Vec3::Zero();
   double constraint_work = 0.0;
