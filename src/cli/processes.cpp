@@ -37,7 +37,7 @@ std::string process_problem(const solver::State& s, const core::Communicator& co
     return "--spg-angular-budget runs on one process only; run it without mpirun";
   if (step_log && comm.size() > 1)
     return "--step-log runs on one process only; run it without mpirun";
-  long entities = s.solids.count() + s.shells.count();
+  long entities = s.solids.count() + s.shells.count() + s.beams.count();
   for (const solver::spg::Domain& d : s.spg)
     entities += d.count();
   if (comm.size() <= std::max(entities, 1L)) return {};

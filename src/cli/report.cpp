@@ -73,6 +73,8 @@ std::string section_label(const model::ModelDatabase& m, model::Id id) {
       return fmt::format("{} SPG ITB {} KERNEL {}", id, s->spg.stabilization, s->spg.kernel_update);
     case model::SectionKind::shell:
       return fmt::format("{} shell ELFORM {}", id, s->element_formulation);
+    case model::SectionKind::beam:
+      return fmt::format("{} beam ELFORM {}", id, s->element_formulation);
   }
   return "?";
 }
@@ -122,6 +124,10 @@ ModelCounts count_model(const model::ModelDatabase& m) {
     const auto p = m.index.parts.find(e.part);
     if (p != model::IdIndex::kNone) ++c.elements_per_part[static_cast<std::size_t>(p)];
   }
+  for (const model::BeamElement& e : m.beams) {
+    const auto p = m.index.parts.find(e.part);
+    if (p != model::IdIndex::kNone) ++c.elements_per_part[static_cast<std::size_t>(p)];
+  }
   return c;
 }
 
@@ -134,6 +140,7 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
   fmt::print(out, "  nodes            {}\n", m.nodes.size());
   fmt::print(out, "  solid elements   {}\n", m.solids.size());
   fmt::print(out, "  shell elements   {}\n", m.shells.size());
+  if (!m.beams.empty()) fmt::print(out, "  beam elements    {}\n", m.beams.size());
   fmt::print(out, "  SPG particles    {}\n", counts.spg_particles);
   fmt::print(out, "  parameters       {}\n", deck.parameters.size());
   if (!m.parts.empty()) {

@@ -92,6 +92,34 @@ struct CellFields {
   }
 };
 
+// The beams' own field, written when the model has deformable beams: the resultants in the
+// beam's local axes r s t (LS-DYNA's elout order: axial force, shear s, shear t, torsion,
+// moment s, moment t); zero on the other cells.
+struct BeamFields {
+  vtkNew<vtkFloatArray> resultants;
+  BeamFields() {
+    resultants->SetName("beam_resultants");
+    resultants->SetNumberOfComponents(6);
+    const char* comps[6] = {"N", "Vs", "Vt", "T", "Ms", "Mt"};
+    for (int k = 0; k < 6; ++k)
+      resultants->SetComponentName(k, comps[k]);
+  }
+  void add(const float (&r)[6]) { resultants->InsertNextTypedTuple(r); }
+  void add(const solver::State& s, const solver::BeamBlock& block, solver::Index e) {
+    const std::array<double, 6> v = solver::beam_resultants(s, block, e);
+    const float r[6] = {static_cast<float>(v[0]), static_cast<float>(v[1]),
+                        static_cast<float>(v[2]), static_cast<float>(v[3]),
+                        static_cast<float>(v[4]), static_cast<float>(v[5])};
+    add(r);
+  }
+  void pad_to(vtkIdType cells) {
+    const float zero[6] = {};
+    while (resultants->GetNumberOfTuples() < cells)
+      add(zero);
+  }
+  void attach(vtkUnstructuredGrid* g) { g->GetCellData()->AddArray(resultants); }
+};
+
 // The shells' own fields, written when the model has deformable shells: the stress of the top
 // and bottom layers (global axes; `stress` holds the mean of the layers) and the thickness;
 // zero on the other cells.
@@ -208,6 +236,23 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
                        sh.thickness[i]);
     }
   }
+  // Deformable beams (lines) with their resultants.
+  const solver::Beams& bm = s.beams;
+  const bool beams = bm.count() > 0;
+  BeamFields beam_fields;
+  if (beams) beam_fields.pad_to(grid->GetNumberOfCells());
+  for (const solver::BeamBlock& block : bm.blocks) {
+    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
+    for (Index e = block.begin; e < block.end; ++e) {
+      const auto i = static_cast<std::size_t>(e);
+      if (bm.eroded[i]) continue;
+      const vtkIdType line[2] = {bm.nodes[i][0], bm.nodes[i][1]};
+      grid->InsertNextCell(VTK_LINE, 2, line);
+      const solver::ElementResult r = solver::beam_result(s, block, e);
+      fields.add(r, -(r.stress[0] + r.stress[1] + r.stress[2]) / 3.0, bm.temperature[i], part_id);
+      beam_fields.add(s, block, e);
+    }
+  }
   // SPG particles: one vertex cell each, with the fields of their integration point.
   for (const solver::spg::Domain& d : s.spg) {
     const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(d.part)].id);
@@ -246,6 +291,10 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   if (shells) {
     shell_fields.pad_to(grid->GetNumberOfCells());
     shell_fields.attach(grid);
+  }
+  if (beams) {
+    beam_fields.pad_to(grid->GetNumberOfCells());
+    beam_fields.attach(grid);
   }
 
   // VTK writes into memory and the file is written here, every write checked: VTK's own file

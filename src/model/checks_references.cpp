@@ -34,6 +34,7 @@ void build_indices(ModelDatabase& m, core::Diagnostics& diags) {
   index_one(ix.nodes, m.nodes, "node", diags);
   index_one(ix.solids, m.solids, "solid element", diags);
   index_one(ix.shells, m.shells, "shell element", diags);
+  index_one(ix.beams, m.beams, "beam element", diags);
   index_one(ix.parts, m.parts, "part", diags);
   index_one(ix.sections, m.sections, "section", diags);
   index_one(ix.materials, m.materials, "material", diags);
@@ -121,6 +122,18 @@ void check_elements(const std::vector<Element>& elements, const ModelDatabase& m
   if (shown > 20) {
     diags.error(elements.front().loc, "{} {}s refer to undefined parts in all (first 20 shown)",
                 shown, what);
+  }
+}
+
+// Beams: part and nodes as the other elements, plus the orientation node.
+void check_beams(const ModelDatabase& m, core::Diagnostics& diags) {
+  check_elements(m.beams, m, "beam element", diags);
+  int shown = 0;
+  for (const BeamElement& e : m.beams) {
+    if (e.orientation_node != 0 && !m.index.nodes.contains(e.orientation_node) && shown++ < 20) {
+      diags.error(e.loc, "beam element {} refers to orientation node {} (N3), which is not defined",
+                  e.id, e.orientation_node);
+    }
   }
 }
 
@@ -359,6 +372,7 @@ void check_references(const ModelDatabase& m, core::Diagnostics& diags) {
   check_parts(m, diags);
   if (!m.solids.empty()) check_elements(m.solids, m, "solid element", diags);
   if (!m.shells.empty()) check_elements(m.shells, m, "shell element", diags);
+  if (!m.beams.empty()) check_beams(m, diags);
   check_sets(m, diags);
   check_conditions(m, diags);
   check_joins(m, diags);

@@ -11,7 +11,7 @@ namespace mcdyna::model::detail {
 namespace {
 
 struct PartUse {
-  std::size_t solids = 0, shells = 0;
+  std::size_t solids = 0, shells = 0, beams = 0;
 };
 
 // Output intervals far below ENDTIM ask for more outputs than any run can use; they are written
@@ -110,11 +110,53 @@ void check_deformable_shell(const Part& p, const Section& s, core::Diagnostics& 
   }
 }
 
+// A deformable beam part: Hughes-Liu with a rectangular or tubular section, or the elastic
+// Belytschko-Schwer resultant beam.
+void check_deformable_beam(const Part& p, const Section& s, const Material& mat,
+                           core::Diagnostics& diags) {
+  const BeamSettings& b = s.beam;
+  const int f = s.element_formulation;
+  if (f != 1 && f != 2) {
+    diags.error(b.formulation_loc,
+                "part {}: beam ELFORM {} of section {} is not supported (1 Hughes-Liu, 2 "
+                "Belytschko-Schwer resultant)",
+                p.id, f, s.id);
+    return;
+  }
+  if (f == 2 && mat.kind != MaterialKind::elastic) {
+    diags.error(p.material_loc,
+                "part {}: the Belytschko-Schwer resultant beam (ELFORM 2) runs elastic "
+                "materials only (*MAT_ELASTIC); material {} needs the integrated ELFORM 1",
+                p.id, mat.id);
+  }
+  if (f == 1 && mat.kind == MaterialKind::johnson_cook) {
+    diags.error(p.material_loc,
+                "part {}: *MAT_JOHNSON_COOK is not available on beams (it needs an EOS); use "
+                "*MAT_PLASTIC_KINEMATIC or *MAT_PIECEWISE_LINEAR_PLASTICITY",
+                p.id);
+  }
+  if (f == 1 && b.cross_section == 2) {
+    diags.error(b.cross_section_loc,
+                "part {}: CST 2 (user integration rule, *INTEGRATION_BEAM) of section {} is not "
+                "supported (0 rectangular, 1 tubular)",
+                p.id, s.id);
+  }
+  if (f == 1 &&
+      (b.quadrature < 1.0 || b.quadrature > 5.0 || b.quadrature != std::floor(b.quadrature))) {
+    diags.error(b.quadrature_loc,
+                "part {}: QR/IRID = {:g} of section {} is not supported (1-5; user rules "
+                "*INTEGRATION_BEAM are not)",
+                p.id, b.quadrature, s.id);
+  }
+  if (f == 1 && b.nonstructural_mass < 0.0)
+    diags.error(b.formulation_loc, "part {}: NSM < 0 in section {}", p.id, s.id);
+}
+
 void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
                 core::Diagnostics& diags) {
   const Section* s = m.section(p.section);
   const Material* mat = m.material(p.material);
-  if (use.solids == 0 && use.shells == 0) {
+  if (use.solids == 0 && use.shells == 0 && use.beams == 0) {
     diags.warning(p.loc, "part {} has no elements", p.id);
   }
   if (s == nullptr || mat == nullptr) return;  // reported as dangling references
@@ -123,12 +165,26 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
     diags.error(p.section_loc, "part {} has solid elements but section {} is a shell section", p.id,
                 s->id);
   }
-  if (use.shells > 0 && s->kind != SectionKind::shell) {
+  if (use.shells > 0 && (s->kind == SectionKind::solid || s->kind == SectionKind::solid_spg)) {
     diags.error(p.section_loc, "part {} has shell elements but section {} is a solid section", p.id,
                 s->id);
   }
   if (use.shells > 0 && !rigid && s->kind == SectionKind::shell)
     check_deformable_shell(p, *s, diags);
+  if ((use.beams > 0) != (s->kind == SectionKind::beam) &&
+      use.solids + use.shells + use.beams > 0) {
+    // Solids or shells on a beam section, or beams on another section.
+    diags.error(p.section_loc, "part {} has {} elements but section {} is a {} section", p.id,
+                use.beams > 0 ? "beam" : (use.shells > 0 ? "shell" : "solid"), s->id,
+                s->kind == SectionKind::beam ? "beam" : "solid or shell");
+  }
+  if (use.beams > 0 && s->kind == SectionKind::beam) {
+    if (rigid)
+      diags.error(p.material_loc,
+                  "part {}: beams of rigid parts are not supported (deformable beams only)", p.id);
+    else
+      check_deformable_beam(p, *s, *mat, diags);
+  }
   if (s->kind == SectionKind::solid && !rigid && s->element_formulation != 1 &&
       s->element_formulation != 2) {
     diags.error(p.section_loc,
@@ -139,7 +195,7 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
   if (s->kind == SectionKind::solid_spg && rigid) {
     diags.error(p.material_loc, "part {}: an SPG section cannot be rigid", p.id);
   }
-  const bool solid = s->kind != SectionKind::shell;
+  const bool solid = s->kind == SectionKind::solid || s->kind == SectionKind::solid_spg;
   if (mat->kind == MaterialKind::johnson_cook && solid && p.eos == 0) {
     diags.error(p.eos_loc,
                 "part {}: *MAT_JOHNSON_COOK solids need an equation of state (EOSID), "
@@ -243,7 +299,7 @@ void check_solid_geometry(const ModelDatabase& m, core::Diagnostics& diags) {
 }  // namespace
 
 void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
-  check_controls(m, diags, !m.solids.empty() || !m.shells.empty());
+  check_controls(m, diags, !m.solids.empty() || !m.shells.empty() || !m.beams.empty());
   std::vector<PartUse> use(m.parts.size());
   for (const SolidElement& e : m.solids) {
     const auto i = m.index.parts.find(e.part);
@@ -252,6 +308,10 @@ void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const ShellElement& e : m.shells) {
     const auto i = m.index.parts.find(e.part);
     if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].shells;
+  }
+  for (const BeamElement& e : m.beams) {
+    const auto i = m.index.parts.find(e.part);
+    if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].beams;
   }
   for (std::size_t i = 0; i < m.parts.size(); ++i)
     check_part(m, m.parts[i], use[i], diags);

@@ -40,6 +40,20 @@ struct ShellElement {
   core::SourceLoc loc;
 };
 
+/// 2-node beam. Its local s axis lies in the plane of N1, N2 and the orientation node N3 (or the
+/// _ORIENTATION vector from N1); t = r x s.
+struct BeamElement {
+  Id id = 0;
+  Id part = 0;
+  std::array<Id, 2> nodes{};
+  Id orientation_node = 0;  ///< N3, 0 none
+  Vec3 orientation{};       ///< _ORIENTATION VX VY VZ, all 0 when not given
+  /// _THICKNESS PARM1..5: TS1 TS2 TT1 TT2 (ELFORM 1) or A ISS ITT J SA (ELFORM 2); 0 takes the
+  /// section's value.
+  std::array<double, 5> parameters{};
+  core::SourceLoc loc;
+};
+
 struct Part {
   Id id = 0;
   std::string heading;
@@ -52,7 +66,7 @@ struct Part {
   core::SourceLoc section_loc, material_loc, eos_loc, hourglass_loc;
 };
 
-enum class SectionKind { solid, solid_spg, shell };
+enum class SectionKind { solid, solid_spg, shell, beam };
 
 /// *SECTION_SOLID_SPG cards 2 and 3 (keywords.md §2.6).
 struct SpgSettings {
@@ -83,6 +97,20 @@ struct ShellSettings {
       reference_loc;
 };
 
+/// *SECTION_BEAM: the integrated cross section (ELFORM 1: TS/TT, CST) or the resultant one
+/// (ELFORM 2: A, ISS, ITT, J, SA).
+struct BeamSettings {
+  double shear_factor = 1.0;          ///< SHRF
+  double quadrature = 2.0;            ///< QR/IRID
+  int cross_section = 0;              ///< CST: 0 rectangular, 1 tubular, 2 user rule
+  double nonstructural_mass = 0.0;    ///< NSM, mass per length
+  std::array<double, 4> thickness{};  ///< TS1 TS2 TT1 TT2 (tube: outer, outer, inner, inner)
+  double reference_s = 0.0, reference_t = 0.0;                               ///< NSLOC, NTLOC
+  double area = 0.0, iss = 0.0, itt = 0.0, torsion = 0.0, shear_area = 0.0;  ///< A ISS ITT J SA
+  double product_of_inertia = 0.0;                                           ///< IST
+  core::SourceLoc formulation_loc, quadrature_loc, cross_section_loc, dimensions_loc;
+};
+
 struct Section {
   Id id = 0;
   std::string title;
@@ -90,6 +118,7 @@ struct Section {
   int element_formulation = 1;  ///< ELFORM (47 = SPG)
   SpgSettings spg;
   ShellSettings shell;
+  BeamSettings beam;
   core::SourceLoc loc;
 };
 

@@ -18,6 +18,7 @@ struct ModelDatabase {
   std::vector<Node> nodes;
   std::vector<SolidElement> solids;
   std::vector<ShellElement> shells;
+  std::vector<BeamElement> beams;
   std::vector<Part> parts;
   std::vector<Section> sections;
   std::vector<Material> materials;
@@ -51,8 +52,8 @@ struct ModelDatabase {
 
   /// ID indices; valid after model::check() (which builds them).
   struct Indices {
-    IdIndex nodes, solids, shells, parts, sections, materials, equations_of_state, hourglasses,
-        curves, vectors, boxes, node_sets, part_sets, segment_sets;
+    IdIndex nodes, solids, shells, beams, parts, sections, materials, equations_of_state,
+        hourglasses, curves, vectors, boxes, node_sets, part_sets, segment_sets;
   } index;
 
   template <typename Entity>

@@ -87,6 +87,7 @@ Blocks make_blocks(State& s);
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
 void add_hexahedra_blocks(State& s, Blocks& blocks);         // fe/hexahedra_block.cpp
 void add_shell_blocks(State& s, Blocks& blocks);             // fe/shell_block.cpp
+void add_beam_blocks(State& s, Blocks& blocks);              // fe/beam_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
 void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp

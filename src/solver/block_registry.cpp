@@ -8,10 +8,19 @@ namespace mcdyna::solver {
 Blocks make_blocks(State& s) {
   using AddBlocks = void (*)(State&, Blocks&);
   constexpr AddBlocks kFormulations[] = {
-      add_hexahedra_blocks,    add_shell_blocks,          add_spg_blocks,
-      add_joint_blocks,        add_rigid_body_blocks,     add_nodal_constraint_blocks,
-      add_nodal_motion_blocks, add_rigid_wall_blocks,     add_body_load_blocks,
-      add_applied_load_blocks, add_global_damping_blocks, add_contact_blocks,
+      add_hexahedra_blocks,
+      add_shell_blocks,
+      add_beam_blocks,
+      add_spg_blocks,
+      add_joint_blocks,
+      add_rigid_body_blocks,
+      add_nodal_constraint_blocks,
+      add_nodal_motion_blocks,
+      add_rigid_wall_blocks,
+      add_body_load_blocks,
+      add_applied_load_blocks,
+      add_global_damping_blocks,
+      add_contact_blocks,
   };
   Blocks blocks;
   for (const AddBlocks add : kFormulations)

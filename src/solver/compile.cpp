@@ -243,6 +243,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::check_accuracy_control(m, diags);
   detail::compile_nodes_and_solids(m, *s, diags);
   detail::compile_shells(m, *s, diags);
+  detail::compile_beams(m, *s, diags);
   detail::compile_rigid_bodies(m, *s, diags);
   // The conditions below read the elements' and rigid bodies' arrays whole: stop at a broken one.
   if (diags.error_count() > errors) return nullptr;

@@ -40,9 +40,26 @@ void build_node_corners(Index nodes, const std::vector<std::array<Index, N>>& co
     }
 }
 
+/// The indices of `elements` by the position of their part in m.parts (elements of undefined
+/// parts left out), in element order.
+template <class Element>
+std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabase& m,
+                                                       const std::vector<Element>& elements) {
+  std::vector<std::vector<std::size_t>> by_part(m.parts.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto p = m.index.parts.find(elements[e].part);
+    if (p != model::IdIndex::kNone) by_part[static_cast<std::size_t>(p)].push_back(e);
+  }
+  return by_part;
+}
+
 // The pieces of compile(), in the order it runs them (compile_*.cpp).
 void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_beams(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+/// Adds `inertia` (per node) to the nodes' rotary inertia, giving the nodes rotations (angular
+/// velocity, moment) the first time.
+void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia);
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// *CONSTRAINED_JOINT_*: after the rigid bodies (a joint node's mass may be a body's).
 void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);

@@ -168,11 +168,7 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
               control.thickness_parts);
   }
   Nodes& nd = s.nodes;
-  std::vector<std::vector<std::size_t>> by_part(m.parts.size());
-  for (std::size_t e = 0; e < m.shells.size(); ++e) {
-    const auto p = m.index.parts.find(m.shells[e].part);
-    if (p != model::IdIndex::kNone) by_part[static_cast<std::size_t>(p)].push_back(e);
-  }
+  const std::vector<std::vector<std::size_t>> by_part = elements_by_part(m, m.shells);
   Shells& sh = s.shells;
   std::vector<double> rotary(static_cast<std::size_t>(nd.count()), 0.0);
   Index points = 0;
@@ -281,10 +277,7 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
   sh.points.plastic_strain.assign(static_cast<std::size_t>(points), 0.0);
   sh.points.damage.assign(static_cast<std::size_t>(points), 0.0);
   if (n == 0) return;
-  nd.rotary_inertia = std::move(rotary);
-  nd.angular_velocity.setZero(3, nd.count());
-  nd.previous_angular_velocity.setZero(3, nd.count());
-  nd.moment.setZero(3, nd.count());
+  add_rotary_inertia(nd, rotary);
   build_node_corners(
       nd.count(), sh.nodes, [&](std::size_t e) { return sh.nodes[e][3] == sh.nodes[e][2] ? 3 : 4; },
       nd.shell_corner_offsets, nd.shell_corners);

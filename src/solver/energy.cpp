@@ -24,6 +24,9 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
     (sh.eroded[i] ? e.eroded_internal : e.internal) += sh.internal_energy[i];
     (sh.eroded[i] ? e.eroded_hourglass : e.hourglass) += sh.hourglass_energy[i];
   }
+  const Beams& bm = s.beams;
+  for (std::size_t i = 0; i < bm.ids.size(); ++i)
+    (bm.eroded[i] ? e.eroded_internal : e.internal) += bm.internal_energy[i];
   for (const RigidWallState& w : s.rigid_walls)
     e.stonewall += w.energy;
   for (const contact::Interface& c : s.contacts)
@@ -110,6 +113,19 @@ std::vector<PartSummary> part_summaries(const State& s, const Eigen::Matrix3Xd& 
     const double inertia = sh.corner_inertia[e];
     for (int c = 0; c < (triangle ? 3 : 4); ++c) {
       const Index n = sh.nodes[e][static_cast<std::size_t>(c)];
+      ps.kinetic +=
+          0.5 * m * previous.col(n).dot(velocity.col(n)) +
+          0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
+      ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+    }
+  }
+  const Beams& bm = s.beams;
+  for (std::size_t e = 0; e < bm.ids.size(); ++e) {
+    PartSummary& ps = out[static_cast<std::size_t>(bm.part[e])];
+    (bm.eroded[e] ? ps.eroded_internal : ps.internal) += bm.internal_energy[e];
+    ps.added_mass += bm.added_mass[e];
+    const double m = 0.5 * bm.mass[e], inertia = bm.end_inertia[e];
+    for (const Index n : bm.nodes[e]) {
       ps.kinetic +=
           0.5 * m * previous.col(n).dot(velocity.col(n)) +
           0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));

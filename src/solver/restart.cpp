@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 24> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 26> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -34,12 +34,15 @@ constexpr std::array<std::size_t, 24> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(JointState),
                                                       sizeof(PointLoadState),
                                                       sizeof(PressureLoadState),
-                                                      sizeof(JointStiffnessState)};
+                                                      sizeof(JointStiffnessState),
+                                                      sizeof(Beams),
+                                                      sizeof(BeamBlock)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 24>{368, 512, 72,  80,  488,  248,  80, 576,
-                                                          72,  112, 128, 240, 2304, 1992, 96, 112,
-                                                          352, 352, 144, 192, 136,  56,   64, 304},
+static_assert(kDumpedSizes == std::array<std::size_t, 26>{416, 512, 72,  80,  488, 248,  80,
+                                                          576, 72,  112, 128, 240, 2976, 1992,
+                                                          96,  112, 352, 352, 144, 192,  136,
+                                                          56,  64,  304, 624, 432},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -49,7 +52,7 @@ void fields(Ar& ar, Nodes& n) {
   ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.force, n.mass, n.added_mass,
      n.rigid_body, n.smoothed, n.corner_offsets, n.corners);
   ar(n.angular_velocity, n.previous_angular_velocity, n.moment, n.rotary_inertia,
-     n.shell_corner_offsets, n.shell_corners);
+     n.shell_corner_offsets, n.shell_corners, n.beam_end_offsets, n.beam_ends);
 }
 
 template <class Ar>
@@ -97,6 +100,20 @@ void fields(Ar& ar, Shells& s) {
   ar(s.ids, s.nodes, s.part, s.initial_thickness, s.thickness, s.initial_area, s.mass,
      s.corner_inertia, s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force,
      s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
+}
+
+template <class Ar>
+void fields(Ar& ar, BeamBlock& b) {
+  ar(b.part, b.begin, b.end, b.point_begin, b.points, b.formulation, b.material, b.shear_factor,
+     b.constrained_iterations, b.point_s, b.point_t, b.point_weight);
+}
+
+template <class Ar>
+void fields(Ar& ar, Beams& b) {
+  ar(b.ids, b.nodes, b.part, b.s_axis, b.initial_length, b.mass, b.area, b.inertia_s, b.inertia_t,
+     b.torsion, b.shear_area, b.width_s, b.width_t, b.end_inertia, b.flexural_step, b.resultants,
+     b.temperature, b.internal_energy, b.time_step, b.added_mass, b.eroded, b.corner_force,
+     b.blocks, b.points);
 }
 
 template <class Ar>
@@ -275,7 +292,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 0:
       return ar(s.nodes);
     case 1:
-      return ar(s.solids, s.shells);
+      return ar(s.solids, s.shells, s.beams);
     case 2:
       return ar(s.spg);
     case 3:

@@ -534,4 +534,35 @@ TEST_CASE("--spg-angular-budget reports the scheme's own angular momentum (Taylo
   CHECK(std::stod(r.output.substr(at + key.size())) > 1.0);  // the scale: 7.394 t mm^2/s
 }
 
+TEST_CASE("beams are line cells of the d3plot series with their resultants") {
+  // A two-element Hughes-Liu cantilever (t, mm, s units) under a tip force of 1 N along z: the
+  // clamped element's axial force is ~0, its shear along t carries the 1 N, and its moment about
+  // s is the force times the arm to its point (75 mm, the mid-point of the first element), once
+  // the tip has settled under *DAMPING_GLOBAL.
+  TempDir dir;
+  const auto deck = dir.write(
+      "beam.k",
+      "*KEYWORD\n*CONTROL_TERMINATION\n0.2\n*DATABASE_BINARY_D3PLOT\n0.1\n"
+      "*PART\nbeam\n1,1,1\n*SECTION_BEAM\n1,1,0.8333333,2\n10.0,10.0,10.0,10.0\n"
+      "*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n*NODE\n1,0,0,0\n2,50,0,0\n3,100,0,0\n"
+      "*ELEMENT_BEAM\n1,1,1,2,0\n2,1,2,3,0\n*BOUNDARY_SPC_NODE\n1,0,1,1,1,1,1,1\n"
+      "*LOAD_NODE_POINT\n3,3,1,1.0\n*DEFINE_CURVE\n1\n0,1\n1,1\n*DAMPING_GLOBAL\n0,3000\n*END\n");
+  const Run r = run_mcdyna("run -q " + deck.string() + " --out " + (dir.path() / "out").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const auto states = collection(dir.path() / "out" / "d3plot.pvd");
+  REQUIRE(states.size() == 3);
+  const auto grid = read_vtu(dir.path() / "out" / states.back());
+  REQUIRE(grid->GetNumberOfCells() == 2);
+  CHECK(grid->GetCellType(0) == VTK_LINE);
+  vtkDataArray* res = grid->GetCellData()->GetArray("beam_resultants");
+  REQUIRE(res != nullptr);
+  REQUIRE(res->GetNumberOfComponents() == 6);
+  const double* root = res->GetTuple6(0);
+  MESSAGE("root element: N ", root[0], ", Vt ", root[2], ", Ms ", root[4]);
+  CHECK(std::abs(root[0]) < 1e-3);
+  CHECK(std::abs(root[2]) == doctest::Approx(1.0).epsilon(1e-3));
+  CHECK(std::abs(root[4]) == doctest::Approx(75.0).epsilon(1e-3));
+  CHECK(grid->GetCellData()->GetArray("stress") != nullptr);
+}
+
 }  // namespace mcdyna::test

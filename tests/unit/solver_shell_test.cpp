@@ -94,18 +94,9 @@ TEST_CASE("shells: results are bitwise identical for 1 and 2 threads") {
   for (const int elform : {2, 16}) {
     CAPTURE(elform);
     const std::string deck = cantilever(40, 20, 2e-4, "", elform);
-    std::array<Eigen::Matrix3Xd, 2> positions, spins;
-    for (int threads : {1, 2}) {
-      omp_set_num_threads(threads);
-      test::TempDir dir;
-      test::Simulation sim = test::prepare(dir, deck);
-      test::run(sim);
-      positions[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.position;
-      spins[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.angular_velocity;
-    }
-    omp_set_num_threads(omp_get_num_procs());
-    CHECK(positions[0] == positions[1]);
-    CHECK(spins[0] == spins[1]);
+    const test::ThreadRuns r = test::run_on_one_and_two_threads(deck);
+    CHECK(r.positions[0] == r.positions[1]);
+    CHECK(r.spins[0] == r.spins[1]);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -94,6 +95,25 @@ struct EnergyDrift {
     return h;
   }
 };
+
+/// A deck run on 1 and on 2 threads: the nodes' final positions and angular velocities of each
+/// (the bitwise-identity checks of the shells and beams).
+struct ThreadRuns {
+  std::array<Eigen::Matrix3Xd, 2> positions, spins;
+};
+inline ThreadRuns run_on_one_and_two_threads(const std::string& deck) {
+  ThreadRuns r;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    TempDir dir;
+    Simulation sim = prepare(dir, deck);
+    run(sim);
+    r.positions[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.position;
+    r.spins[static_cast<std::size_t>(threads - 1)] = sim.state->nodes.angular_velocity;
+  }
+  omp_set_num_threads(omp_get_num_procs());
+  return r;
+}
 
 /// The largest node speed of the model.
 inline double largest_speed(const solver::State& s) {

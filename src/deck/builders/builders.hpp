@@ -27,11 +27,13 @@ void title(KeywordRecord& r, model::ModelDatabase& m);
 void node(KeywordRecord& r, model::ModelDatabase& m);
 void element_solid(KeywordRecord& r, model::ModelDatabase& m);
 void element_shell(KeywordRecord& r, model::ModelDatabase& m);
+void element_beam(KeywordRecord& r, model::ModelDatabase& m);
 void part(KeywordRecord& r, model::ModelDatabase& m);
 // sections.cpp
 void section_solid(KeywordRecord& r, model::ModelDatabase& m);
 void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m);
 void section_shell(KeywordRecord& r, model::ModelDatabase& m);
+void section_beam(KeywordRecord& r, model::ModelDatabase& m);
 // materials.cpp
 void mat_elastic(KeywordRecord& r, model::ModelDatabase& m);
 void mat_plastic_kinematic(KeywordRecord& r, model::ModelDatabase& m);

@@ -88,6 +88,45 @@ void element_shell(KeywordRecord& r, model::ModelDatabase& m) {
   }
 }
 
+void element_beam(KeywordRecord& r, model::ModelDatabase& m) {
+  Group g;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    model::BeamElement b;
+    b.id = row.integer("EID");
+    b.part = row.integer("PID");
+    b.loc = row.loc();
+    b.nodes = {row.integer("N1"), row.integer("N2")};
+    b.orientation_node = row.integer("N3");
+    for (const char* f : {"RT1", "RR1", "RT2", "RR2"}) {
+      if (row.integer(f) != 0) {
+        r.diags().error(row.loc(f),
+                        "{}: element {}: {} = {}: beam end releases are not supported (the "
+                        "ends are rigidly joined to their nodes)",
+                        r.display_name(), b.id, f, row.integer(f));
+      }
+    }
+    if (b.nodes[0] == b.nodes[1]) {
+      r.diags().error(row.loc("N2"), "{}: element {} has N1 = N2 = {} (zero length)",
+                      r.display_name(), b.id, b.nodes[0]);
+    }
+    if (const Row* t = g.card("thickness")) {
+      const int p1 = t->index("PARM1");
+      for (int k = 0; k < 5; ++k)
+        b.parameters[static_cast<std::size_t>(k)] = t->real(p1 + k);
+    }
+    if (const Row* o = g.card("orientation")) {
+      b.orientation = {o->real("VX"), o->real("VY"), o->real("VZ")};
+      if (b.orientation_node != 0) {
+        r.diags().error(row.loc("N3"),
+                        "{}: element {} gives both N3 and an orientation vector; give one",
+                        r.display_name(), b.id);
+      }
+    }
+    m.beams.push_back(b);
+  }
+}
+
 void part(KeywordRecord& r, model::ModelDatabase& m) {
   Group g;
   while (r.next_group(g)) {

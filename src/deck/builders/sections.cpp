@@ -1,4 +1,4 @@
-// *SECTION_SOLID, *SECTION_SOLID_SPG, *SECTION_SHELL.
+// *SECTION_SOLID, *SECTION_SOLID_SPG, *SECTION_SHELL, *SECTION_BEAM.
 #include <cmath>
 
 #include "deck/builders/builders.hpp"
@@ -105,6 +105,54 @@ void section_shell(KeywordRecord& r, model::ModelDatabase& m) {
   s.shell.thickness_loc = c2.loc("T1");
   s.shell.reference_loc = c2.loc("NLOC");
   s.loc = c1.loc();
+  m.sections.push_back(std::move(s));
+}
+
+void section_beam(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  model::Section s;
+  s.id = c1.integer("SECID");
+  s.title = title_of(r);
+  s.kind = model::SectionKind::beam;
+  s.element_formulation = static_cast<int>(c1.integer("ELFORM"));
+  s.loc = c1.loc();
+  model::BeamSettings& b = s.beam;
+  b.shear_factor = c1.real("SHRF");
+  b.quadrature = c1.real("QR");
+  b.cross_section = static_cast<int>(c1.integer("CST"));
+  b.nonstructural_mass = c1.real("NSM");
+  b.formulation_loc = c1.loc("ELFORM");
+  b.quadrature_loc = c1.loc("QR");
+  b.cross_section_loc = c1.loc("CST");
+  if (const Row& c = r.card("integrated"); c.present()) {
+    const int ts1 = c.index("TS1");
+    for (int k = 0; k < 4; ++k)
+      b.thickness[static_cast<std::size_t>(k)] = c.real(ts1 + k);
+    b.reference_s = c.real("NSLOC");
+    b.reference_t = c.real("NTLOC");
+    b.dimensions_loc = c.loc();
+    if (b.reference_s != 0.0 || b.reference_t != 0.0) {
+      r.diags().error(c.loc("NSLOC"),
+                      "*SECTION_BEAM {}: NSLOC / NTLOC (reference line off the centroid) are not "
+                      "supported",
+                      s.id);
+    }
+  }
+  if (const Row& c = r.card("resultant"); c.present()) {
+    b.area = c.real("A");
+    b.iss = c.real("ISS");
+    b.itt = c.real("ITT");
+    b.torsion = c.real("J");
+    b.shear_area = c.real("SA");
+    b.product_of_inertia = c.real("IST");
+    b.dimensions_loc = c.loc();
+    if (b.product_of_inertia != 0.0) {
+      r.diags().error(c.loc("IST"),
+                      "*SECTION_BEAM {}: IST (product of inertia, unsymmetric section) is not "
+                      "supported",
+                      s.id);
+    }
+  }
   m.sections.push_back(std::move(s));
 }
 

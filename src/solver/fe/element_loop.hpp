@@ -134,6 +134,34 @@ void element_loop(Index begin, Index end, ElementArrays a, double scale_factor, 
   }
 }
 
+/// Sums per-corner forces and moments (6 values: force then moment, global axes) into the nodal
+/// forces and moments over a node -> (element * N + corner) list (CSR `offsets`, `corners`), in
+/// its fixed order: the shells' and the beams' gather.
+inline void gather_forces_and_moments(State& state, const std::vector<double>& values,
+                                      const std::vector<Index>& offsets,
+                                      const std::vector<Index>& corners) {
+  Nodes& nd = state.nodes;
+  const double* cf = values.data();
+  const std::size_t count = state.ownership.moved_count(nd.count());
+#pragma omp parallel for schedule(static) if (count > 4 * kParallelMinimum)
+  for (std::size_t k = 0; k < count; ++k) {
+    const Index n = state.ownership.moved_node(k);
+    const auto nn = static_cast<std::size_t>(n);
+    const Index begin = offsets[nn], end = offsets[nn + 1];
+    if (begin == end) continue;
+    double sum[6] = {};
+    for (Index j = begin; j < end; ++j) {
+      const double* c = cf + 6 * static_cast<std::size_t>(corners[static_cast<std::size_t>(j)]);
+      for (int d = 0; d < 6; ++d)
+        sum[d] += c[d];
+    }
+    for (int d = 0; d < 3; ++d) {
+      nd.force(d, n) += sum[d];
+      nd.moment(d, n) += sum[3 + d];
+    }
+  }
+}
+
 }  // namespace fe
 
 }  // namespace mcdyna::solver

@@ -1,4 +1,4 @@
-// What an element index names: solids first, then shells (block.hpp).
+// What an element index names: solids first, then shells, then beams (block.hpp).
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
@@ -9,6 +9,10 @@ ElementRef element_ref(const State& s, Index e) {
   if (e < s.solids.count()) {
     const auto i = static_cast<std::size_t>(e);
     return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
+  }
+  if (e >= s.solids.count() + s.shells.count()) {
+    const auto i = static_cast<std::size_t>(e - s.solids.count() - s.shells.count());
+    return {"beam", s.beams.ids[i], s.parts[static_cast<std::size_t>(s.beams.part[i])].id};
   }
   const auto i = static_cast<std::size_t>(e - s.solids.count());
   return {"shell", s.shells.ids[i], s.parts[static_cast<std::size_t>(s.shells.part[i])].id};

@@ -28,7 +28,6 @@ double poisson_ratio(const Material& m) {
 namespace {
 
 using fe::ElementOutcome;
-using fe::kParallelMinimum;
 using namespace shell_kernel;
 
 Rates rates(const Frame& f, const double gamma[4], const Vec3 v[4], const Vec3 w[4]) {
@@ -183,27 +182,8 @@ ElementPassResult shell_element_pass(State& state, const ShellPassInput& input) 
 }
 
 void gather_shell_forces(State& state) {
-  Nodes& nd = state.nodes;
-  const double* cf = state.shells.corner_force.data();
-  const std::size_t count = state.ownership.moved_count(nd.count());
-#pragma omp parallel for schedule(static) if (count > 4 * kParallelMinimum)
-  for (std::size_t k = 0; k < count; ++k) {
-    const Index n = state.ownership.moved_node(k);
-    const auto nn = static_cast<std::size_t>(n);
-    const Index begin = nd.shell_corner_offsets[nn], end = nd.shell_corner_offsets[nn + 1];
-    if (begin == end) continue;
-    double sum[6] = {};
-    for (Index j = begin; j < end; ++j) {
-      const double* c =
-          cf + 6 * static_cast<std::size_t>(nd.shell_corners[static_cast<std::size_t>(j)]);
-      for (int d = 0; d < 6; ++d)
-        sum[d] += c[d];
-    }
-    for (int d = 0; d < 3; ++d) {
-      nd.force(d, n) += sum[d];
-      nd.moment(d, n) += sum[3 + d];
-    }
-  }
+  fe::gather_forces_and_moments(state, state.shells.corner_force, state.nodes.shell_corner_offsets,
+                                state.nodes.shell_corners);
 }
 
 }  // namespace mcdyna::solver

@@ -55,54 +55,81 @@ PointResult trial_update(const Material& m, const Model& model, const double* ep
 
 }  // namespace detail
 
-/// Updates a point under the in-plane and transverse-shear strain increments `eps` (xx yy - xy
-/// yz zx, tensor shears; eps[2] is ignored) over dt, keeping sigma_zz = 0.
+/// Which stress components a structural point holds at zero, and so which strains are unknown.
+enum class StressConstraint {
+  /// Shell layer: sigma_zz = 0 with the thickness strain eps_zz unknown.
+  plane_stress,
+  /// Beam fibre: sigma_yy = sigma_zz = sigma_yz = 0 with eps_yy = eps_zz unknown (one unknown:
+  /// under an isotropic model the two lateral stresses stay equal when their strains are, and
+  /// sigma_yz stays 0 when eps_yz is).
+  uniaxial,
+};
+
+/// Updates a point under the strain increments `eps_in` over dt (tensor shears) keeping the
+/// components `constraint` names at zero; the unknown strains in eps_in are ignored. Elastic:
+/// exact in one step. Plastic: the 3D update of the material's own model with the unknown strain
+/// found by secant iteration (sigma is monotone in it).
 template <class Model>
-PlaneStressResult plane_stress_update(const Material& m, const Model& model, const double* eps_in,
-                                      double dt, double temperature, int max_iterations,
-                                      ShellPointState st) {
+PlaneStressResult constrained_update(const Material& m, const Model& model, const double* eps_in,
+                                     double dt, double temperature, int max_iterations,
+                                     ShellPointState st, StressConstraint constraint) {
   PlaneStressResult r;
   const double g = m.shear_modulus, k = m.bulk_modulus;
   const double lambda = k - 2.0 * g / 3.0;
-  double eps[6] = {eps_in[0], eps_in[1], 0.0, eps_in[3], eps_in[4], eps_in[5]};
-  // The elastic thickness strain: sigma_zz stays 0 under lambda tr + 2 G e_zz.
-  eps[2] = -lambda / (lambda + 2.0 * g) * (eps[0] + eps[1]);
+  const bool beam = constraint == StressConstraint::uniaxial;
+  double eps[6] = {eps_in[0], beam ? 0.0 : eps_in[1], 0.0,
+                   eps_in[3], beam ? 0.0 : eps_in[4], eps_in[5]};
+  // The free strain(s) and the slope of the held stress in them: shell, lambda tr + 2 G e_zz;
+  // beam, lambda tr + 2 G e_yy with e_yy = e_zz.
+  const double tangent = beam ? 2.0 * lambda + 2.0 * g : lambda + 2.0 * g;
+  auto set_free = [&](double x) {
+    eps[2] = x;
+    if (beam) eps[1] = x;
+  };
+  set_free(-lambda / tangent * (eps[0] + (beam ? 0.0 : eps[1])));  // the elastic answer
+  auto clear_held = [&] {
+    st.stress[2] = 0.0;
+    if (beam) st.stress[1] = st.stress[4] = 0.0;
+  };
   if constexpr (std::is_same_v<Model, ElasticModel>) {
     const double tr = eps[0] + eps[1] + eps[2];
     for (int i = 0; i < 6; ++i)
       st.stress[i] += 2.0 * g * eps[i] + (i < 3 ? lambda * tr : 0.0);
-    st.stress[2] = 0.0;
+    clear_held();
     r.thickness_strain = eps[2];
     return r;
   } else {
     double out[6], alpha[6], ep = 0.0, dmg = 0.0;
-    auto sigma_zz = [&](double ezz, PointResult& pr) {
-      eps[2] = ezz;
+    const int held = beam ? 1 : 2;  // sigma_yy (= sigma_zz) or sigma_zz
+    auto held_stress = [&](double x, PointResult& pr) {
+      set_free(x);
       const double mean = (eps[0] + eps[1] + eps[2]) / 3.0;
       const double dev[6] = {eps[0] - mean, eps[1] - mean, eps[2] - mean, eps[3], eps[4], eps[5]};
       const double rate = dt > 0.0 ? std::sqrt(2.0 / 3.0 * contract(dev, dev)) / dt : 0.0;
       pr = detail::trial_update(m, model, eps, rate, temperature, st.stress, st.back_stress,
                                 st.plastic_strain, st.damage, out, alpha, ep, dmg);
-      return out[2];
+      return out[held];
     };
     PointResult pr;
     double x0 = eps[2];
-    double f0 = sigma_zz(x0, pr);
-    const double scale = std::max({std::abs(out[0]), std::abs(out[1]), std::abs(out[3]), 1e-300});
+    double f0 = held_stress(x0, pr);
+    // The stresses the point carries: in-plane (shell) or axial and transverse shear (beam).
+    const double scale =
+        std::max({std::abs(out[0]), std::abs(out[beam ? 5 : 1]), std::abs(out[3]), 1e-300});
     if (std::abs(f0) > 1e-10 * scale) {
-      // Second guess from the elastic tangent, then secant steps (sigma_zz is monotone in e_zz).
-      double x1 = x0 - f0 / (lambda + 2.0 * g);
-      double f1 = sigma_zz(x1, pr);
+      // Second guess from the elastic tangent, then secant steps.
+      double x1 = x0 - f0 / tangent;
+      double f1 = held_stress(x1, pr);
       for (int it = 0; it < max_iterations && std::abs(f1) > 1e-10 * scale && f1 != f0; ++it) {
         const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
         x0 = x1;
         f0 = f1;
         x1 = x2;
-        f1 = sigma_zz(x1, pr);
+        f1 = held_stress(x1, pr);
       }
     }
     std::copy(out, out + 6, st.stress);
-    st.stress[2] = 0.0;
+    clear_held();
     if (st.back_stress) std::copy(alpha, alpha + 6, st.back_stress);
     r.plastic_increment = ep - st.plastic_strain;
     st.plastic_strain = ep;
@@ -111,6 +138,16 @@ PlaneStressResult plane_stress_update(const Material& m, const Model& model, con
     r.failed = pr.failed;
     return r;
   }
+}
+
+/// Updates a shell layer point under the in-plane and transverse-shear strain increments `eps`
+/// (xx yy - xy yz zx, tensor shears; eps[2] is ignored) over dt, keeping sigma_zz = 0.
+template <class Model>
+PlaneStressResult plane_stress_update(const Material& m, const Model& model, const double* eps_in,
+                                      double dt, double temperature, int max_iterations,
+                                      ShellPointState st) {
+  return constrained_update(m, model, eps_in, dt, temperature, max_iterations, st,
+                            StressConstraint::plane_stress);
 }
 
 }  // namespace mcdyna::solver

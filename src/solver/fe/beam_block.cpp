@@ -1,0 +1,52 @@
+// The deformable beams as one block of the time loop: the element pass and the gather of the
+// end forces and moments.
+#include "solver/block.hpp"
+#include "solver/fe/added_mass.hpp"
+#include "solver/fe/beam_elements.hpp"
+
+namespace mcdyna::solver {
+
+namespace {
+
+class BeamsBlock final : public Block {
+ public:
+  explicit BeamsBlock(long count) : count_(count) {}
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
+  [[nodiscard]] long elements() const override { return count_; }
+
+  // Every process computes the beams whole, as the shells (shell_block.cpp).
+  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
+    for (const auto& conn : s.beams.nodes)
+      for (const Index n : conn)
+        nodes[static_cast<std::size_t>(n)] = 1;
+  }
+
+  void forces(State& s, ForceReport& r) override {
+    const ElementPassResult e =
+        beam_element_pass(s, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
+    gather_beam_forces(s);
+    if (e.mass_changed) refresh_added_mass(s);
+    // Elements are numbered solids first, then shells, then beams (element_ref.hpp).
+    const Index offset = s.solids.count() + s.shells.count();
+    if (e.critical_step < r.critical_step) {
+      r.critical_step = e.critical_step;
+      r.controlling_element = offset + e.controlling;
+      r.controlling_particle = -1;
+    }
+    if (e.inverted >= 0)
+      r.fail("zero length in " + element_name(s, offset + e.inverted), true);
+    else if (e.non_finite >= 0)
+      r.fail("non-finite stress or step in " + element_name(s, offset + e.non_finite), false);
+  }
+
+ private:
+  long count_;
+};
+
+}  // namespace
+
+void add_beam_blocks(State& s, Blocks& blocks) {
+  if (s.beams.count() > 0) blocks.push_back(std::make_unique<BeamsBlock>(s.beams.count()));
+}
+
+}  // namespace mcdyna::solver
