@@ -240,6 +240,15 @@ void check_joins(const ModelDatabase& m, core::Diagnostics& diags) {
     for (const Id curve : j.curves)
       need(ix.curves, curve, j.loc, "curve", user, diags, true);
   }
+  for (const SpotWeld& w : m.spot_welds) {
+    if (w.node_set != 0) {
+      need(ix.node_sets, w.node_set, w.loc, "node set", "*CONSTRAINED_GENERALIZED_WELD_SPOT",
+           diags);
+    } else {
+      for (const Id n : w.nodes)
+        need(ix.nodes, n, w.loc, "node", "*CONSTRAINED_SPOTWELD", diags);
+    }
+  }
   for (const NodalRigidBody& b : m.nodal_rigid_bodies) {
     need(ix.node_sets, b.node_set, b.set_loc, "node set", "*CONSTRAINED_NODAL_RIGID_BODY", diags);
     if (ix.parts.find(b.id) != IdIndex::kNone) {

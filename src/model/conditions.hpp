@@ -62,6 +62,19 @@ struct NodalRigidBody {
   core::SourceLoc loc, set_loc;
 };
 
+/// *CONSTRAINED_SPOTWELD (a node pair) and *CONSTRAINED_GENERALIZED_WELD_SPOT (a node set): a
+/// massless rigid link, released when (max(f_n, 0) / SN)^N + (|f_s| / SS)^M >= 1, at TF, or
+/// when an element at its nodes reaches the plastic strain EP.
+struct SpotWeld {
+  Id id = 0;                  ///< WID, 0 = numbered in deck order
+  std::array<Id, 2> nodes{};  ///< _SPOTWELD N1 N2
+  Id node_set = 0;            ///< _GENERALIZED_WELD_SPOT NSID (then `nodes` is unused)
+  double normal_force = 0.0, shear_force = 0.0;           ///< SN, SS (0: no term)
+  double normal_exponent = 0.0, shear_exponent = 0.0;     ///< N, M
+  double failure_time = 1.0e20, plastic_strain = 1.0e20;  ///< TF, EP
+  core::SourceLoc loc;
+};
+
 enum class JointKind { spherical, revolute, cylindrical, translational };
 
 /// *CONSTRAINED_JOINT_SPHERICAL / REVOLUTE / CYLINDRICAL / TRANSLATIONAL: node pairs (N1, N2),

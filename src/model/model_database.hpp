@@ -43,6 +43,7 @@ struct ModelDatabase {
   std::vector<ExtraNodes> extra_nodes;
   std::vector<RigidMerge> rigid_merges;
   std::vector<NodalRigidBody> nodal_rigid_bodies;
+  std::vector<SpotWeld> spot_welds;
   std::vector<Joint> joints;
   std::vector<JointStiffness> joint_stiffnesses;
   std::vector<CoordinateSystem> coordinate_systems;

@@ -1,5 +1,6 @@
 // MAT_020 parts -> rigid bodies: mass, centre and inertia from their elements (Gauss quadrature)
 // plus the lumped mass deformable elements put on their nodes; CMO/CON1/CON2 constraints.
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
@@ -139,13 +140,72 @@ std::vector<std::ptrdiff_t> rigid_leads(const model::ModelDatabase& m, core::Dia
   return lead;
 }
 
+// A weld's number in messages: its WID, else its place among the welds (from 1).
+model::Id weld_number(const model::ModelDatabase& m, std::size_t k) {
+  return m.spot_welds[k].id != 0 ? m.spot_welds[k].id : static_cast<model::Id>(k + 1);
+}
+
+// A weld's nodes in deck order: N1 N2, or the set's as listed.
+std::vector<Index> weld_nodes(const model::ModelDatabase& m, const model::SpotWeld& w) {
+  std::vector<Index> out;
+  auto add = [&](model::Id id) {
+    const auto i = m.index.nodes.find(id);
+    if (i != model::IdIndex::kNone &&
+        std::find(out.begin(), out.end(), static_cast<Index>(i)) == out.end())
+      out.push_back(static_cast<Index>(i));
+  };
+  if (w.node_set == 0) {
+    for (const model::Id n : w.nodes)
+      add(n);
+  } else if (const model::NodeSet* set = m.node_set(w.node_set)) {
+    for (const model::Id n : set->nodes)
+      add(n);
+  }
+  return out;
+}
+
+// The weld's failure state: two nodes apart (their line is its normal).
+void compile_weld(const model::ModelDatabase& m, const model::SpotWeld& w, Index body, State& s,
+                  core::Diagnostics& d) {
+  const std::vector<Index> nodes = weld_nodes(m, w);
+  const auto k = static_cast<std::size_t>(&w - m.spot_welds.data());
+  if (nodes.size() != 2) {
+    d.error(w.loc,
+            "spot weld {} has {} distinct node(s); mcdyna's spot welds join two (welds of three "
+            "or more sheets are not supported)",
+            weld_number(m, k), nodes.size());
+    return;
+  }
+  const double gap = (s.nodes.initial.col(nodes[1]) - s.nodes.initial.col(nodes[0])).norm();
+  if (!(gap > 0.0)) {
+    d.error(w.loc,
+            "spot weld {} joins coincident nodes {} and {}: its normal is undefined (a local "
+            "system CID is not supported); give nodes apart, one on each sheet",
+            weld_number(m, k), s.nodes.ids[static_cast<std::size_t>(nodes[0])],
+            s.nodes.ids[static_cast<std::size_t>(nodes[1])]);
+    return;
+  }
+  WeldState ws;
+  ws.id = weld_number(m, k);
+  ws.body = body;
+  ws.first = nodes[0];
+  ws.last = nodes[1];
+  ws.normal_force = w.normal_force;
+  ws.shear_force = w.shear_force;
+  ws.normal_exponent = w.normal_exponent;
+  ws.shear_exponent = w.shear_exponent;
+  ws.failure_time = w.failure_time;
+  ws.plastic_strain = w.plastic_strain;
+  s.welds.push_back(ws);
+}
+
 }  // namespace
 
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id) {
   const auto p = m.index.parts.find(id);
   if (p != model::IdIndex::kNone) return s.parts[static_cast<std::size_t>(p)].rigid_body;
   for (std::size_t b = 0; b < s.rigid_bodies.size(); ++b)
-    if (s.rigid_bodies[b].part_id == id) return static_cast<Index>(b);
+    if (id != 0 && s.rigid_bodies[b].part_id == id) return static_cast<Index>(b);  // welds: 0
   return -1;
 }
 
@@ -178,7 +238,21 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
   const std::size_t part_bodies = s.rigid_bodies.size();
   for (const model::NodalRigidBody& nrb : m.nodal_rigid_bodies)
     new_body(nrb.id);
+  const std::size_t weld_bodies = s.rigid_bodies.size();
+  for (std::size_t k = 0; k < m.spot_welds.size(); ++k)
+    new_body(0);  // a weld's body answers to no part ID
   if (s.rigid_bodies.empty()) return;
+  // Where a body comes from, for its messages: a nodal rigid body's or a weld's card, else none.
+  auto body_loc = [&](std::size_t b) {
+    if (b >= weld_bodies) return m.spot_welds[b - weld_bodies].loc;
+    if (b >= part_bodies) return m.nodal_rigid_bodies[b - part_bodies].loc;
+    return core::SourceLoc{};
+  };
+  auto body_name = [&](std::size_t b) {
+    if (b >= weld_bodies) return fmt::format("spot weld {}", weld_number(m, b - weld_bodies));
+    return fmt::format("{} {}", b >= part_bodies ? "nodal rigid body" : "rigid part",
+                       s.rigid_bodies[b].part_id);
+  };
   auto node_of = [&](model::Id id) { return static_cast<Index>(m.index.nodes.find(id)); };
   auto claim = [&](Index body, Index node, const core::SourceLoc& loc) {
     Index& owner = s.nodes.rigid_body[static_cast<std::size_t>(node)];
@@ -237,6 +311,9 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
   for (std::size_t k = 0; k < m.nodal_rigid_bodies.size(); ++k)
     for (const Index n : node_set_nodes(m, m.nodal_rigid_bodies[k].node_set))
       claim(static_cast<Index>(part_bodies + k), n, m.nodal_rigid_bodies[k].loc);
+  for (std::size_t k = 0; k < m.spot_welds.size(); ++k)
+    for (const Index n : weld_nodes(m, m.spot_welds[k]))
+      claim(static_cast<Index>(weld_bodies + k), n, m.spot_welds[k].loc);
   for (std::size_t b = 0; b < s.rigid_bodies.size(); ++b) {
     RigidBody& body = s.rigid_bodies[b];
     MassMoments& mm = moments[b];
@@ -252,8 +329,7 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
     }
     const bool nodal = b >= part_bodies;
     if (!(mm.mass > 0.0)) {
-      d.error(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
-              "{} {} has no mass ({})", nodal ? "nodal rigid body" : "rigid part", body.part_id,
+      d.error(body_loc(b), "{} has no mass ({})", body_name(b),
               nodal ? "its nodes belong to no element" : "density or thickness zero");
       continue;
     }
@@ -268,23 +344,25 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
     Eigen::SelfAdjointEigenSolver<Mat3> principal(body.inertia0);
     Vec3 principal_moments = principal.eigenvalues();  // ascending
     if (!(principal_moments[2] > 0.0)) {
-      d.error(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
-              "rigid body {} is a single point: it has no rotary inertia", body.part_id);
+      d.error(body_loc(b), "{} is a single point: it has no rotary inertia", body_name(b));
       continue;
     }
     if (principal_moments[0] <= 1e-9 * principal_moments[2]) {
       principal_moments[0] = principal_moments[1];
       body.inertia0 = principal.eigenvectors() * principal_moments.asDiagonal() *
                       principal.eigenvectors().transpose();
-      d.note(nodal ? m.nodal_rigid_bodies[b - part_bodies].loc : core::SourceLoc{},
-             "rigid body {}: its nodes lie on a line; the inertia about that line is taken as "
-             "{:.4g}, the other principal moment",
-             body.part_id, principal_moments[0]);
+      if (b < weld_bodies)  // a weld of two nodes always does: nothing to tell
+        d.note(body_loc(b),
+               "{}: its nodes lie on a line; the inertia about that line is taken as {:.4g}, "
+               "the other principal moment",
+               body_name(b), principal_moments[0]);
     }
     body.offsets.resize(3, static_cast<Index>(body.nodes.size()));
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       body.offsets.col(static_cast<Index>(k)) = s.nodes.initial.col(body.nodes[k]) - body.center;
   }
+  for (std::size_t k = 0; k < m.spot_welds.size(); ++k)
+    compile_weld(m, m.spot_welds[k], static_cast<Index>(weld_bodies + k), s, d);
 }
 
 }  // namespace mcdyna::solver::detail

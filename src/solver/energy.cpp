@@ -40,6 +40,7 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
   e.external_work += s.load_work;
   e.damping += s.damping_work;
   for (const RigidBody& b : s.rigid_bodies) {
+    if (b.released) continue;  // a failed weld: its nodes count as nodes
     e.kinetic += rigid_kinetic(b);
     e.external_work += b.constraint_work;
     e.momentum += b.mass * 0.5 * (b.velocity + b.previous_velocity);

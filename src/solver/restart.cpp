@@ -11,7 +11,7 @@
 namespace mcdyna::solver {
 
 // The dumped structs' sizes: written into every dump (dump_layout) and pinned here.
-constexpr std::array<std::size_t, 26> kDumpedSizes = {sizeof(Nodes),
+constexpr std::array<std::size_t, 27> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(Solids),
                                                       sizeof(SolidBlock),
                                                       sizeof(MaterialPoints),
@@ -36,13 +36,14 @@ constexpr std::array<std::size_t, 26> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(PressureLoadState),
                                                       sizeof(JointStiffnessState),
                                                       sizeof(Beams),
-                                                      sizeof(BeamBlock)};
+                                                      sizeof(BeamBlock),
+                                                      sizeof(WeldState)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 26>{416, 512, 72,  80,  488, 248,  80,
-                                                          576, 72,  112, 128, 240, 2976, 1992,
+static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 248,  80,
+                                                          584, 72,  112, 128, 240, 3000, 1992,
                                                           96,  112, 352, 352, 144, 192,  136,
-                                                          56,  64,  304, 624, 432},
+                                                          56,  64,  304, 624, 432, 120},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
 #endif
@@ -126,7 +127,13 @@ void fields(Ar& ar, RigidBody& b) {
   ar(b.part_id, b.mass, b.center, b.initial_center, b.inertia0, b.rotation, b.velocity,
      b.angular_momentum, b.omega, b.previous_velocity, b.previous_omega, b.nodes, b.offsets,
      b.fixed_translation, b.fixed_rotation, b.motions, b.body_force, b.load_force, b.load_moment,
-     b.force, b.moment, b.constraint_force, b.constraint_moment, b.constraint_work);
+     b.force, b.moment, b.constraint_force, b.constraint_moment, b.constraint_work, b.released);
+}
+
+template <class Ar>
+void fields(Ar& ar, WeldState& w) {
+  ar(w.id, w.body, w.first, w.last, w.normal_force, w.shear_force, w.normal_exponent,
+     w.shear_exponent, w.failure_time, w.plastic_strain, w.force, w.normal, w.shear, w.failed_at);
 }
 
 template <class Ar>
@@ -296,7 +303,7 @@ void state_section(Ar& ar, State& s, std::size_t section) {
     case 2:
       return ar(s.spg);
     case 3:
-      return ar(s.rigid_bodies, s.joints, s.joint_stiffnesses);
+      return ar(s.rigid_bodies, s.joints, s.joint_stiffnesses, s.welds);
     case 4:
       return ar(s.constraints, s.nodal_motions, s.point_loads, s.pressure_loads, s.load_work,
                 s.damping_work);

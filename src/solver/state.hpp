@@ -259,6 +259,8 @@ struct RigidBody {
   Vec3 constraint_force = Vec3::Zero();  ///< supplied by constraints / prescribed motion
   Vec3 constraint_moment = Vec3::Zero();
   double constraint_work = 0.0;
+  /// A failed spot weld's body: its nodes are free again (nodes cleared), it moves no more.
+  bool released = false;
   [[nodiscard]] Mat3 inertia() const { return rotation * inertia0 * rotation.transpose(); }
 };
 
@@ -292,6 +294,21 @@ struct JointStiffnessState {
   Vec3 angles = Vec3::Zero();           ///< last cycle's
   Vec3 moment = Vec3::Zero();           ///< last cycle's, on B about A's axes
   double work = 0.0;                    ///< done on the springs (stored and dissipated)
+};
+
+/// A spot weld (*CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT): the rigid body of
+/// its two nodes until it fails (rigid/welds.cpp).
+struct WeldState {
+  model::Id id = 0;  ///< WID or its number among the welds
+  Index body = -1;
+  Index first = -1, last = -1;                         ///< N1 and N2: the normal runs N1 -> N2
+  double normal_force = 0.0, shear_force = 0.0;        ///< SN, SS (0: no term)
+  double normal_exponent = 0.0, shear_exponent = 0.0;  ///< N, M
+  double failure_time = 1.0e20, plastic_strain = 1.0e20;
+  Vec3 force = Vec3::Zero();  ///< the weld's force on N2 this cycle
+  double normal = 0.0;        ///< its tension along the normal (compression negative)
+  double shear = 0.0;         ///< its magnitude across the normal
+  double failed_at = -1.0;    ///< time it failed, -1 while it holds
 };
 
 /// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
@@ -405,6 +422,7 @@ struct State {
   std::vector<PartInfo> parts;
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<WeldState> welds;
   std::vector<JointState> joints;
   std::vector<JointStiffnessState> joint_stiffnesses;
   DisplayCells rigid_cells;

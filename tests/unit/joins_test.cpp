@@ -267,3 +267,81 @@ TEST_CASE("a generalized joint stiffness turns elastically, then slips at its fr
     }
   }
 }
+
+namespace {
+
+// Lap joint (t, mm, s units): plate A, a 10 x 10 mm steel shell 10 mm thick (stiff: its corner
+// barely turns, so the weld stays along z) at z = 0 held at three corners, and plate B, 1 mm
+// thick, at z = 1, joined by a spot weld from A's free corner (node 1) to
+// the corner above it (node 5), node 5 pulled by 1e4 t N along `direction` (B's other corners
+// free, so B's plate only rides along: pulling its far corners instead would spin it about
+// the weld, which holds no drilling).
+// `weld` is the weld's keyword and card (nodes 1 and 5 or set 9). Returns when it failed (-1:
+// it held), node 5's height at the end, and the weld's normal and shear force when it failed.
+struct LapJoint {
+  double failed = -1.0, height = 0.0, normal = 0.0, shear = 0.0;
+};
+LapJoint pulled_lap_joint(const std::string& weld, const std::string& direction,
+                          double end = 0.02) {
+  test::TempDir dir;
+  test::Simulation sim = test::prepare(
+      dir, "*KEYWORD\n*CONTROL_TERMINATION\n" + std::to_string(end) +
+               "\n*PART\nA\n1,2,1\n*PART\nB\n2,1,1\n"
+               "*SECTION_SHELL\n1,2\n1.0,1.0,1.0,1.0\n*SECTION_SHELL\n2,2\n10.0,10.0,10.0,10.0\n"
+               "*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n"
+               "*NODE\n1,0,0,0\n2,10,0,0\n3,10,10,0\n4,0,10,0\n5,0,0,1\n6,10,0,1\n7,10,10,1\n"
+               "8,0,10,1\n"
+               "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,2,5,6,7,8\n"
+               "*SET_NODE_LIST\n1\n2,3,4\n*BOUNDARY_SPC_SET\n1,0,1,1,1,1,1,1\n"
+               "*SET_NODE_LIST\n2\n5,6,7,8\n*SET_NODE_LIST\n9\n1,5\n" +
+               direction + "*DEFINE_CURVE\n1\n0,0\n1,10000\n" + weld + "*END\n");
+  REQUIRE(sim.state->welds.size() == 1);
+  // Stopped 20 cycles after the weld lets go: then B's corner, pulled alone by the load on its
+  // few grams, is no longer what the test is about.
+  solver::RunHooks hooks;
+  long cycles_since = 0;
+  hooks.stop_requested = [&] {
+    return sim.state->welds[0].failed_at >= 0.0 && ++cycles_since > 20;
+  };
+  test::run(sim, hooks);
+  REQUIRE((sim.result.reason == solver::StopReason::end_time || cycles_since > 20));
+  const solver::WeldState& w = sim.state->welds[0];
+  return {w.failed_at, sim.state->nodes.position(2, 4), w.normal, w.shear};  // node 5: index 4
+}
+
+}  // namespace
+
+TEST_CASE("spot welds fail at the force their criterion names") {
+  // B pulled along z (normal), x (shear) or both (1e4 t N along each); SN 100 N, SS 200 N,
+  // N = M = 2. Slow against the joint's own vibration (its period is about 0.1 ms), the weld
+  // carries the whole pull F = 1e4 t: it fails when F = SN (10 ms), F = SS (20 ms), or
+  // (F / SN)^2 + (F / SS)^2 = 1, F = 89.44 N (8.944 ms).
+  const std::string spotweld = "*CONSTRAINED_SPOTWELD\n1,5,100.0,200.0,2.0,2.0\n";
+  const std::string normal = "*LOAD_NODE_POINT\n5,3,1,1.0\n";
+  const std::string shear = "*LOAD_NODE_POINT\n5,1,1,1.0\n";
+  struct Case {
+    std::string what;
+    std::string load;
+    double expected;
+  };
+  const double combined = 1.0 / std::sqrt(1e-4 + 2.5e-5) / 1e4;
+  for (const Case& c : {Case{"normal", normal, 0.01}, Case{"shear", shear, 0.02},
+                        Case{"both", normal + shear, combined}}) {
+    const LapJoint j = pulled_lap_joint(spotweld, c.load, c.expected + 3e-4);
+    MESSAGE(c.what, ": failed at ", j.failed * 1e3, " ms against ", c.expected * 1e3, " ms (",
+            100.0 * (j.failed / c.expected - 1.0), " %), normal ", j.normal, " N, shear ", j.shear,
+            " N");
+    CHECK(std::abs(j.failed / c.expected - 1.0) < 0.01);
+  }
+  // The same weld as a *CONSTRAINED_GENERALIZED_WELD_SPOT of set 9, and with a failure time.
+  const LapJoint generalized = pulled_lap_joint(
+      "*CONSTRAINED_GENERALIZED_WELD_SPOT\n9\n1e20,1e20,100.0,200.0,2.0,2.0\n", normal, 0.0103);
+  CHECK(std::abs(generalized.failed / 0.01 - 1.0) < 0.01);
+  CHECK(generalized.height > 1.05);  // B leaves once free: it was held at z = 1 before
+  const LapJoint timed =
+      pulled_lap_joint("*CONSTRAINED_SPOTWELD\n1,5,0,0,0,0,5e-3\n", normal, 5.3e-3);
+  CHECK(std::abs(timed.failed / 5e-3 - 1.0) < 0.01);
+  // Pushed together it holds (only tension counts in the normal term).
+  const LapJoint pressed = pulled_lap_joint(spotweld, "*LOAD_NODE_POINT\n5,3,1,-1.0\n", 0.012);
+  CHECK(pressed.failed < 0.0);
+}

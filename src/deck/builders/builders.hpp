@@ -71,6 +71,7 @@ void rigidwall_planar(KeywordRecord& r, model::ModelDatabase& m);
 // constrained.cpp
 void constrained_extra_nodes(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_rigid_bodies(KeywordRecord& r, model::ModelDatabase& m);
+void constrained_spotweld(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_nodal_rigid_body(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_joint(KeywordRecord& r, model::ModelDatabase& m);
 void joint_stiffness_generalized(KeywordRecord& r, model::ModelDatabase& m);

@@ -1,5 +1,7 @@
 // *CONSTRAINED_EXTRA_NODES_NODE / _SET, *CONSTRAINED_RIGID_BODIES, *CONSTRAINED_NODAL_RIGID_BODY:
 // what joins nodes and parts into rigid bodies (compile_rigid.cpp builds the bodies).
+#include <utility>
+
 #include "deck/builders/builders.hpp"
 
 namespace mcdyna::deck::builders {
@@ -29,6 +31,43 @@ void constrained_nodal_rigid_body(KeywordRecord& r, model::ModelDatabase& m) {
     const Row& row = g.rows.front();
     m.nodal_rigid_bodies.push_back(
         {row.integer("PID"), row.integer("NSID"), title, row.loc(), row.loc("NSID")});
+  }
+}
+
+// *CONSTRAINED_SPOTWELD (one pair per line) and *CONSTRAINED_GENERALIZED_WELD_SPOT (a set).
+void constrained_spotweld(KeywordRecord& r, model::ModelDatabase& m) {
+  const bool generalized = r.schema().name == "CONSTRAINED_GENERALIZED_WELD_SPOT";
+  Group g;
+  while (r.next_group(g)) {
+    const Row* head = g.card("1");
+    if (head == nullptr) break;
+    model::SpotWeld w;
+    if (const Row* id = g.card("id")) w.id = id->integer("WID");
+    w.loc = head->loc();
+    const Row* fail = generalized ? g.card("2") : head;
+    if (generalized) {
+      w.node_set = head->integer("NSID");
+      if (fail == nullptr) {
+        r.diags().error(head->loc(), "{}: card 2 (the failure card) is missing", r.display_name());
+        break;
+      }
+    } else {
+      w.nodes = {head->integer("N1"), head->integer("N2")};
+    }
+    w.normal_force = fail->real("SN");
+    w.shear_force = fail->real("SS");
+    w.normal_exponent = fail->real("N");
+    w.shear_exponent = fail->real("M");
+    w.failure_time = fail->real(generalized ? "TFAIL" : "TF");
+    w.plastic_strain = fail->real(generalized ? "EPSF" : "EP");
+    for (const auto& [force, exponent] : {std::pair{"SN", "N"}, std::pair{"SS", "M"}}) {
+      if (fail->real(force) > 0.0 && !(fail->real(exponent) > 0.0)) {
+        r.diags().error(fail->loc(exponent),
+                        "{}: {} = {:g} needs its exponent {} > 0 (LS-DYNA documents no default)",
+                        r.display_name(), force, fail->real(force), exponent);
+      }
+    }
+    m.spot_welds.push_back(w);
   }
 }
 

@@ -60,6 +60,8 @@ const std::vector<BuilderEntry>& builder_table() {
       {"CONSTRAINED_EXTRA_NODES_NODE", constrained_extra_nodes},
       {"CONSTRAINED_EXTRA_NODES_SET", constrained_extra_nodes},
       {"CONSTRAINED_RIGID_BODIES", constrained_rigid_bodies},
+      {"CONSTRAINED_SPOTWELD", constrained_spotweld},
+      {"CONSTRAINED_GENERALIZED_WELD_SPOT", constrained_spotweld},
       {"CONSTRAINED_NODAL_RIGID_BODY", constrained_nodal_rigid_body},
       {"CONSTRAINED_JOINT_SPHERICAL", constrained_joint},
       {"CONSTRAINED_JOINT_REVOLUTE", constrained_joint},

@@ -36,6 +36,7 @@ void apply_global_damping(State& s, const GlobalDampingState& g) {
     if (s.ownership.owns_node(n)) taken.add(-power * s.step);
   }
   for (RigidBody& b : s.rigid_bodies) {
+    if (b.released) continue;
     const Vec3 w = b.inertia() * b.omega;
     for (int a = 0; a < 3; ++a) {
       const double f = -g.scale[static_cast<std::size_t>(a)] * d * b.mass * b.velocity[a];

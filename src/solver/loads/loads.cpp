@@ -17,7 +17,7 @@ void apply_body_loads(State& state) {
     if (nd.rigid_body[static_cast<std::size_t>(n)] < 0)
       nd.force.col(n) -= nd.mass[static_cast<std::size_t>(n)] * a;
   for (RigidBody& b : state.rigid_bodies)
-    b.body_force = -b.mass * a;
+    if (!b.released) b.body_force = -b.mass * a;
 }
 
 namespace {

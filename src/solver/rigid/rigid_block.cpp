@@ -5,6 +5,7 @@
 // of its owned nodes' forces over the processes, and places all of the body's nodes.
 #include "solver/block.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
+#include "solver/rigid/welds.hpp"
 
 namespace mcdyna::solver {
 
@@ -14,7 +15,9 @@ class RigidBodiesBlock final : public Block {
  public:
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
   Index advance_velocities(State& s, const StepTimes& t) override {
-    return advance_rigid_bodies(s, t);
+    const Index bad = advance_rigid_bodies(s, t);
+    if (!s.welds.empty()) check_welds(s, t);
+    return bad;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
 };

@@ -104,6 +104,7 @@ Index advance_rigid_bodies(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
   Index bad = -1;  // the first node of the first body whose motion is not finite
   for (RigidBody& b : state.rigid_bodies) {
+    if (b.released) continue;
     auto [force, moment] = node_resultants(state, b);
     force += b.body_force + b.load_force;  // at the centre of mass: no moment
     moment += b.load_moment;
@@ -189,6 +190,7 @@ double reduced_mass(double a, double b) {
 void place_rigid_nodes(State& state, double step) {
   Nodes& nd = state.nodes;
   for (RigidBody& b : state.rigid_bodies) {
+    if (b.released) continue;
     b.center += step * b.velocity;
     b.rotation = rotation_increment(b.omega, step) * b.rotation;
     for (std::size_t k = 0; k < b.nodes.size(); ++k)

@@ -1,0 +1,105 @@
+#include "solver/rigid/welds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/exact_sum.hpp"
+
+namespace mcdyna::solver {
+
+namespace {
+
+// Mean plastic strain over the points of shell `e` and of solid `e`.
+double shell_plastic_strain(const State& s, Index e) {
+  for (const ShellBlock& b : s.shells.blocks) {
+    if (e < b.begin || e >= b.end) continue;
+    const int n = b.in_plane_points * b.layers;
+    const Index first = b.point_begin + n * (e - b.begin);
+    double sum = 0.0;
+    for (Index p = first; p < first + n; ++p)
+      sum += s.shells.points.plastic_strain[static_cast<std::size_t>(p)];
+    return sum / n;
+  }
+  return 0.0;
+}
+
+double solid_plastic_strain(const State& s, Index e) {
+  for (const SolidBlock& b : s.solids.blocks) {
+    if (e < b.begin || e >= b.end) continue;
+    const int n = b.points_per_element;
+    const Index first = b.point_begin + n * (e - b.begin);
+    double sum = 0.0;
+    for (Index p = first; p < first + n; ++p)
+      sum += s.solids.points.plastic_strain[static_cast<std::size_t>(p)];
+    return sum / n;
+  }
+  return 0.0;
+}
+
+// The largest mean plastic strain of the deformable shells and solids at the node.
+double node_plastic_strain(const State& s, Index node) {
+  const Nodes& nd = s.nodes;
+  const auto n = static_cast<std::size_t>(node);
+  double most = 0.0;
+  if (!nd.shell_corner_offsets.empty())
+    for (Index k = nd.shell_corner_offsets[n]; k < nd.shell_corner_offsets[n + 1]; ++k)
+      most = std::max(most,
+                      shell_plastic_strain(s, nd.shell_corners[static_cast<std::size_t>(k)] / 4));
+  for (Index k = nd.corner_offsets[n]; k < nd.corner_offsets[n + 1]; ++k)
+    most = std::max(most, solid_plastic_strain(s, nd.corners[static_cast<std::size_t>(k)] / 8));
+  return most;
+}
+
+// The force the weld's body puts on node `n` this cycle, summed over the processes (the force
+// is whole on the node's owner only), so every process decides the same.
+Vec3 constraint_force(const State& s, Index n) {
+  const Nodes& nd = s.nodes;
+  std::vector<core::ExactSum> sums(3);
+  if (s.ownership.owns_node(n)) {
+    const Vec3 f =
+        nd.mass[static_cast<std::size_t>(n)] * Vec3(nd.acceleration.col(n)) - Vec3(nd.force.col(n));
+    for (int k = 0; k < 3; ++k)
+      sums[static_cast<std::size_t>(k)].add(f[k]);
+  }
+  const std::vector<double> total = s.ownership.comm.sum(sums);
+  return {total[0], total[1], total[2]};
+}
+
+// Frees the weld's nodes: from now on they move by their own forces, with the velocity the
+// body gave them this cycle.
+void release(State& s, WeldState& w, double time) {
+  RigidBody& b = s.rigid_bodies[static_cast<std::size_t>(w.body)];
+  for (const Index n : b.nodes)
+    s.nodes.rigid_body[static_cast<std::size_t>(n)] = -1;
+  b.nodes.clear();
+  b.offsets.resize(3, 0);
+  b.released = true;
+  w.failed_at = time;
+}
+
+}  // namespace
+
+void check_welds(State& state, const StepTimes& t) {
+  for (WeldState& w : state.welds) {
+    if (w.failed_at >= 0.0) continue;
+    const Vec3 f = constraint_force(state, w.last);
+    const Vec3 axis =
+        (Vec3(state.nodes.position.col(w.last)) - Vec3(state.nodes.position.col(w.first)))
+            .normalized();
+    w.force = f;
+    w.normal = -f.dot(axis);  // pulling N2 back toward N1: the weld in tension
+    w.shear = (f - f.dot(axis) * axis).norm();
+    double criterion = 0.0;
+    if (w.normal_force > 0.0)
+      criterion += std::pow(std::max(w.normal, 0.0) / w.normal_force, w.normal_exponent);
+    if (w.shear_force > 0.0) criterion += std::pow(w.shear / w.shear_force, w.shear_exponent);
+    const bool by_force = (w.normal_force > 0.0 || w.shear_force > 0.0) && criterion >= 1.0;
+    const bool by_strain = w.plastic_strain < 1.0e20 &&
+                           std::max(node_plastic_strain(state, w.first),
+                                    node_plastic_strain(state, w.last)) >= w.plastic_strain;
+    if (by_force || t.time >= w.failure_time || by_strain) release(state, w, t.time);
+  }
+}
+
+}  // namespace mcdyna::solver
