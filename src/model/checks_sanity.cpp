@@ -161,6 +161,29 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
   }
   if (s == nullptr || mat == nullptr) return;  // reported as dangling references
   const bool rigid = mat->kind == MaterialKind::rigid;
+  if (p.inertia && !rigid) {
+    diags.error(p.inertia->loc,
+                "*PART_INERTIA {}: the mass and inertia it gives are for rigid parts; material "
+                "{} is not *MAT_RIGID",
+                p.id, mat->id);
+  }
+  if (p.inertia) {
+    const auto& t = p.inertia->tensor;
+    // Positive definite: the leading minors of [[xx xy xz] [xy yy yz] [xz yz zz]].
+    const double m2 = t[0] * t[3] - t[1] * t[1];
+    const double m3 = t[0] * (t[3] * t[5] - t[4] * t[4]) - t[1] * (t[1] * t[5] - t[4] * t[2]) +
+                      t[2] * (t[1] * t[4] - t[3] * t[2]);
+    if (!(t[0] > 0.0 && m2 > 0.0 && m3 > 0.0)) {
+      diags.error(p.inertia->loc,
+                  "*PART_INERTIA {}: the inertia tensor (IXX {:g} IXY {:g} IXZ {:g} IYY {:g} IYZ "
+                  "{:g} IZZ {:g}) is not positive definite",
+                  p.id, t[0], t[1], t[2], t[3], t[4], t[5]);
+    }
+    if (p.inertia->node != 0 && !m.index.nodes.contains(p.inertia->node)) {
+      diags.error(p.inertia->loc, "*PART_INERTIA {}: NODEID {} is not a defined node", p.id,
+                  p.inertia->node);
+    }
+  }
   if (use.solids > 0 && s->kind == SectionKind::shell) {
     diags.error(p.section_loc, "part {} has solid elements but section {} is a shell section", p.id,
                 s->id);

@@ -54,6 +54,16 @@ struct BeamElement {
   core::SourceLoc loc;
 };
 
+/// *PART_INERTIA: a rigid part's mass properties and initial velocity, given.
+struct PartInertia {
+  Vec3 centre{};                        ///< XC YC ZC
+  Id node = 0;                          ///< NODEID: the centre is this node (0: `centre`)
+  double mass = 0.0;                    ///< TM
+  std::array<double, 6> tensor{};       ///< IXX IXY IXZ IYY IYZ IZZ, global axes
+  Vec3 velocity{}, angular_velocity{};  ///< VTX..VTZ, VRX..VRZ
+  core::SourceLoc loc;
+};
+
 struct Part {
   Id id = 0;
   std::string heading;
@@ -62,6 +72,7 @@ struct Part {
   Id eos = 0;        ///< 0: none
   Id hourglass = 0;  ///< 0: *CONTROL_HOURGLASS defaults
   Id thermal_material = 0;
+  std::optional<PartInertia> inertia;  ///< *PART_INERTIA
   core::SourceLoc loc;
   core::SourceLoc section_loc, material_loc, eos_loc, hourglass_loc;
 };

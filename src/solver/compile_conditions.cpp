@@ -108,6 +108,19 @@ void fit_rigid_velocity(const State& s, RigidBody& body, const std::vector<std::
   body.angular_momentum = body.inertia0 * omega;
 }
 
+// *PART_INERTIA card 4: a velocity given there (any of the six non-zero) is the body's.
+void given_velocity(const model::ModelDatabase& m, RigidBody& body) {
+  const model::Part* part = body.part_id != 0 ? m.part(body.part_id) : nullptr;
+  if (part == nullptr || !part->inertia) return;
+  const model::PartInertia& in = *part->inertia;
+  const Vec3 v(in.velocity[0], in.velocity[1], in.velocity[2]);
+  const Vec3 w(in.angular_velocity[0], in.angular_velocity[1], in.angular_velocity[2]);
+  if (v.isZero(0.0) && w.isZero(0.0)) return;
+  body.velocity = v;
+  body.omega = w;
+  body.angular_momentum = body.inertia0 * w;
+}
+
 }  // namespace
 
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
@@ -327,6 +340,7 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
   }
   for (RigidBody& body : s.rigid_bodies) {
     fit_rigid_velocity(s, body, given);
+    given_velocity(m, body);
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       v.col(body.nodes[k]) =
           body.velocity + body.omega.cross(Vec3(body.offsets.col(static_cast<Index>(k))));

@@ -140,6 +140,34 @@ std::vector<std::ptrdiff_t> rigid_leads(const model::ModelDatabase& m, core::Dia
   return lead;
 }
 
+// *PART_INERTIA: the lead part's mass, centre and inertia replace those its elements give (a
+// merged part's own card would be lost in its lead's body: refused).
+void given_inertia(const model::ModelDatabase& m, const State& s, RigidBody& body,
+                   core::Diagnostics& d) {
+  const model::Part* lead = m.part(body.part_id);
+  const Index b = rigid_body_of(m, s, body.part_id);
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    const model::Part& part = m.parts[p];
+    if (&part != lead && part.inertia && s.parts[p].rigid_body == b) {
+      d.error(part.inertia->loc,
+              "*PART_INERTIA {}: the part is merged into rigid part {} (*CONSTRAINED_RIGID_BODIES);"
+              " give the body's mass properties on the lead part",
+              part.id, body.part_id);
+    }
+  }
+  if (lead == nullptr || !lead->inertia) return;
+  const model::PartInertia& in = *lead->inertia;
+  body.mass = in.mass;
+  if (in.node != 0) {
+    body.center = s.nodes.initial.col(static_cast<Index>(m.index.nodes.find(in.node)));
+  } else {
+    body.center = Vec3(in.centre[0], in.centre[1], in.centre[2]);
+  }
+  body.initial_center = body.center;
+  const auto& t = in.tensor;
+  body.inertia0 << t[0], t[1], t[2], t[1], t[3], t[4], t[2], t[4], t[5];
+}
+
 // A weld's number in messages: its WID, else its place among the welds (from 1).
 model::Id weld_number(const model::ModelDatabase& m, std::size_t k) {
   return m.spot_welds[k].id != 0 ? m.spot_welds[k].id : static_cast<model::Id>(k + 1);
@@ -357,6 +385,7 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
                "the other principal moment",
                body_name(b), principal_moments[0]);
     }
+    if (b < part_bodies) given_inertia(m, s, body, d);
     body.offsets.resize(3, static_cast<Index>(body.nodes.size()));
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       body.offsets.col(static_cast<Index>(k)) = s.nodes.initial.col(body.nodes[k]) - body.center;

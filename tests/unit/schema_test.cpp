@@ -120,9 +120,9 @@ TEST_CASE("classification: no-effect, output-only and unsupported with reasons")
   CHECK(c.reason.find("MPP") != std::string::npos);
   CHECK(reg.classify("CONTROL_OUTPUT").support == deck::Support::no_effect);
   CHECK(reg.classify("DATABASE_ELOUT").support == deck::Support::output_only);
-  c = reg.classify("PART_INERTIA");
+  c = reg.classify("PART_AVERAGED");
   CHECK(c.support == deck::Support::unsupported);
-  CHECK(c.reason == "option _INERTIA of *PART is not supported");
+  CHECK(c.reason == "option _AVERAGED of *PART is not supported");
   c = reg.classify("CONTACT_AUTOMATIC_SINGLE_SURFACE_MORTAR_ID");
   CHECK(c.support == deck::Support::unsupported);
   CHECK(c.reason.find("_MORTAR") != std::string::npos);

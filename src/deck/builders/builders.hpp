@@ -29,6 +29,7 @@ void element_solid(KeywordRecord& r, model::ModelDatabase& m);
 void element_shell(KeywordRecord& r, model::ModelDatabase& m);
 void element_beam(KeywordRecord& r, model::ModelDatabase& m);
 void part(KeywordRecord& r, model::ModelDatabase& m);
+void part_inertia(KeywordRecord& r, model::ModelDatabase& m);
 // sections.cpp
 void section_solid(KeywordRecord& r, model::ModelDatabase& m);
 void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m);

@@ -127,31 +127,68 @@ void element_beam(KeywordRecord& r, model::ModelDatabase& m) {
   }
 }
 
+namespace {
+
+// The heading and card 1 that *PART and *PART_INERTIA share.
+model::Part part_of(KeywordRecord& r, const Row* heading, const Row& card) {
+  model::Part p;
+  p.heading = heading != nullptr ? std::string(heading->text("HEADING")) : std::string();
+  p.id = card.integer("PID");
+  p.section = card.integer("SECID");
+  p.material = card.integer("MID");
+  p.eos = card.integer("EOSID");
+  p.hourglass = card.integer("HGID");
+  p.thermal_material = card.integer("TMID");
+  p.loc = card.loc();
+  p.section_loc = card.loc("SECID");
+  p.material_loc = card.loc("MID");
+  p.eos_loc = card.loc("EOSID");
+  p.hourglass_loc = card.loc("HGID");
+  if (p.thermal_material != 0) {
+    r.diags().warning(card.loc("TMID"),
+                      "*PART {}: thermal material TMID is ignored (no thermal "
+                      "solver; Johnson-Cook heating uses CP)",
+                      p.id);
+  }
+  return p;
+}
+
+}  // namespace
+
 void part(KeywordRecord& r, model::ModelDatabase& m) {
   Group g;
   while (r.next_group(g)) {
-    const Row* heading = g.card("heading");
     const Row* card = g.card("1");
     if (card == nullptr) break;
-    model::Part p;
-    p.heading = std::string(heading->text("HEADING"));
-    p.id = card->integer("PID");
-    p.section = card->integer("SECID");
-    p.material = card->integer("MID");
-    p.eos = card->integer("EOSID");
-    p.hourglass = card->integer("HGID");
-    p.thermal_material = card->integer("TMID");
-    p.loc = card->loc();
-    p.section_loc = card->loc("SECID");
-    p.material_loc = card->loc("MID");
-    p.eos_loc = card->loc("EOSID");
-    p.hourglass_loc = card->loc("HGID");
-    if (p.thermal_material != 0) {
-      r.diags().warning(card->loc("TMID"),
-                        "*PART {}: thermal material TMID is ignored (no thermal "
-                        "solver; Johnson-Cook heating uses CP)",
-                        p.id);
+    m.parts.push_back(part_of(r, g.card("heading"), *card));
+  }
+}
+
+void part_inertia(KeywordRecord& r, model::ModelDatabase& m) {
+  Group g;
+  while (r.next_group(g)) {
+    const Row* card = g.card("1");
+    const Row* c2 = g.card("2");
+    const Row* c3 = g.card("3");
+    const Row* c4 = g.card("4");
+    if (card == nullptr) break;
+    if (c2 == nullptr || c3 == nullptr || c4 == nullptr) {
+      r.diags().error(card->loc(), "{}: part {} needs cards 2 to 4 (mass, inertia, velocity)",
+                      r.display_name(), card->integer("PID"));
+      break;
     }
+    model::Part p = part_of(r, g.card("heading"), *card);
+    model::PartInertia in;
+    in.centre = {c2->real("XC"), c2->real("YC"), c2->real("ZC")};
+    in.mass = c2->real("TM");
+    in.node = c2->integer("NODEID");
+    const int ixx = c3->index("IXX");
+    for (int k = 0; k < 6; ++k)
+      in.tensor[static_cast<std::size_t>(k)] = c3->real(ixx + k);
+    in.velocity = {c4->real("VTX"), c4->real("VTY"), c4->real("VTZ")};
+    in.angular_velocity = {c4->real("VRX"), c4->real("VRY"), c4->real("VRZ")};
+    in.loc = c2->loc();
+    p.inertia = in;
     m.parts.push_back(std::move(p));
   }
 }

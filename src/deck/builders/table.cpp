@@ -11,6 +11,7 @@ const std::vector<BuilderEntry>& builder_table() {
       {"ELEMENT_SOLID", element_solid},
       {"ELEMENT_SHELL", element_shell},
       {"ELEMENT_BEAM", element_beam},
+      {"PART_INERTIA", part_inertia},
       {"PART", part},
       {"SECTION_SOLID", section_solid},
       {"SECTION_SOLID_SPG", section_solid_spg},
