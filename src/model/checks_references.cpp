@@ -150,6 +150,21 @@ void check_sets(const ModelDatabase& m, core::Diagnostics& diags) {
     for (Id p : s.parts)
       need(m.index.parts, p, s.loc, "part", fmt::format("part set {}", s.id), diags);
   }
+  for (const ElementSet& s : m.element_sets) {
+    const char* kind = s.kind == ElementSetKind::shell   ? "shell"
+                       : s.kind == ElementSetKind::solid ? "solid"
+                                                         : "beam";
+    const IdIndex& index = s.kind == ElementSetKind::shell   ? m.index.shells
+                           : s.kind == ElementSetKind::solid ? m.index.solids
+                                                             : m.index.beams;
+    int shown = 0;
+    for (const Id e : s.elements) {
+      if (!index.contains(e) && shown++ < 10) {
+        diags.error(s.loc, "{} set {} contains {} element {}, which is not defined", kind, s.id,
+                    kind, e);
+      }
+    }
+  }
   for (const SegmentSet& s : m.segment_sets) {
     int shown = 0;
     for (const auto& seg : s.segments) {

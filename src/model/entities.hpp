@@ -262,9 +262,28 @@ struct Box {
   core::SourceLoc loc;
 };
 
+/// One rule of *SET_NODE_GENERAL: OPTION and its IDs (zeros dropped).
+struct SetRule {
+  std::string option;
+  std::vector<Id> ids;
+  core::SourceLoc loc;
+};
+
 struct NodeSet {
   Id id = 0;
   std::vector<Id> nodes;
+  /// *SET_NODE_GENERAL: the rules `nodes` was built from once the deck was read (in order).
+  std::vector<SetRule> rules;
+  core::SourceLoc loc;
+};
+
+enum class ElementSetKind { shell, solid, beam };
+
+/// *SET_SHELL_LIST / *SET_SOLID / *SET_BEAM.
+struct ElementSet {
+  Id id = 0;
+  ElementSetKind kind = ElementSetKind::shell;
+  std::vector<Id> elements;
   core::SourceLoc loc;
 };
 

@@ -31,6 +31,7 @@ struct ModelDatabase {
   std::vector<NodeSet> node_sets;
   std::vector<PartSet> part_sets;
   std::vector<SegmentSet> segment_sets;
+  std::vector<ElementSet> element_sets;
 
   std::vector<Contact> contacts;
   std::vector<SpcConstraint> spcs;

@@ -96,3 +96,27 @@ TEST_CASE("no *CONTROL_TERMINATION in a deck with elements is an error") {
   CHECK(l->has_message("the deck has no *CONTROL_TERMINATION"));
   CHECK(l->diags.error_count() == 1);
 }
+
+TEST_CASE("*SET_NODE_GENERAL applies its rules in order, element sets name their elements") {
+  // Two shells: 1 on nodes 1-4, 2 on nodes 2 5 6 3; node 7 on no element. Box 3 holds nodes 1
+  // and 4 (x <= 0.5).
+  auto l = load_text(
+      "*CONTROL_TERMINATION\n1e-3\n"
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,2,0,0\n6,2,1,0\n7,5,5,5\n"
+      "*PART\np\n1,1,1\n*SECTION_SHELL\n1\n1,1,1,1\n*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n"
+      "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,1,2,5,6,3\n*SET_SHELL_LIST\n4\n2\n"
+      "*DEFINE_BOX\n3,-0.5,0.5,-0.5,1.5,-0.5,0.5\n"
+      "*SET_NODE_GENERAL\n10\nPART,1\nDBOX,3\n"
+      "*SET_NODE_GENERAL\n11\nSET_SHELL,4\nDNODE,5\nNODE,7\n"
+      "*SET_NODE_GENERAL\n12\nALL\nDPART,1\n"
+      "*SET_NODE_GENERAL\n13\nFOO,1\n*SET_SOLID\n5\n99\n",
+      true);
+  const auto& sets = l->model().node_sets;
+  REQUIRE(sets.size() == 4);
+  CHECK(sets[0].nodes == std::vector<mcdyna::model::Id>{2, 3, 5, 6});
+  CHECK(sets[1].nodes == std::vector<mcdyna::model::Id>{2, 3, 6, 7});
+  CHECK(sets[2].nodes == std::vector<mcdyna::model::Id>{7});
+  CHECK(l->has_message("*SET_NODE_GENERAL 13: option FOO is not supported"));
+  CHECK(l->has_message("solid set 5 contains solid element 99, which is not defined"));
+  CHECK(l->diags.error_count() == 2);
+}

@@ -84,6 +84,10 @@ void define_box(KeywordRecord& r, model::ModelDatabase& m);
 void set_node_list(KeywordRecord& r, model::ModelDatabase& m);
 void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m);
 void set_part_list(KeywordRecord& r, model::ModelDatabase& m);
+void set_element_list(KeywordRecord& r, model::ModelDatabase& m);
+void set_node_general(KeywordRecord& r, model::ModelDatabase& m);
+/// After the whole deck is read: the nodes of every *SET_NODE_GENERAL from its rules.
+void resolve_general_node_sets(model::ModelDatabase& m, core::Diagnostics& d);
 void set_segment(KeywordRecord& r, model::ModelDatabase& m);
 // database.cpp
 void database_d3plot(KeywordRecord& r, model::ModelDatabase& m);

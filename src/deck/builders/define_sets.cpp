@@ -127,6 +127,39 @@ void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
   m.node_sets.push_back(std::move(s));
 }
 
+void set_element_list(KeywordRecord& r, model::ModelDatabase& m) {
+  const std::string& name = r.schema().name;
+  const Row& c1 = r.card("1");
+  model::ElementSet s;
+  s.id = c1.integer("SID");
+  s.kind = name == "SET_SOLID_LIST"  ? model::ElementSetKind::solid
+           : name == "SET_BEAM_LIST" ? model::ElementSetKind::beam
+                                     : model::ElementSetKind::shell;
+  s.loc = c1.loc();
+  read_id_lines(r, s.elements, "K1");
+  m.element_sets.push_back(std::move(s));
+}
+
+void set_node_general(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  model::NodeSet s;
+  s.id = c1.integer("SID");
+  s.loc = c1.loc();
+  Group g;
+  while (r.next_group(g)) {
+    const Row& row = g.rows.front();
+    model::SetRule rule;
+    rule.option = std::string(row.text("OPTION"));
+    rule.loc = row.loc("OPTION");
+    const int e1 = row.index("E1");
+    for (int k = 0; k < 7; ++k)
+      if (row.integer(e1 + k) != 0) rule.ids.push_back(row.integer(e1 + k));
+    s.rules.push_back(std::move(rule));
+  }
+  if (s.rules.empty()) r.diags().error(c1.loc(), "*SET_NODE_GENERAL {}: no rule card", s.id);
+  m.node_sets.push_back(std::move(s));
+}
+
 void set_part_list(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c1 = r.card("1");
   model::PartSet s;
