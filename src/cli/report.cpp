@@ -22,6 +22,8 @@ const char* material_name(model::MaterialKind k) {
       return "RIGID";
     case model::MaterialKind::piecewise_linear:
       return "PIECEWISE_LINEAR_PLASTICITY";
+    case model::MaterialKind::null_material:
+      return "NULL";
   }
   return "?";
 }

@@ -219,6 +219,21 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
     diags.error(p.material_loc, "part {}: an SPG section cannot be rigid", p.id);
   }
   const bool solid = s->kind == SectionKind::solid || s->kind == SectionKind::solid_spg;
+  if (mat->kind == MaterialKind::null_material && !solid && use.shells + use.beams > 0) {
+    diags.error(p.material_loc,
+                "part {}: *MAT_NULL shells and beams (contact-only surfaces) are not supported; "
+                "*MAT_NULL runs on solids with an equation of state",
+                p.id);
+  }
+  if (mat->kind == MaterialKind::null_material && solid && p.eos == 0) {
+    diags.error(p.eos_loc,
+                "part {}: *MAT_NULL solids need an equation of state (EOSID): it gives all of "
+                "their stress",
+                p.id);
+  }
+  if (mat->kind == MaterialKind::null_material && s->kind == SectionKind::solid_spg) {
+    diags.error(p.section_loc, "part {}: *MAT_NULL is not available on SPG sections", p.id);
+  }
   if (mat->kind == MaterialKind::johnson_cook && solid && p.eos == 0) {
     diags.error(p.eos_loc,
                 "part {}: *MAT_JOHNSON_COOK solids need an equation of state (EOSID), "

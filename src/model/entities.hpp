@@ -188,7 +188,20 @@ struct RigidMaterial {
   int local_output = 0;  ///< BNDLCO
 };
 
-enum class MaterialKind { elastic, plastic_kinematic, johnson_cook, rigid, piecewise_linear };
+/// *MAT_NULL: no deviatoric strength; the EOS gives the pressure.
+struct NullMaterial {
+  double pressure_cutoff = 0.0;                      ///< PC (<= 0; 0: none)
+  double youngs_modulus = 0.0, poisson_ratio = 0.0;  ///< YM, PR (null shells and beams)
+};
+
+enum class MaterialKind {
+  elastic,
+  plastic_kinematic,
+  johnson_cook,
+  rigid,
+  piecewise_linear,
+  null_material
+};
 
 struct Material {
   Id id = 0;
@@ -200,6 +213,7 @@ struct Material {
   JohnsonCookMaterial johnson_cook;
   RigidMaterial rigid;
   PiecewiseLinearPlasticityMaterial piecewise_linear;
+  NullMaterial null_material;
   core::SourceLoc loc;
 };
 

@@ -157,6 +157,15 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
     case model::MaterialKind::johnson_cook:
       johnson_cook(mat, out, d);
       break;
+    case model::MaterialKind::null_material:
+      // No deviatoric strength (the elastic update with G = 0 leaves the deviator at zero); the
+      // EOS gives the pressure, cut at PC in tension.
+      out.model = ElasticModel{};
+      out.shear_modulus = 0.0;
+      out.bulk_modulus = 0.0;
+      out.pressure_cutoff = mat.null_material.pressure_cutoff;
+      out.spall = 1;
+      break;
     case model::MaterialKind::rigid:
       break;  // rigid parts become rigid bodies, never elements
   }

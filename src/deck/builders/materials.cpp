@@ -50,6 +50,15 @@ void mat_elastic(KeywordRecord& r, model::ModelDatabase& m) {
   m.materials.push_back(std::move(mat));
 }
 
+void mat_null(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  model::Material mat = start(r, c1, model::MaterialKind::null_material);
+  mat.null_material.pressure_cutoff = c1.real("PC");
+  mat.null_material.youngs_modulus = c1.real("YM");
+  mat.null_material.poisson_ratio = c1.real("PR");
+  m.materials.push_back(std::move(mat));
+}
+
 void mat_plastic_kinematic(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c1 = r.card("1");
   const Row& c2 = r.card("2");
