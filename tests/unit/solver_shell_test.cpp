@@ -227,3 +227,56 @@ TEST_CASE("shell contact: a node falling onto a convex crest meets its rounded r
   // lasts many steps (measured +0.1 %; the offset faces alone threw it back at 318 m/s).
   CHECK(vz == doctest::Approx(1000.0).epsilon(0.01));
 }
+
+TEST_CASE("shell membrane wave: a struck strip carries rho c v at the bar speed") {
+  // A steel strip 200 x 2 mm, 1 mm thick (t, mm, s), 200 x 2 shells, its end x = 0 driven along
+  // x at v = 1000 mm/s from t = 0: a plane-stress membrane wave runs along it. The strip is
+  // narrow and free at its sides, so the stress behind the front is uniaxial, sigma = rho c v
+  // with the bar speed c = sqrt(E / rho) = 5.172e6 mm/s (40.60 MPa), and the front has run c t:
+  // at 20 us, 103 mm. Compared: the mean stress of the first 80 mm, and where the stress first
+  // falls below half of it (the front, to the element size and the front's spread).
+  for (const int elform : {2, 16}) {
+    CAPTURE(elform);
+    std::string deck = fmt::format(
+        "*KEYWORD\n*CONTROL_TERMINATION\n2e-5\n*PART\nstrip\n1,1,1\n*SECTION_SHELL\n1,{},0.8333,2\n"
+        "1.0,1.0,1.0,1.0\n*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n*NODE\n",
+        elform);
+    const int nx = 200;
+    auto id = [&](int i, int j) { return 1 + i + (nx + 1) * j; };
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= nx; ++i)
+        deck += fmt::format("{},{},{},0\n", id(i, j), i, j);
+    deck += "*ELEMENT_SHELL\n";
+    int e = 0;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < nx; ++i)
+        deck += fmt::format("{},1,{},{},{},{}\n", ++e, id(i, j), id(i + 1, j), id(i + 1, j + 1),
+                            id(i, j + 1));
+    deck += fmt::format(
+        "*SET_NODE_LIST\n1\n{},{},{}\n*BOUNDARY_PRESCRIBED_MOTION_SET\n1,1,0,1,1000.0\n"
+        "*DEFINE_CURVE\n1\n0,1\n1,1\n*END\n",
+        id(0, 0), id(0, 1), id(0, 2));
+    test::TempDir dir;
+    test::Simulation sim = test::prepare(dir, deck);
+    test::run(sim);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    const solver::State& s = *sim.state;
+    const solver::ShellBlock& block = s.shells.blocks[0];
+    auto sxx = [&](int i) {  // element column i, the row at y 0-1
+      return -solver::shell_result(s, block, i, solver::ShellSurface::all).stress[0];
+    };
+    const double c = std::sqrt(210e3 / 7.85e-9), expected = 7.85e-9 * c * 1000.0;
+    double behind = 0.0;
+    for (int i = 0; i < 80; ++i)
+      behind += sxx(i) / 80.0;
+    int front = 0;
+    while (front < nx && sxx(front) > 0.5 * behind)
+      ++front;
+    const double travelled = c * s.time;
+    MESSAGE("ELFORM ", elform, ": stress behind the front ", behind,
+            " MPa against rho c v = ", expected, "; front at ", front,
+            " mm against c t = ", travelled, " mm");
+    CHECK(std::abs(behind / expected - 1.0) < 0.02);
+    CHECK(std::abs(front - travelled) < 3.0);
+  }
+}
