@@ -356,6 +356,21 @@ void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const Section& s : m.sections) {
     if (s.kind == SectionKind::solid_spg) check_spg_section(s, diags);
   }
+  // SIDR: LS-DYNA runs a dynamic-relaxation phase before the transient for curves flagged 1
+  // (that phase only) or 2 (both). mcdyna has no such phase.
+  for (const Curve& c : m.curves) {
+    if (c.dynamic_relaxation == 1) {
+      diags.error(c.loc,
+                  "*DEFINE_CURVE {}: SIDR 1 applies the curve in a dynamic-relaxation phase only; "
+                  "mcdyna has no dynamic relaxation (run the preload as a transient, SIDR 0)",
+                  c.id);
+    } else if (c.dynamic_relaxation == 2) {
+      diags.warning(c.loc,
+                    "*DEFINE_CURVE {}: SIDR 2: there is no dynamic-relaxation phase; the curve "
+                    "applies in the transient only",
+                    c.id);
+    }
+  }
   check_solid_geometry(m, diags);
 }
 

@@ -120,3 +120,14 @@ TEST_CASE("*SET_NODE_GENERAL applies its rules in order, element sets name their
   CHECK(l->has_message("solid set 5 contains solid element 99, which is not defined"));
   CHECK(l->diags.error_count() == 2);
 }
+
+TEST_CASE("curves for a dynamic-relaxation phase: SIDR 1 refused, SIDR 2 warned") {
+  // mcdyna has no dynamic relaxation: a curve that LS-DYNA would apply only there must not run
+  // in the transient unannounced.
+  auto l = load_text(std::string(kCube) +
+                         "*DEFINE_CURVE\n3,1\n0,0\n1,1\n*DEFINE_CURVE\n4,2\n0,0\n1,1\n"
+                         "*CONTROL_DAMPING\n",
+                     true);
+  CHECK(l->has_message("*DEFINE_CURVE 3: SIDR 1 applies the curve in a dynamic-relaxation phase"));
+  CHECK(l->has_message("*DEFINE_CURVE 4: SIDR 2: there is no dynamic-relaxation phase"));
+}
