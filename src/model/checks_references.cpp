@@ -185,9 +185,12 @@ void check_contact_side(const ModelDatabase& m, const Contact& c, const ContactS
     case 0:
       need(ix.segment_sets, side.id, c.loc, "segment set", user, diags);
       break;
-    case 1:
-      diags.error(c.loc, "{}: type 1 (shell element set) is not supported; use a part or part set",
-                  user);
+    case 1:  // shell element set
+      if (std::none_of(m.element_sets.begin(), m.element_sets.end(), [&](const ElementSet& s) {
+            return s.kind == ElementSetKind::shell && s.id == side.id;
+          })) {
+        diags.error(c.loc, "{} refers to shell set {}, which is not defined", user, side.id);
+      }
       break;
     case 2:  // part set
     case 6:  // all parts except a part set

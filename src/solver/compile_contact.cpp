@@ -266,22 +266,42 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
               side.id);
       ok = false;
     }
-  } else if (side.type == 0) {
-    const auto set = m.index.segment_sets.find(side.id);
-    if (set == model::IdIndex::kNone) {
-      d.error(c.loc, "contact {}: side {}: segment set {} is not defined", number, name, side.id);
+  } else if (side.type == 0 || side.type == 1) {
+    // A segment set, or a shell element set (each shell its own segment).
+    std::vector<std::array<model::Id, 4>> segments;
+    bool defined = false;
+    if (side.type == 0) {
+      const auto set = m.index.segment_sets.find(side.id);
+      if (set != model::IdIndex::kNone) {
+        defined = true;
+        segments = m.segment_sets[static_cast<std::size_t>(set)].segments;
+      }
+    } else {
+      for (const model::ElementSet& es : m.element_sets) {
+        if (es.kind != model::ElementSetKind::shell || es.id != side.id) continue;
+        defined = true;
+        for (const model::Id e : es.elements) {
+          const auto i = m.index.shells.find(e);
+          if (i != model::IdIndex::kNone)
+            segments.push_back(m.shells[static_cast<std::size_t>(i)].nodes);
+        }
+      }
+    }
+    const char* kind = side.type == 0 ? "segment set" : "shell set";
+    if (!defined) {
+      d.error(c.loc, "contact {}: side {}: {} {} is not defined", number, name, kind, side.id);
       ok = false;
     } else {
-      for (const auto& ids : m.segment_sets[static_cast<std::size_t>(set)].segments) {
+      for (const auto& ids : segments) {
         Face f{};
         for (std::size_t k = 0; k < 4; ++k)
           f[k] = static_cast<Index>(m.index.nodes.find(ids[k]));
         const auto owner = face_owner.find(sorted(f));
         if (owner == face_owner.end()) {
           d.error(c.loc,
-                  "contact {}: side {}: segment {} {} {} {} of set {} is not a free face of a "
-                  "solid or a rigid shell, so its penalty stiffness is unknown",
-                  number, name, ids[0], ids[1], ids[2], ids[3], side.id);
+                  "contact {}: side {}: segment {} {} {} {} of {} {} is not a free face of a "
+                  "solid or a shell, so its penalty stiffness is unknown",
+                  number, name, ids[0], ids[1], ids[2], ids[3], kind, side.id);
           ok = false;
           continue;
         }
@@ -295,8 +315,8 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
     }
   } else {
     d.error(c.loc,
-            "contact {}: side {} type {} is not supported (0 segment set, 2 part set, 3 part, "
-            "4 node set, 5 all parts)",
+            "contact {}: side {} type {} is not supported (0 segment set, 1 shell set, 2 part "
+            "set, 3 part, 4 node set, 5 all parts)",
             number, name, side.type);
     ok = false;
   }

@@ -153,13 +153,17 @@ TEST_CASE("shell contact: plates touch at their half thicknesses and bounce") {
   // with what its vibration and the hourglass control did not keep. Surface to surface, and
   // single surface over both parts (SURFA 0: every part), which must find the same contact
   // with SSTHK = 1; by default (SSTHK 0) single surface touches a shell at no more than 0.4 x
-  // its shortest edge, B's 2 mm as 1 mm on its 2.5 mm elements: (1 + 1) / 2 = 1 mm.
+  // its shortest edge, B's 2 mm as 1 mm on its 2.5 mm elements: (1 + 1) / 2 = 1 mm. Plate B
+  // given as a shell set (SURFBTYP 1) is the same surface as part 2.
   struct Case {
     const char* contact;
     double apart;
   };
   for (const Case& c :
        {Case{"*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n", 1.5},
+        Case{"*SET_SHELL_LIST\n10\n101,102,103,104,105,106,107,108\n109,110,111,112,113,114,115,"
+             "116\n*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,10,3,1\n",
+             1.5},
         Case{"*CONTROL_CONTACT\n0.1\n0,0,0,0,0,1\n*CONTACT_AUTOMATIC_SINGLE_SURFACE\n0\n", 1.5},
         Case{"*CONTACT_AUTOMATIC_SINGLE_SURFACE\n0\n", 1.0}}) {
     CAPTURE(c.contact);
