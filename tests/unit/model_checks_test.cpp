@@ -109,10 +109,12 @@ TEST_CASE("*SET_NODE_GENERAL applies its rules in order, element sets name their
       "*SET_NODE_GENERAL\n10\nPART,1\nDBOX,3\n"
       "*SET_NODE_GENERAL\n11\nSET_SHELL,4\nDNODE,5\nNODE,7\n"
       "*SET_NODE_GENERAL\n12\nALL\nDPART,1\n"
-      "*SET_NODE_GENERAL\n13\nFOO,1\n*SET_SOLID\n5\n99\n",
+      "*SET_NODE_GENERAL\n13\nFOO,1\n*SET_SOLID\n5\n99\n"
+      "*SET_SHELL_LIST_GENERATE\n6\n1,2\n*SET_NODE_GENERAL\n14\nSET_SHELL,6\nDSHELL,2\n",
       true);
   const auto& sets = l->model().node_sets;
-  REQUIRE(sets.size() == 4);
+  REQUIRE(sets.size() == 5);
+  CHECK(sets[4].nodes == std::vector<mcdyna::model::Id>{1, 4});  // shells 1-2 less shell 2's
   CHECK(sets[0].nodes == std::vector<mcdyna::model::Id>{2, 3, 5, 6});
   CHECK(sets[1].nodes == std::vector<mcdyna::model::Id>{2, 3, 6, 7});
   CHECK(sets[2].nodes == std::vector<mcdyna::model::Id>{7});

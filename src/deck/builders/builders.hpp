@@ -86,6 +86,7 @@ void set_node_list(KeywordRecord& r, model::ModelDatabase& m);
 void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m);
 void set_part_list(KeywordRecord& r, model::ModelDatabase& m);
 void set_element_list(KeywordRecord& r, model::ModelDatabase& m);
+void set_element_generate(KeywordRecord& r, model::ModelDatabase& m);
 void set_node_general(KeywordRecord& r, model::ModelDatabase& m);
 /// After the whole deck is read: the nodes of every *SET_NODE_GENERAL from its rules.
 void resolve_general_node_sets(model::ModelDatabase& m, core::Diagnostics& d);

@@ -100,11 +100,10 @@ void set_node_list(KeywordRecord& r, model::ModelDatabase& m) {
   m.node_sets.push_back(std::move(s));
 }
 
-void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
-  const Row& c1 = r.card("1");
-  model::NodeSet s;
-  s.id = c1.integer("SID");
-  s.loc = c1.loc();
+namespace {
+
+// Reads "four first-last ranges per line" groups into `ids` (*SET_..._GENERATE).
+void read_id_ranges(KeywordRecord& r, model::Id set, std::vector<model::Id>& ids) {
   Group g;
   constexpr model::Id kMaxGenerated = 10'000'000;  // no real deck generates more
   while (r.next_group(g)) {
@@ -114,17 +113,41 @@ void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
       const model::Id begin = row.integer(b1 + 2 * k), end = row.integer(b1 + 2 * k + 1);
       if (begin == 0 && end == 0) continue;
       if (end < begin || end - begin > kMaxGenerated) {
-        r.diags().error(row.loc(b1 + 2 * k),
-                        "*SET_NODE_LIST_GENERATE {}: range {}..{} is not a "
-                        "valid increasing range",
-                        s.id, begin, end);
+        r.diags().error(row.loc(b1 + 2 * k), "{} {}: range {}..{} is not a valid increasing range",
+                        r.display_name(), set, begin, end);
         continue;
       }
       for (model::Id n = begin; n <= end; ++n)
-        s.nodes.push_back(n);
+        ids.push_back(n);
     }
   }
+}
+
+model::ElementSetKind element_set_kind(const std::string& name) {
+  if (name.rfind("SET_SOLID", 0) == 0) return model::ElementSetKind::solid;
+  if (name.rfind("SET_BEAM", 0) == 0) return model::ElementSetKind::beam;
+  return model::ElementSetKind::shell;
+}
+
+}  // namespace
+
+void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  model::NodeSet s;
+  s.id = c1.integer("SID");
+  s.loc = c1.loc();
+  read_id_ranges(r, s.id, s.nodes);
   m.node_sets.push_back(std::move(s));
+}
+
+void set_element_generate(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  model::ElementSet s;
+  s.id = c1.integer("SID");
+  s.kind = element_set_kind(r.schema().name);
+  s.loc = c1.loc();
+  read_id_ranges(r, s.id, s.elements);
+  m.element_sets.push_back(std::move(s));
 }
 
 void set_element_list(KeywordRecord& r, model::ModelDatabase& m) {
@@ -132,9 +155,7 @@ void set_element_list(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c1 = r.card("1");
   model::ElementSet s;
   s.id = c1.integer("SID");
-  s.kind = name == "SET_SOLID_LIST"  ? model::ElementSetKind::solid
-           : name == "SET_BEAM_LIST" ? model::ElementSetKind::beam
-                                     : model::ElementSetKind::shell;
+  s.kind = element_set_kind(name);
   s.loc = c1.loc();
   read_id_lines(r, s.elements, "K1");
   m.element_sets.push_back(std::move(s));
