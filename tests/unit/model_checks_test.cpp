@@ -133,3 +133,11 @@ TEST_CASE("curves for a dynamic-relaxation phase: SIDR 1 refused, SIDR 2 warned"
   CHECK(l->has_message("*DEFINE_CURVE 3: SIDR 1 applies the curve in a dynamic-relaxation phase"));
   CHECK(l->has_message("*DEFINE_CURVE 4: SIDR 2: there is no dynamic-relaxation phase"));
 }
+
+TEST_CASE("*CONTROL_RIGID: substitutions said at their fields, added joint stiffness refused") {
+  auto l = load_text(std::string(kCube) + "*CONTROL_RIGID\n1,0,0,0,0,1,0,0\n0,0.5\n", true);
+  CHECK(l->has_message("LMF 1 (Lagrange-multiplier joints) runs as LMF 0"));
+  CHECK(l->has_message("JNTF 0 (incremental)"));
+  CHECK(l->has_message("METALF 1: the rigid bodies get their full treatment"));
+  CHECK(l->has_message("*CONTROL_RIGID card 2 field GJADSTF: value 0.5 is not allowed"));
+}

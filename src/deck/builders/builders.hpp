@@ -57,6 +57,7 @@ void control_energy(KeywordRecord& r, model::ModelDatabase& m);
 void control_bulk_viscosity(KeywordRecord& r, model::ModelDatabase& m);
 void control_accuracy(KeywordRecord& r, model::ModelDatabase& m);
 void control_shell(KeywordRecord& r, model::ModelDatabase& m);
+void control_rigid(KeywordRecord& r, model::ModelDatabase& m);
 void damping_global(KeywordRecord& r, model::ModelDatabase& m);
 // contact.cpp
 void contact(KeywordRecord& r, model::ModelDatabase& m);

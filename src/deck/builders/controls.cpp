@@ -171,4 +171,31 @@ void control_accuracy(KeywordRecord& r, model::ModelDatabase& m) {
   set_once(m.controls.accuracy, a, r);
 }
 
+// *CONTROL_RIGID: nothing in the run reads it; the fields that would change the answer in
+// LS-DYNA are said at the field (the schema refuses the added joint stiffness and damping).
+void control_rigid(KeywordRecord& r, model::ModelDatabase& /*m*/) {
+  const Row& c1 = r.card("1");
+  if (c1.integer("LMF") == 1) {
+    r.diags().warning(c1.loc("LMF"),
+                      "*CONTROL_RIGID: LMF 1 (Lagrange-multiplier joints) runs as LMF 0: mcdyna's "
+                      "joints are penalty springs");
+  }
+  if (c1.integer("JNTF") == 0 && !c1.blank("JNTF")) {
+    r.diags().note(c1.loc("JNTF"),
+                   "*CONTROL_RIGID: JNTF 0 (incremental): mcdyna's generalized joint stiffness "
+                   "always takes the total angles (JNTF 1)");
+  }
+  if (c1.integer("METALF") == 1) {
+    r.diags().note(c1.loc("METALF"),
+                   "*CONTROL_RIGID: METALF 1: the rigid bodies get their full treatment "
+                   "(rotations included)");
+  }
+  if (c1.integer("PLOTEL") != 0) {
+    r.diags().note(
+        c1.loc("PLOTEL"),
+        "*CONTROL_RIGID: PLOTEL {}: no *ELEMENT_PLOTEL is written for nodal rigid bodies",
+        c1.integer("PLOTEL"));
+  }
+}
+
 }  // namespace mcdyna::deck::builders

@@ -11,6 +11,7 @@ const std::vector<BuilderEntry>& builder_table() {
       {"ELEMENT_SOLID", element_solid},
       {"ELEMENT_SHELL", element_shell},
       {"ELEMENT_BEAM", element_beam},
+      {"CONTROL_RIGID", control_rigid},
       {"MAT_NULL", mat_null},
       {"SET_SHELL_LIST", set_element_list},
       {"SET_SOLID_LIST", set_element_list},
