@@ -10,31 +10,31 @@ namespace mcdyna::solver {
 
 namespace {
 
-// Mean plastic strain over the points of shell `e` and of solid `e`.
-double shell_plastic_strain(const State& s, Index e) {
-  for (const ShellBlock& b : s.shells.blocks) {
+// Mean plastic strain over the points of element `e` of one kind (shells or solids): its block's
+// `points(block)` points from the block's point_begin, in element order.
+template <class Block, class PointsOf>
+double mean_plastic_strain(const std::vector<Block>& blocks, const std::vector<double>& strain,
+                           Index e, PointsOf points) {
+  for (const Block& b : blocks) {
     if (e < b.begin || e >= b.end) continue;
-    const int n = b.in_plane_points * b.layers;
+    const int n = points(b);
     const Index first = b.point_begin + n * (e - b.begin);
     double sum = 0.0;
     for (Index p = first; p < first + n; ++p)
-      sum += s.shells.points.plastic_strain[static_cast<std::size_t>(p)];
+      sum += strain[static_cast<std::size_t>(p)];
     return sum / n;
   }
   return 0.0;
 }
 
+double shell_plastic_strain(const State& s, Index e) {
+  return mean_plastic_strain(s.shells.blocks, s.shells.points.plastic_strain, e,
+                             [](const ShellBlock& b) { return b.in_plane_points * b.layers; });
+}
+
 double solid_plastic_strain(const State& s, Index e) {
-  for (const SolidBlock& b : s.solids.blocks) {
-    if (e < b.begin || e >= b.end) continue;
-    const int n = b.points_per_element;
-    const Index first = b.point_begin + n * (e - b.begin);
-    double sum = 0.0;
-    for (Index p = first; p < first + n; ++p)
-      sum += s.solids.points.plastic_strain[static_cast<std::size_t>(p)];
-    return sum / n;
-  }
-  return 0.0;
+  return mean_plastic_strain(s.solids.blocks, s.solids.points.plastic_strain, e,
+                             [](const SolidBlock& b) { return b.points_per_element; });
 }
 
 // The largest mean plastic strain of the deformable shells and solids at the node.
