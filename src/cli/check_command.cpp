@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <ostream>
 #include <sstream>
 
@@ -12,13 +13,11 @@
 
 namespace mcdyna::cli {
 
-int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
-  if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
-    fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
-    return 2;  // a usage error, as for `run`
-  }
+namespace {
+
+int check_one(const CheckOptions& options, std::ostream& out, std::ostream& err) {
   std::ostringstream report;
-  LoadedDeck d = load_deck(options.deck, report);
+  LoadedDeck d = load_deck(options.deck, report, options.case_id);
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
   if (!options.quiet) {
     print_summary(out, d.deck, d.built.model, count_model(d.built.model));
@@ -40,6 +39,27 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
              d.diags.error_count() + blocked == 1 ? "" : "s", d.diags.warning_count(),
              d.diags.warning_count() == 1 ? "" : "s", failed ? "" : " - ready to run");
   return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+  if (const std::string problem = deck::file_problem(options.deck); !problem.empty()) {
+    fmt::print(err, "mcdyna: error: deck {}: {}\n", options.deck.string(), problem);
+    return 2;  // a usage error, as for `run`
+  }
+  const std::vector<deck::Case> cases =
+      options.case_id == 0 ? deck_cases(options.deck) : std::vector<deck::Case>{};
+  if (cases.empty()) return check_one(options, out, err);
+  // Each case is its own model: checked one after the other, as `run` runs them.
+  int result = 0;
+  for (const deck::Case& c : cases) {
+    CheckOptions one = options;
+    one.case_id = c.id;
+    fmt::print(out, "{}Case {} ({})\n", &c == &cases.front() ? "" : "\n", c.id, c.job);
+    result = std::max(result, check_one(one, out, err));
+  }
+  return result;
 }
 
 }  // namespace mcdyna::cli

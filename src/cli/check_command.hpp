@@ -10,6 +10,7 @@ struct CheckOptions {
   bool allow_unsupported = false;
   bool quiet = false;             ///< no summary, only diagnostics and the verdict
   std::size_t max_messages = 50;  ///< 0: all
+  long case_id = 0;               ///< --case; 0: each *CASE of the deck in turn (if any)
 };
 
 /// Exit code: 0 fine, 1 deck errors (or unsupported physics without --allow-unsupported).

@@ -119,6 +119,10 @@ int main(int argc, char** argv) {
   check_cmd->add_flag("--allow-unsupported", check.allow_unsupported,
                       "do not fail on unsupported keywords that change the physics");
   check_cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
+  check_cmd
+      ->add_option("--case", check.case_id,
+                   "check this *CASE of the deck (default: each case of a deck with *CASE)")
+      ->check(CLI::PositiveNumber);
   check_cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
       ->capture_default_str();
 
@@ -144,6 +148,10 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--allow-unsupported", run.allow_unsupported,
                     "run without unsupported keywords that change the physics");
   run_cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");
+  run_cmd
+      ->add_option("--case", run.case_id,
+                   "run this *CASE of the deck (default: each case in turn, into OUT/JOBID)")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_option("--max-messages", run.max_messages, "diagnostics printed (0: all)")
       ->capture_default_str();
   run_cmd

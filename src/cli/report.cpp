@@ -40,6 +40,8 @@ const char* contact_name(model::ContactKind k) {
       return "NODES_TO_SURFACE";
     case model::ContactKind::surface_to_surface:
       return "SURFACE_TO_SURFACE";
+    case model::ContactKind::force_transducer:
+      return "FORCE_TRANSDUCER_PENALTY";
   }
   return "?";
 }
@@ -169,6 +171,14 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
              m.equations_of_state.size(), m.hourglasses.size(), m.erosions.size());
   fmt::print(out, "\nContacts         {}\n", m.contacts.size());
   for (const model::Contact& c : m.contacts) {
+    if (c.kind == model::ContactKind::force_transducer) {
+      const std::string b = c.b.id == 0 && c.b.type != 5
+                                ? std::string("- (every other contact)")
+                                : fmt::format("{} {}", side_type_name(c.b.type), c.b.id);
+      fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {}\n", c.id, contact_name(c.kind),
+                 side_type_name(c.a.type), c.a.id, b);
+      continue;
+    }
     fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {} {}  FS {} FD {}\n", c.id, contact_name(c.kind),
                side_type_name(c.a.type), c.a.id, side_type_name(c.b.type), c.b.id,
                c.static_friction, c.dynamic_friction);

@@ -21,9 +21,10 @@ namespace {
 // section, never a run from a damaged state.
 constexpr std::array<char, 20> kMagic = {'m', 'c', 'd', 'y', 'n', 'a', ' ', 'r', 'e', 's',
                                          't', 'a', 'r', 't', ' ', 'd', 'u', 'm', 'p', '\n'};
-constexpr std::uint32_t kVersion = 7;  // 2: the layout string; 3: checksummed sections;
+constexpr std::uint32_t kVersion = 8;  // 2: the layout string; 3: checksummed sections;
                                        // 4: the node owners of a run over several processes;
-                                       // 5: shells and nodal rotations; 6: joints; 7: beams, welds
+                                       // 5: shells and nodal rotations; 6: joints; 7: beams, welds;
+                                       // 8: force transducers
 constexpr std::string_view kHeader = "header", kResume = "resume point", kOutputs = "outputs",
                            kEnd = "end of dump";
 

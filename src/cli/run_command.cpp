@@ -177,10 +177,18 @@ std::string run_fingerprint(const core::SourceFiles& files, const RunOptions& op
       fmt::format("stabilization={};renewal={};msc={};step={}", options.spg_stabilization,
                   options.spg_renewal_strain, options.spg_mode_control, options.spg_step);
   if (processes > 1) physics += fmt::format(";processes={}", processes);
+  if (options.case_id > 0) physics += fmt::format(";case={}", options.case_id);
   return deck_fingerprint(files, physics);
 }
 
 namespace {
+
+// The directory of a case's outputs: its JOBID, unless that is not a plain file name.
+std::string case_directory(const deck::Case& c) {
+  const bool plain = !c.job.empty() && c.job != "." && c.job != ".." &&
+                     c.job.find_first_of("/\\") == std::string::npos;
+  return plain ? c.job : "case" + std::to_string(c.id);
+}
 
 // --out DIR: created if missing; a path that is not (and cannot become) a directory one can
 // write in is a usage error. Returns the problem, or "".
@@ -216,11 +224,40 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   const core::Session mpi(launched.size > 1);
   const core::Communicator comm = core::Communicator::world();
-  if (comm.rank() == 0) return run_processes(options, comm, out, err);
-  // The other processes compute their share and write only their restart dumps; what they
-  // would print, process 0 prints.
-  std::ostringstream quiet_out, quiet_err;
-  return run_processes(options, comm, quiet_out, quiet_err);
+  auto run_one = [&](const RunOptions& one) {
+    if (comm.rank() == 0) return run_processes(one, comm, out, err);
+    // The other processes compute their share and write only their restart dumps; what they
+    // would print, process 0 prints.
+    std::ostringstream quiet_out, quiet_err;
+    return run_processes(one, comm, quiet_out, quiet_err);
+  };
+  const std::vector<deck::Case> cases =
+      options.case_id == 0 ? deck_cases(options.deck) : std::vector<deck::Case>{};
+  if (cases.empty()) return run_one(options);
+  // A deck with *CASE and no --case: every case in turn, each into its own directory (LS-DYNA
+  // prefixes each case's files with its JOBID). The first failure's exit code is returned; an
+  // interrupt stops the rest.
+  if (!options.restart.empty()) {
+    if (comm.rank() == 0)
+      fmt::print(err,
+                 "mcdyna: error: --restart: {} defines {} cases (*CASE); name the one the dump "
+                 "was written by with --case ID\n",
+                 options.deck.string(), cases.size());
+    return kRunUsage;
+  }
+  const std::filesystem::path base = options.out_dir.empty() ? "." : options.out_dir;
+  int result = kRunOk;
+  for (const deck::Case& c : cases) {
+    RunOptions one = options;
+    one.case_id = c.id;
+    one.out_dir = base / case_directory(c);
+    if (comm.rank() == 0)
+      fmt::print(out, "mcdyna: case {} ({}), outputs in {}\n", c.id, c.job, one.out_dir.string());
+    const int code = run_one(one);
+    if (result == kRunOk) result = code;
+    if (code == kRunInterrupted) break;
+  }
+  return result;
 }
 
 namespace {
@@ -234,7 +271,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   }
   const StopSignalGuard signals;
   std::ostringstream report;
-  LoadedDeck d = load_deck(options.deck, report);
+  LoadedDeck d = load_deck(options.deck, report, options.case_id);
   if (comm.size() == 1 && stopped_in_setup(options, err)) return kRunInterrupted;
   core::print_diagnostics(err, d.diags, d.deck.files, options.max_messages);
   const bool blocked = d.unsupported_physics > 0 && !options.allow_unsupported;

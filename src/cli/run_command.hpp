@@ -36,6 +36,9 @@ struct RunOptions {
   std::filesystem::path step_log;  ///< --step-log: per-cycle CSV of what sets the step
   /// --restart / r=: continue the run from this dump (written by the same deck and options)
   std::filesystem::path restart;
+  /// --case: run this *CASE of the deck; 0: a deck with *CASE runs each case in turn, each into
+  /// OUT/JOBID (as `lsdyna case` runs them)
+  long case_id = 0;
 };
 
 /// Exit codes of `run` (README and manual list them).

@@ -39,6 +39,9 @@ struct KeywordBlock {
   std::uint32_t scope = 0;       ///< parameter scope of the file it is in
   std::uint32_t first_line = 0;  ///< index into Deck::lines
   std::uint32_t end_line = 0;
+  /// The *CASE subcases it belongs to: the *CASE_BEGIN_n blocks around it and a "CID=n" on its
+  /// keyword line (empty: the main model, read by every case). deck/cases.hpp selects.
+  std::vector<long> subcases;
   [[nodiscard]] std::uint32_t line_count() const { return end_line - first_line; }
 };
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "deck/deck.hpp"
@@ -93,6 +95,18 @@ class Lexer {
   void handle_include_path(const KeywordBlock& b);
   void handle_parameter(const KeywordBlock& b, bool expression, bool local);
   void handle_duplication(const KeywordBlock& b);
+  std::vector<long> subcases_of(const KeywordLine& k, const core::SourceLoc& loc);
+
+ public:
+  /// At the end of the deck: a *CASE_BEGIN_n left open is an error.
+  void finish();
+
+ private:
+  struct OpenCase {
+    long id = 0;
+    core::SourceLoc loc;
+  };
+  std::vector<OpenCase> open_cases_;  ///< *CASE_BEGIN_n not yet closed, innermost last
 
   Deck& deck_;
   core::Diagnostics& diags_;
@@ -143,6 +157,7 @@ void Lexer::lex(const fs::path& path, std::string text, std::optional<std::uint3
                  : k.format_suffix == '%' ? CardFormat::i10
                                           : st.format;
       b.scope = st.scope;
+      b.subcases = subcases_of(k, b.loc);
       b.first_line = b.end_line = static_cast<std::uint32_t>(deck_.lines.size());
       if (b.name.empty()) diags_.error(b.loc, "keyword line without a keyword name");
       current_ = std::move(b);
@@ -168,6 +183,53 @@ void Lexer::lex(const fs::path& path, std::string text, std::optional<std::uint3
   }
   finish_block(st);
   open_files_.pop_back();
+}
+
+// *CASE_BEGIN_n opens subcase n and *CASE_END_n closes it (they nest, across *INCLUDE files);
+// a keyword line's "CID=n" puts that one keyword in subcase n.
+std::vector<long> Lexer::subcases_of(const KeywordLine& k, const core::SourceLoc& loc) {
+  auto number = [&](std::string_view text, std::string_view what) -> std::optional<long> {
+    long n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n <= 0) {
+      diags_.error(loc, "{}: \"{}\" is not a subcase number (a positive integer)", what, text);
+      return std::nullopt;
+    }
+    return n;
+  };
+  constexpr std::string_view kBegin = "CASE_BEGIN_", kEnd = "CASE_END_";
+  std::string_view name = k.name;
+  if (name.substr(0, kBegin.size()) == kBegin) {
+    if (const auto n = number(name.substr(kBegin.size()), "*CASE_BEGIN_n"))
+      open_cases_.push_back({*n, loc});
+    return {};
+  }
+  if (name.substr(0, kEnd.size()) == kEnd) {
+    const auto n = number(name.substr(kEnd.size()), "*CASE_END_n");
+    if (!n) return {};
+    if (open_cases_.empty() || open_cases_.back().id != *n) {
+      diags_.error(loc, "*CASE_END_{} without a matching *CASE_BEGIN_{}{}", *n, *n,
+                   open_cases_.empty()
+                       ? std::string()
+                       : fmt::format(" (the open one is *CASE_BEGIN_{})", open_cases_.back().id));
+      return {};
+    }
+    open_cases_.pop_back();
+    return {};
+  }
+  std::vector<long> tags;
+  for (const OpenCase& c : open_cases_)
+    tags.push_back(c.id);
+  for (const std::string_view arg : split_whitespace(k.arguments)) {
+    if (upper(arg.substr(0, 4)) != "CID=") continue;
+    if (const auto n = number(arg.substr(4), "keyword option CID=n")) tags.push_back(*n);
+  }
+  return tags;
+}
+
+void Lexer::finish() {
+  for (const OpenCase& c : open_cases_)
+    diags_.error(c.loc, "*CASE_BEGIN_{} is not closed by a *CASE_END_{}", c.id, c.id);
 }
 
 void Lexer::finish_block(FileState& st) {
@@ -413,6 +475,7 @@ Deck read_deck_text(std::string text, const fs::path& virtual_path, core::Diagno
   Deck deck;
   Lexer lexer(deck, diags, options, virtual_path.parent_path());
   lexer.lex(virtual_path, std::move(text), std::nullopt, 0, CardFormat::standard);
+  lexer.finish();
   deck.parameters.evaluate_all(diags);
   return deck;
 }

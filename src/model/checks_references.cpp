@@ -283,7 +283,8 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const Contact& c : m.contacts) {
     const bool single = c.kind == ContactKind::automatic_single_surface;
     if (!(single && c.a.id == 0)) check_contact_side(m, c, c.a, 'A', diags);
-    if (!single) check_contact_side(m, c, c.b, 'B', diags);
+    const bool transducer_without_b = c.kind == ContactKind::force_transducer && c.b.id == 0;
+    if (!single && !transducer_without_b) check_contact_side(m, c, c.b, 'B', diags);
   }
   for (const SpcConstraint& s : m.spcs) {
     need(s.is_set ? ix.node_sets : ix.nodes, s.target, s.loc, s.is_set ? "node set" : "node",

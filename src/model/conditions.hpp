@@ -12,7 +12,10 @@ enum class ContactKind {
   automatic_surface_to_surface,
   automatic_single_surface,
   nodes_to_surface,
-  surface_to_surface
+  surface_to_surface,
+  /// *CONTACT_FORCE_TRANSDUCER_PENALTY: applies nothing; reports the other contacts' forces on
+  /// side A (only those from side B when B is given).
+  force_transducer
 };
 
 /// Side of a contact: SURFA/SURFB with its type code (keywords.md §2.15).

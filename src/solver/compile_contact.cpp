@@ -362,6 +362,34 @@ void report_initial_penetrations(State& s, Interface& in, const model::Contact& 
             in.id, r.count, r.deepest, s.nodes.ids[static_cast<std::size_t>(r.node)], what);
 }
 
+// *CONTACT_FORCE_TRANSDUCER_PENALTY: the nodes of its sides (every node a side's parts or sets
+// give, as a slave side has them), no passes.
+void compile_transducer(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
+                        const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
+                        model::Id number, State& s) {
+  bool ok = true;
+  auto nodes_of = [&](const model::ContactSide& side, const char* name) {
+    const Side resolved = resolve_side(m, parts, face_owner, d, c, number, side, name, ok);
+    std::vector<Index> nodes = resolved.nodes;
+    nodes.insert(nodes.end(), resolved.slave_nodes.begin(), resolved.slave_nodes.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+  };
+  contact::Transducer sensor;
+  sensor.active = true;
+  sensor.nodes_a = nodes_of(c.a, "A (slave)");
+  if (c.b.id != 0 || c.b.type == 5) sensor.nodes_b = nodes_of(c.b, "B (master)");
+  if (!ok) return;
+  Interface in;
+  in.id = number;
+  in.heading = c.heading;
+  in.birth = c.birth;
+  in.death = c.death > 0.0 ? c.death : 1.0e20;
+  in.sensor = std::move(sensor);
+  s.contacts.push_back(std::move(in));
+}
+
 }  // namespace
 
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
@@ -412,6 +440,10 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
                            c.kind == model::ContactKind::automatic_surface_to_surface;
     const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
                          c.kind == model::ContactKind::surface_to_surface;
+    if (c.kind == model::ContactKind::force_transducer) {
+      compile_transducer(m, parts, face_owner, d, c, number, s);
+      continue;
+    }
     bool ok = true;
     model::ContactSide side_a = c.a;
     if (single && side_a.id == 0) side_a.type = 5;

@@ -366,3 +366,77 @@ TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or t
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+namespace {
+
+// Three elastic cubes (1 mm, 2 x 2 x 2 elements) in a column along z, 0.01 mm apart: the bottom
+// one rising and the top one falling at 10 m/s onto the middle one at rest. Contacts 1-2 and
+// 2-3 (surface to surface), after `transducers` in the deck.
+std::string cube_column(const std::string& transducers) {
+  return header(4e-6) +
+         "*PART\nlow\n1,1,1\n*PART\nmiddle\n2,1,1\n*PART\nhigh\n3,1,1\n*SECTION_SOLID\n1,1\n"
+         "*MAT_ELASTIC\n1,7.85e-9,210000.0,0.3\n" +
+         box_mesh(2, 2, 2, 0.5, 1, 1, 1, 0.0) + box_mesh(2, 2, 2, 0.5, 101, 101, 2, 1.01) +
+         box_mesh(2, 2, 2, 0.5, 201, 201, 3, 2.02) +
+         "*SET_PART_LIST\n1\n1\n*SET_PART_LIST\n3\n3\n"
+         "*INITIAL_VELOCITY_GENERATION\n1,1,0,0,0,10000\n0,0,0\n"
+         "*INITIAL_VELOCITY_GENERATION\n3,1,0,0,0,-10000\n0,0,0\n" +
+         transducers +
+         "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n0,0\n\n"
+         "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n2,3,3,3\n0,0\n\n*END\n";
+}
+
+}  // namespace
+
+TEST_CASE("contact: a force transducer reports the other contacts' forces and applies none") {
+  TempDir dir;
+  // Transducer 1 on the middle cube alone; transducer 2 between the middle and the top cube.
+  Simulation sim = prepare(dir, cube_column("*CONTACT_FORCE_TRANSDUCER_PENALTY\n2,0,3\n\n\n"
+                                            "*CONTACT_FORCE_TRANSDUCER_PENALTY\n2,3,3,3\n\n\n"));
+  const std::vector<solver::contact::Interface>& c = sim.state->contacts;
+  REQUIRE(c.size() == 4);
+  CHECK(c[0].id == 1);  // numbered in deck order, as rcforc lists them
+  CHECK(c[3].id == 4);
+  CHECK(c[0].passes.empty());
+  double peak_low = 0.0, peak_high = 0.0;
+  long cycles_checked = 0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    const auto& all = s.contacts[0];
+    const auto& pair = s.contacts[1];
+    const auto& low = s.contacts[2];
+    const auto& high = s.contacts[3];
+    peak_low = std::max(peak_low, low.force_b.norm());
+    peak_high = std::max(peak_high, high.force_a.norm());
+    // On the middle cube: what contact 3 puts on its B side and contact 4 on its A side.
+    const Eigen::Vector3d expected = low.force_b + high.force_a;
+    const double scale = std::max({1.0, low.force_b.norm(), high.force_a.norm()});
+    CHECK((all.force_a - expected).norm() <= 1e-12 * scale);
+    CHECK(all.force_b.norm() == 0.0);  // no side B: nothing on the master line
+    // Between the middle and the top cube: contact 4's own resultants, the same sums.
+    CHECK(pair.force_a == high.force_a);
+    CHECK(pair.force_b == high.force_b);
+    CHECK(pair.moment_a == high.moment_a);
+    CHECK(pair.energy == 0.0);
+    if (high.force_a.norm() > 0.0) CHECK(pair.mass_in_contact > 0.0);
+    ++cycles_checked;
+  };
+  run(sim, hooks);
+  MESSAGE("peak forces: bottom contact ", peak_low, ", top contact ", peak_high, " N over ",
+          cycles_checked, " cycles");
+  CHECK(peak_low > 0.0);
+  CHECK(peak_high > 0.0);
+  CHECK(cycles_checked > 10);
+
+  // The transducers change nothing: the same deck without them ends at the same bits.
+  TempDir plain_dir;
+  Simulation plain = prepare(plain_dir, cube_column(""));
+  run(plain);
+  CHECK(plain.state->cycle == sim.state->cycle);
+  CHECK(plain.state->nodes.position == sim.state->nodes.position);
+  CHECK(plain.state->nodes.velocity == sim.state->nodes.velocity);
+}
+
+}  // namespace mcdyna::test

@@ -1,4 +1,4 @@
-// The five *CONTACT_ keywords share one card layout (keywords.md §2.15) and one builder.
+// The six *CONTACT_ keywords share one card layout (keywords.md §2.15) and one builder.
 #include "deck/builders/builders.hpp"
 
 namespace mcdyna::deck::builders {
@@ -11,6 +11,7 @@ model::ContactKind kind_of(std::string_view schema_name) {
   if (schema_name == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE") return K::automatic_surface_to_surface;
   if (schema_name == "CONTACT_AUTOMATIC_SINGLE_SURFACE") return K::automatic_single_surface;
   if (schema_name == "CONTACT_NODES_TO_SURFACE") return K::nodes_to_surface;
+  if (schema_name == "CONTACT_FORCE_TRANSDUCER_PENALTY") return K::force_transducer;
   return K::surface_to_surface;
 }
 
@@ -48,13 +49,15 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
   c.ignore_penetration = static_cast<int>(cc.integer("IGNORE"));
   c.loc = c1.loc();
   const bool single = c.kind == model::ContactKind::automatic_single_surface;
+  // A transducer's side B is optional: without it every other contact's force on side A counts.
+  const bool transducer = c.kind == model::ContactKind::force_transducer;
   if (c.a.type == 7 || c.b.type == 7) {
     r.diags().error(c1.loc(c.a.type == 7 ? "SURFATYP" : "SURFBTYP"),
                     "{}: type 7 (*SET_PART_TREE "
                     "branch) is not supported",
                     r.display_name());
   }
-  if (!single && c.b.type == 4) {
+  if (!single && !transducer && c.b.type == 4) {
     r.diags().error(c1.loc("SURFBTYP"),
                     "{}: side B must be a surface (segment set, shell set, "
                     "part or part set), not a node set",
@@ -73,7 +76,7 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
                     "constraint)",
                     r.display_name(), c.soft);
   }
-  if (!single && c.b.type != 5 && c.b.id == 0) {
+  if (!single && !transducer && c.b.type != 5 && c.b.id == 0) {
     r.diags().error(c1.loc("SURFB"), "{}: side B (SURFB) is not given", r.display_name());
   }
   if (c.a.type != 5 && c.a.id == 0 && !single) {

@@ -13,6 +13,11 @@ namespace mcdyna::solver::contact {
 /// `sort`: whether the candidate lists are rebuilt first (sort_due).
 void interface_pass(State& s, Interface& c, bool sort);
 
+/// A force transducer (*CONTACT_FORCE_TRANSDUCER_PENALTY): its resultants from the forces the
+/// other interfaces applied this cycle (their `applied` lists), applying none itself. Run after
+/// every other interface's pass.
+void transducer_pass(State& s, Interface& t);
+
 /// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
 /// last sort, or a node has moved more than half the search margin. Over several processes
 /// each looks at the nodes it owns and all agree (collective).

@@ -106,11 +106,27 @@ class ContactBlock final : public Block {
   double exchange_seconds_ = 0.0;
 };
 
+// A force transducer: applies nothing, reads what the contact blocks before it applied.
+class TransducerBlock final : public Block {
+ public:
+  explicit TransducerBlock(std::size_t interface) : interface_(interface) {}
+  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
+  void forces(State& s, ForceReport& /*report*/) override {
+    contact::transducer_pass(s, s.contacts[interface_]);
+  }
+
+ private:
+  std::size_t interface_;
+};
+
 }  // namespace
 
 void add_contact_blocks(State& s, Blocks& blocks) {
   for (std::size_t k = 0; k < s.contacts.size(); ++k)
-    blocks.push_back(std::make_unique<ContactBlock>(k));
+    if (!s.contacts[k].sensor.active) blocks.push_back(std::make_unique<ContactBlock>(k));
+  // After every contact, whatever the deck order.
+  for (std::size_t k = 0; k < s.contacts.size(); ++k)
+    if (s.contacts[k].sensor.active) blocks.push_back(std::make_unique<TransducerBlock>(k));
 }
 
 }  // namespace mcdyna::solver

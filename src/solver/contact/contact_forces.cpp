@@ -311,6 +311,7 @@ void interface_pass(State& s, Interface& c, bool sort) {
     return;
   }
   if (sort) sort_buckets(s, c);
+  Index hit_number = 0;
   for (Pass& p : c.passes) {
     const std::vector<Hit> hits = pass_hits(s, c, p);
     // Forces added in node order: the same sums for any thread count.
@@ -324,7 +325,7 @@ void interface_pass(State& s, Interface& c, bool sort) {
       const Index node = p.nodes[i];
       const Vec3 x = s.nodes.position.col(node);
       s.nodes.force.col(node) += h.force;
-      c.applied.push_back({node, h.force});
+      c.applied.push_back({node, hit_number, h.force});
       charge(node, h.force);
       const int side_nodes = p.nodes_on_side_a ? 0 : 1;
       const int side_segments = 1 - side_nodes;
@@ -336,13 +337,77 @@ void interface_pass(State& s, Interface& c, bool sort) {
         const Vec3 f = -h.weights[j] * h.force;
         const Vec3 xj = s.nodes.position.col(seg[j]);
         s.nodes.force.col(seg[j]) += f;
-        c.applied.push_back({seg[j], f});
+        c.applied.push_back({seg[j], hit_number, f});
         charge(seg[j], f);
         sums.add(side_segments, f, xj.cross(f));
       }
+      ++hit_number;
     }
   }
   sums.store(c);
+}
+
+void transducer_pass(State& s, Interface& t) {
+  Resultants sums;
+  if (s.time < t.birth || s.time > t.death) {
+    sums.store(t);
+    return;
+  }
+  const Transducer& sensor = t.sensor;
+  auto on = [](const std::vector<Index>& nodes, Index n) {
+    return std::binary_search(nodes.begin(), nodes.end(), n);
+  };
+  auto add = [&](int side, const AppliedForce& a) {
+    sums.add(side, a.force, s.nodes.position.col(a.node).cross(a.force));
+  };
+  std::vector<Index> touched;  // side A nodes that took a force, for the mass in contact
+  for (const Interface& c : s.contacts) {
+    if (c.sensor.active) continue;
+    const std::vector<AppliedForce>& f = c.applied;
+    for (std::size_t begin = 0; begin < f.size();) {
+      // One hit: f[begin] is the slave node's force, the rest its segment's nodes'.
+      std::size_t end = begin + 1;
+      while (end < f.size() && f[end].hit == f[begin].hit)
+        ++end;
+      if (sensor.nodes_b.empty()) {
+        for (std::size_t k = begin; k < end; ++k)
+          if (on(sensor.nodes_a, f[k].node)) {
+            add(0, f[k]);
+            touched.push_back(f[k].node);
+          }
+      } else {
+        // Between A and B only: the node on one side, its whole segment on the other.
+        bool segment_on_a = true, segment_on_b = true;
+        for (std::size_t k = begin + 1; k < end; ++k) {
+          segment_on_a = segment_on_a && on(sensor.nodes_a, f[k].node);
+          segment_on_b = segment_on_b && on(sensor.nodes_b, f[k].node);
+        }
+        const bool node_on_a = on(sensor.nodes_a, f[begin].node);
+        const bool node_on_b = on(sensor.nodes_b, f[begin].node);
+        int node_side = -1;
+        if (node_on_a && segment_on_b)
+          node_side = 0;
+        else if (node_on_b && segment_on_a)
+          node_side = 1;
+        if (node_side < 0) {
+          begin = end;
+          continue;
+        }
+        add(node_side, f[begin]);
+        if (node_side == 0) touched.push_back(f[begin].node);
+        for (std::size_t k = begin + 1; k < end; ++k) {
+          add(1 - node_side, f[k]);
+          if (node_side == 1) touched.push_back(f[k].node);
+        }
+      }
+      begin = end;
+    }
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (const Index n : touched)
+    sums.mass.add(s.nodes.mass[static_cast<std::size_t>(n)]);
+  sums.store(t);
 }
 
 }  // namespace mcdyna::solver::contact

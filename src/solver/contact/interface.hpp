@@ -56,10 +56,20 @@ struct Pass {
   std::vector<double> initial_penetration;
 };
 
-/// A force applied at the last pass, kept to charge its work over the following step.
+/// A force applied at the last pass, kept to charge its work over the following step and for
+/// the force transducers. The forces of one hit (the slave node's, then its segment nodes')
+/// share `hit`, numbered from 0 over the interface's passes.
 struct AppliedForce {
   Index node = 0;
+  Index hit = 0;
   Vec3 force = Vec3::Zero();
+};
+
+/// *CONTACT_FORCE_TRANSDUCER_PENALTY: the nodes whose contact forces it sums (ascending).
+struct Transducer {
+  bool active = false;  ///< this interface is a transducer
+  std::vector<Index> nodes_a;
+  std::vector<Index> nodes_b;  ///< empty: every other contact's force on side A counts
 };
 
 /// The penalty stiffness of a node on a segment (PENOPT 1, 2, 3).
@@ -84,6 +94,8 @@ struct Interface {
   int sort_interval = 10;     ///< cycles between bucket sorts (NSBCS; sooner if nodes moved far)
   double initial_step = 0.0;  ///< the first solution step, for SOFT 1 (0 until known)
   InitialPenetration initial_penetration = InitialPenetration::move;
+  /// A force transducer has no passes and this active: transducer_pass fills its resultants.
+  Transducer sensor;
 
   // Search state.
   long last_sort = -1;
