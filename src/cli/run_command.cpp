@@ -90,7 +90,7 @@ const char* reason_text(solver::StopReason r) {
     case solver::StopReason::inverted_element:
       return "error termination: negative volume";
     case solver::StopReason::non_finite:
-      return "error termination: non-finite values";
+      return "error termination: unstable motion (non-finite or runaway values)";
     case solver::StopReason::step_collapse:
       return "error termination: time step collapse";
   }

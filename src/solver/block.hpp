@@ -102,5 +102,7 @@ void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_
 /// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
 std::string element_name(const State& s, Index element);
 std::string particle_name(const State& s, std::size_t domain, Index particle);
+/// The stop message for an element grown past fe::kRunawayGrowth (`measure`: area, volume).
+std::string runaway_message(const State& s, Index element, const char* measure);
 
 }  // namespace mcdyna::solver

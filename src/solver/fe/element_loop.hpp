@@ -18,6 +18,7 @@ struct ElementPassResult {
   Index controlling = -1;      ///< element giving it (lowest index on ties)
   Index inverted = -1;         ///< lowest element with non-positive volume or area, or -1
   Index non_finite = -1;       ///< lowest element with a NaN/Inf state (its step), or -1
+  Index runaway = -1;          ///< lowest element grown past kRunawayGrowth, or -1
   Index newly_eroded = 0;
   bool mass_changed = false;  ///< mass scaling added mass this pass
 };
@@ -30,11 +31,18 @@ constexpr Index kParallelMinimum = 512;
 // of a part (the impact end of a Taylor bar), and contiguous halves would leave one thread idle.
 constexpr int kElementChunk = 128;
 
+/// An element whose area (shell) or volume (solid) has grown this many times is taken as a
+/// run gone unstable: no material stretches so, and an element blowing up without inverting
+/// would otherwise end the run "normally" with a vast step (a lone unsupported shell square's
+/// dilatation, omega = 2 c sqrt(1 + nu) / L, is above the L / c estimate: TSSFAC 0.9 > 0.877).
+constexpr double kRunawayGrowth = 1.0e4;
+
 /// What one element's update found.
 struct ElementOutcome {
   double step = 0.0;
   bool inverted = false;
-  bool failed = false;  ///< its failure criterion was met: it erodes
+  bool failed = false;   ///< its failure criterion was met: it erodes
+  bool runaway = false;  ///< grown past kRunawayGrowth times its initial area or volume
 };
 
 /// Per-thread minimum of (step, element); ties go to the lower element index.
@@ -54,12 +62,14 @@ struct PassTotals {
   StepMin step;
   Index inverted = std::numeric_limits<Index>::max();
   Index non_finite = std::numeric_limits<Index>::max();
+  Index runaway = std::numeric_limits<Index>::max();
   Index eroded = 0;
   bool mass_changed = false;
   void add(const PassTotals& o) {
     step.take(o.step.step, o.step.element);
     inverted = std::min(inverted, o.inverted);
     non_finite = std::min(non_finite, o.non_finite);
+    runaway = std::min(runaway, o.runaway);
     eroded += o.eroded;
     mass_changed = mass_changed || o.mass_changed;
   }
@@ -69,6 +79,7 @@ struct PassTotals {
             step.element,
             inverted == kNone ? -1 : inverted,
             non_finite == kNone ? -1 : non_finite,
+            runaway == kNone ? -1 : runaway,
             eroded,
             mass_changed};
   }
@@ -117,6 +128,7 @@ void element_loop(Index begin, Index end, ElementArrays a, double scale_factor, 
         local.non_finite = std::min(local.non_finite, e);
         continue;
       }
+      if (o.runaway) local.runaway = std::min(local.runaway, e);
       if (o.failed) {
         a.eroded[i] = 1;
         const auto n = static_cast<std::size_t>(a.corner_values);

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
+#include "solver/fe/element_loop.hpp"
 
 namespace mcdyna::solver {
 
@@ -21,6 +22,14 @@ ElementRef element_ref(const State& s, Index e) {
 std::string element_name(const State& s, Index e) {
   const ElementRef r = element_ref(s, e);
   return fmt::format("{} element {} (part {})", r.kind, r.id, r.part);
+}
+
+std::string runaway_message(const State& s, Index e, const char* measure) {
+  return fmt::format(
+      "{} grew to over {:.0e} times its initial {}: the motion is unstable (the step is too large "
+      "for the element's highest mode; a lone element with free corners needs a TSSFAC below "
+      "0.877 for shells, 0.73 for hexahedra at Poisson's ratio 0.3)",
+      element_name(s, e), fe::kRunawayGrowth, measure);
 }
 
 }  // namespace mcdyna::solver

@@ -30,6 +30,8 @@ class HexahedraBlock final : public Block {
       r.fail("negative volume in " + element_name(s, e.inverted), true);
     else if (e.non_finite >= 0)
       r.fail("non-finite stress or wave speed in " + element_name(s, e.non_finite), false);
+    else if (e.runaway >= 0)
+      r.fail(runaway_message(s, e.runaway, "volume"), false);
   }
 
  private:

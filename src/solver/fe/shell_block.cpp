@@ -38,6 +38,8 @@ class ShellsBlock final : public Block {
       r.fail("zero or negative area in " + element_name(s, offset + e.inverted), true);
     else if (e.non_finite >= 0)
       r.fail("non-finite stress or step in " + element_name(s, offset + e.non_finite), false);
+    else if (e.runaway >= 0)
+      r.fail(runaway_message(s, offset + e.runaway, "area"), false);
   }
 
  private:

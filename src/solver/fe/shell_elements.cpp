@@ -134,7 +134,8 @@ ElementOutcome belytschko_tsay(ShellContext& c, const Model& model, Index e) {
     add_corner(out, f, n, k.triangle, fx, fy, fz, mx, my);
   }
   const bool all_failed = failed == c.block.layers;
-  return {shell_step(c, k.x, f.area, k.triangle), false, all_failed};
+  return {shell_step(c, k.x, f.area, k.triangle), false, all_failed,
+          f.area > fe::kRunawayGrowth * c.st.shells.initial_area[static_cast<std::size_t>(e)]};
 }
 
 template <class Model>
