@@ -31,7 +31,7 @@ BuildResult build_model(const Deck& deck, const Registry& registry, core::Diagno
       diags.error(block.loc, "internal error while reading *{}: {}", block.name, e.what());
     }
   }
-  builders::resolve_general_node_sets(result.model, diags);
+  builders::resolve_general_sets(result.model, diags);
   return result;
 }
 

@@ -288,22 +288,28 @@ struct NodeSet {
   std::vector<Id> nodes;
   /// *SET_NODE_GENERAL: the rules `nodes` was built from once the deck was read (in order).
   std::vector<SetRule> rules;
+  bool collect = false;  ///< a _COLLECT set: later _COLLECT sets of its ID add to it
   core::SourceLoc loc;
 };
 
 enum class ElementSetKind { shell, solid, beam };
 
-/// *SET_SHELL_LIST / *SET_SOLID / *SET_BEAM.
+/// *SET_SHELL_LIST / *SET_SOLID / *SET_BEAM and their _GENERATE(_INCREMENT), _COLUMN and
+/// _GENERAL forms.
 struct ElementSet {
   Id id = 0;
   ElementSetKind kind = ElementSetKind::shell;
   std::vector<Id> elements;
+  /// _GENERAL: the rules `elements` is built from once the deck is read (in order).
+  std::vector<SetRule> rules;
+  bool collect = false;  ///< a _COLLECT set: later _COLLECT sets of its ID and kind add to it
   core::SourceLoc loc;
 };
 
 struct PartSet {
   Id id = 0;
   std::vector<Id> parts;
+  bool collect = false;  ///< a _COLLECT set: later _COLLECT sets of its ID add to it
   core::SourceLoc loc;
 };
 

@@ -123,6 +123,64 @@ TEST_CASE("*SET_NODE_GENERAL applies its rules in order, element sets name their
   CHECK(l->diags.error_count() == 2);
 }
 
+TEST_CASE("element sets: _GENERAL rules, _GENERATE_INCREMENT, _COLUMN, _COLLECT and part ranges") {
+  // Shells 1 (x 0..1) and 2 (x 1..2) of part 1, shell 3 (x 2..3) of part 2; solid 7 of part 3
+  // and solid 8 of part 4. Box 9 holds the centroid of shell 1 only.
+  auto l = load_text(
+      "*CONTROL_TERMINATION\n1e-3\n"
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,2,0,0\n6,2,1,0\n7,3,0,0\n8,3,1,0\n"
+      "11,0,0,1\n12,1,0,1\n13,1,1,1\n14,0,1,1\n"
+      "*PART\np\n1,1,1\n*PART\nq\n2,1,1\n*PART\nr\n3,2,1\n*PART\ns\n4,2,1\n"
+      "*SECTION_SHELL\n1\n1,1,1,1\n*SECTION_SOLID\n2\n*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n"
+      "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,1,2,5,6,3\n3,2,5,7,8,6\n"
+      "*ELEMENT_SOLID\n7,3\n1,2,3,4,11,12,13,14\n8,4\n1,2,3,4,11,12,13,14\n"
+      "*DEFINE_BOX\n9,-0.5,0.9,-0.5,1.5,-0.5,0.5\n"
+      "*SET_SHELL_GENERAL\n20\nALL\nDPART,2\n"       // 1 2
+      "*SET_SHELL_GENERAL\n21\nBOX,9\nELEM,3\n"      // 1 3
+      "*SET_SHELL_GENERAL\n22\nSET,21\nDELEM,1\n"    // 3
+      "*SET_SOLID_GENERAL\n23\nPART,3,4\nDSET,24\n"  // 8
+      "*SET_SOLID\n24\n7\n"
+      "*SET_SHELL_LIST_GENERATE_INCREMENT\n25\n1,3,2\n"                           // 1 3
+      "*SET_SHELL_COLUMN\n26,1.0\n2,5.0\n3\n"                                     // 2 3
+      "*SET_SHELL_LIST_COLLECT\n27\n1\n*SET_SHELL_GENERAL_COLLECT\n27\nELEM,3\n"  // 1 3
+      "*SET_NODE_LIST_GENERATE_INCREMENT\n30\n1,7,3\n"                            // 1 4 7
+      "*SET_NODE_COLUMN_COLLECT\n31\n5\n6\n*SET_NODE_COLLECT\n31\n7\n*SET_NODE_LIST_"
+      "COLLECT\n31\n8\n"
+      "*SET_NODE_GENERAL\n32\nSET_SHELL,22\n"  // shell 3's nodes: 5 6 7 8
+      "*SET_PART_LIST_GENERATE\n40\n1,2,4,4\n*SET_PART_LIST_GENERATE_INCREMENT\n41\n1,4,3\n",
+      true);
+  INFO(l->messages());
+  using Ids = std::vector<mcdyna::model::Id>;
+  auto elements = [&](mcdyna::model::Id id) {
+    for (const auto& s : l->model().element_sets)
+      if (s.id == id) return s.elements;
+    return Ids{};
+  };
+  CHECK(elements(20) == Ids{1, 2});
+  CHECK(elements(21) == Ids{1, 3});
+  CHECK(elements(22) == Ids{3});
+  CHECK(elements(23) == Ids{8});
+  CHECK(elements(25) == Ids{1, 3});
+  CHECK(elements(26) == Ids{2, 3});
+  CHECK(elements(27) == Ids{1, 3});
+  const auto& nodes = l->model().node_sets;
+  REQUIRE(nodes.size() == 3);
+  CHECK(nodes[0].nodes == Ids{1, 4, 7});
+  CHECK(nodes[1].nodes == Ids{5, 6, 7, 8});  // the column and the two _COLLECT sets
+  CHECK(nodes[2].nodes == Ids{5, 6, 7, 8});
+  const auto& parts = l->model().part_sets;
+  REQUIRE(parts.size() == 2);
+  CHECK(parts[0].parts == Ids{1, 2, 4});
+  CHECK(parts[1].parts == Ids{1, 4});
+  CHECK(l->diags.error_count() == 0);
+}
+
+TEST_CASE("two sets of one ID are an error unless both are _COLLECT") {
+  auto l =
+      load_text(std::string(kCube) + "*SET_NODE_LIST\n5\n1\n*SET_NODE_LIST_COLLECT\n5\n2\n", true);
+  CHECK(l->has_message("node set 5 is defined twice"));
+}
+
 TEST_CASE("curves for a dynamic-relaxation phase: SIDR 1 refused, SIDR 2 warned") {
   // mcdyna has no dynamic relaxation: a curve that LS-DYNA would apply only there must not run
   // in the transient unannounced.

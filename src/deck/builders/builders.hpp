@@ -83,15 +83,15 @@ void define_coordinate_node(KeywordRecord& r, model::ModelDatabase& m);
 void define_curve(KeywordRecord& r, model::ModelDatabase& m);
 void define_vector(KeywordRecord& r, model::ModelDatabase& m);
 void define_box(KeywordRecord& r, model::ModelDatabase& m);
-void set_node_list(KeywordRecord& r, model::ModelDatabase& m);
-void set_node_list_generate(KeywordRecord& r, model::ModelDatabase& m);
-void set_part_list(KeywordRecord& r, model::ModelDatabase& m);
-void set_element_list(KeywordRecord& r, model::ModelDatabase& m);
-void set_element_generate(KeywordRecord& r, model::ModelDatabase& m);
-void set_node_general(KeywordRecord& r, model::ModelDatabase& m);
-/// After the whole deck is read: the nodes of every *SET_NODE_GENERAL from its rules.
-void resolve_general_node_sets(model::ModelDatabase& m, core::Diagnostics& d);
 void set_segment(KeywordRecord& r, model::ModelDatabase& m);
+// sets.cpp: every form of the node, part and element sets (_LIST, _GENERATE(_INCREMENT),
+// _COLUMN, _GENERAL, _COLLECT), by the keyword's name.
+void set_node(KeywordRecord& r, model::ModelDatabase& m);
+void set_part(KeywordRecord& r, model::ModelDatabase& m);
+void set_element(KeywordRecord& r, model::ModelDatabase& m);
+/// After the whole deck is read: the members of every _GENERAL set from its rules
+/// (general_sets.cpp).
+void resolve_general_sets(model::ModelDatabase& m, core::Diagnostics& d);
 // database.cpp
 void database_d3plot(KeywordRecord& r, model::ModelDatabase& m);
 void database_ascii(KeywordRecord& r, model::ModelDatabase& m);
