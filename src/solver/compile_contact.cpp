@@ -439,7 +439,8 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     const bool automatic = single || c.kind == model::ContactKind::automatic_nodes_to_surface ||
                            c.kind == model::ContactKind::automatic_surface_to_surface;
     const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
-                         c.kind == model::ContactKind::surface_to_surface;
+                         c.kind == model::ContactKind::surface_to_surface ||
+                         (c.soft == 2 && !single);
     if (c.kind == model::ContactKind::force_transducer) {
       compile_transducer(m, parts, face_owner, d, c, number, s);
       continue;
@@ -468,13 +469,17 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     in.damping = c.viscous_damping / 100.0;
     in.birth = c.birth;
     in.death = c.death > 0.0 ? c.death : 1.0e20;
-    in.soft_constraint = c.soft >= 1;
+    in.soft_constraint = c.soft == 1;
+    in.segment_based = c.soft == 2;
     in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
     in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
     const int ignore =
         c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
-    in.initial_penetration =
-        ignore == 0 ? contact::InitialPenetration::move : contact::InitialPenetration::keep_offset;
+    // SOFT 2 keeps an initial penetration as the baseline contact pushes beyond (LS-DYNA's
+    // segment-based contact does not move nodes out).
+    in.initial_penetration = ignore == 0 && !in.segment_based
+                                 ? contact::InitialPenetration::move
+                                 : contact::InitialPenetration::keep_offset;
     switch (control.penalty_option) {
       case 2:
         in.penalty_scale = contact::PenaltyScale::segment;
@@ -492,11 +497,24 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
                   control.penalty_option);
         in.penalty_scale = contact::PenaltyScale::smaller;
     }
-    // SOFT 2, 4 and 6 are refused by the reader (segment-based and forming contacts are not
-    // there); other values above 1 are not LS-DYNA's and run as 1.
-    if (c.soft > 1) {
+    // SOFT 4 and 6 are refused by the reader (forming contacts are not there); other values
+    // above 2 are not LS-DYNA's and run as 1.
+    if (c.soft > 2) {
+      in.soft_constraint = true;
       d.warning(c.loc, "contact {}: SOFT = {} runs as SOFT = 1 (the soft-constraint stiffness)",
                 number, c.soft);
+    }
+    // SOFT 2 (segment-based): its stiffness and its baseline rule for initial penetrations,
+    // with the penetrations found node on segment both ways (two passes whatever the keyword:
+    // the segments of either side can be the ones penetrated). Edge-to-edge crossings with
+    // no node through a segment are not found.
+    in.segment_based_scale = {0.5 * slsfac * (single ? c.penalty_scale_a : c.penalty_scale_b),
+                              0.5 * slsfac * c.penalty_scale_a};
+    if (in.segment_based && c.depth >= 3) {
+      d.note(c.loc,
+             "contact {}: SOFT 2 DEPTH = {}: edge-to-edge checks are not done (penetrations are "
+             "found node on segment, both ways)",
+             number, static_cast<int>(c.depth));
     }
     // One direction: the nodes of one side on the segments of the other. `node_thickness` is
     // the nodes' side's SST (0: the shells').

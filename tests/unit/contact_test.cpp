@@ -440,3 +440,109 @@ TEST_CASE("contact: a force transducer reports the other contacts' forces and ap
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("contact SOFT 2: the bar on the rigid plate, its stiffness from masses and the step") {
+  TempDir dir;
+  // The bar of the first test with segment-based stiffness: k = 0.5 SLSFAC m / dt^2 for a face
+  // node of mass m on the rigid plate. Each face node carries the impact stress rho c v on its
+  // share of the face, whose mass is rho h / 2 per unit area (h = 1 mm): the face sits in by
+  // d = rho c v dt^2 / (0.05 rho h / 2) = 2 c v dt^2 / (0.05 h) while the bar presses.
+  const double c = std::sqrt(210000.0 / 7.85e-9), contact_time = 2.0 * 20.0 / c;
+  const double end = 2e-6 + 3.0 * contact_time;
+  Simulation sim = prepare(dir, header(end) + kBar + rigid_plate(-10, -10, 12, 12) +
+                                    "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,9,3,3\n0,0\n\n"
+                                    "2\n*END\n");
+  REQUIRE(sim.state->contacts.size() == 1);
+  CHECK(sim.state->contacts[0].segment_based);
+  const double mass = 80.0 * 7.85e-9;
+  double impulse = 0.0, lowest = 0.0, step = 0.0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    impulse += s.contacts[0].force_a.z() * s.step;
+    lowest = std::min(lowest, motion(s, 0, kBarNodes).lowest);
+    step = s.step;
+  };
+  run(sim, hooks);
+  REQUIRE(sim.result.reason == solver::StopReason::end_time);
+  const Motion after = motion(*sim.state, 0, kBarNodes);
+  const double pressed = 2.0 * c * kSpeed * step * step / (0.05 * 1.0);
+  MESSAGE("SOFT 2: rebound ", after.velocity.z(), " mm/s, impulse ", impulse, " (m dv ",
+          mass * (after.velocity.z() + kSpeed), "), deepest ", -lowest, " mm against ", pressed,
+          " mm pressed, interface energy ", sim.state->contacts[0].energy);
+  CHECK(impulse == doctest::Approx(mass * (after.velocity.z() + kSpeed)).epsilon(1e-3).scale(0.0));
+  CHECK(after.velocity.z() > 0.9 * kSpeed);
+  CHECK(after.velocity.z() < kSpeed);
+  // A load that comes on at once takes an undamped spring to at most twice its static deflection.
+  CHECK(-lowest > 0.5 * pressed);
+  CHECK(-lowest < 2.0 * pressed);
+}
+
+TEST_CASE("contact SOFT 2: both ways, initial penetrations kept as the baseline") {
+  // The block sunk 0.02 mm into the rigid plate, as a nodes-to-surface contact with SOFT 2:
+  // segment-based contact checks both sides' segments (two passes), and does not move the
+  // nodes out: the initial depth is the baseline, and the block at rest feels no force.
+  TempDir dir;
+  std::string deck = sunk_block("");
+  deck.replace(deck.find("0,0\n\n*END"), 10, "0,0\n\n2\n*END");
+  Simulation sim = prepare(dir, deck);
+  REQUIRE(sim.state->contacts.size() == 1);
+  CHECK(sim.state->contacts[0].passes.size() == 2);
+  CHECK(lowest_z(*sim.state) == doctest::Approx(-0.02).scale(1.0).epsilon(1e-12));
+  double largest = 0.0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    largest = std::max(largest, s.contacts[0].force_a.norm());
+  };
+  run(sim, hooks);
+  REQUIRE(sim.result.reason == solver::StopReason::end_time);
+  CHECK(largest == 0.0);
+  CHECK(std::abs(motion(*sim.state, 0, 27).velocity.z()) < 1e-9);
+}
+
+}  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("contact SOFT 2 holds a steel bar on foam where the standard penalty lets it in") {
+  // A steel bar (2 x 2 x 10 one-millimetre hexahedra) falls at 5 m/s onto a foam block (E
+  // 10 MPa, rho 0.1 g/cm^3, 10 x 10 x 2 elements, bottom fixed). The standard penalty takes
+  // the smaller of the two sides' stiffnesses, the foam's, and the bar's foot sinks through
+  // the foam's face; SOFT 2's spring comes from the masses and the step and holds it.
+  auto sunk = [](int soft) {
+    TempDir dir;
+    Simulation sim = prepare(
+        dir, header(6e-5) +
+                 "*PART\nfoam\n1,1,1\n*PART\nbar\n2,1,2\n*SECTION_SOLID\n1,1\n"
+                 "*MAT_ELASTIC\n1,1e-10,10.0,0.3\n*MAT_ELASTIC\n2,7.85e-9,210000.0,0.3\n" +
+                 box_mesh(10, 10, 2, 1.0, 1, 1, 1, -2.0) +
+                 box_mesh(2, 2, 10, 1.0, 1001, 1001, 2, 0.01) +
+                 "*SET_NODE_LIST_GENERATE\n1\n1,121\n*BOUNDARY_SPC_SET\n1,0,1,1,1,0,0,0\n"
+                 "*SET_PART_LIST\n2\n2\n*INITIAL_VELOCITY_GENERATION\n2,1,0,0,0,-5000\n0,0,0\n"
+                 "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n2,1,3,3\n0,0\n\n" +
+                 std::to_string(soft) + "\n*END\n");
+    // The bar's bottom centre (node 1005, at x = y = 1) and the foam's top node under it (255).
+    auto index = [&](model::Id id) {
+      const auto& ids = sim.state->nodes.ids;
+      return static_cast<solver::Index>(std::find(ids.begin(), ids.end(), id) - ids.begin());
+    };
+    const solver::Index foot = index(1005), face = index(255);
+    REQUIRE(sim.state->nodes.position(0, foot) == sim.state->nodes.position(0, face));
+    double deepest = 0.0;
+    solver::RunHooks hooks;
+    hooks.progress = [&](const solver::State& s) {
+      deepest = std::max(deepest, s.nodes.position(2, face) - s.nodes.position(2, foot));
+    };
+    run(sim, hooks);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    return deepest;
+  };
+  const double standard = sunk(0), segment_based = sunk(2);
+  MESSAGE("steel foot below the foam face: SOFT 0 ", standard, " mm, SOFT 2 ", segment_based,
+          " mm (1 mm elements)");
+  CHECK(standard > 0.1);        // over a tenth of the foam's element
+  CHECK(segment_based < 0.02);  // within 2 % of it
+}
+
+}  // namespace mcdyna::test

@@ -70,10 +70,10 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
     r.diags().error(c2.loc("FS"), "{}: static friction FS = {} must be >= 0", r.display_name(),
                     c.static_friction);
   }
-  if (c.soft == 2 || c.soft == 4 || c.soft == 6) {
+  if (c.soft == 4 || c.soft == 6) {
     r.diags().error(ca.loc("SOFT"),
                     "{}: SOFT = {} is not supported (0 standard penalty, 1 soft "
-                    "constraint)",
+                    "constraint, 2 segment-based)",
                     r.display_name(), c.soft);
   }
   if (!single && !transducer && c.b.type != 5 && c.b.id == 0) {

@@ -100,7 +100,27 @@ Touch find_touch(const State& s, const Pass& p, std::size_t i) {
   return best;
 }
 
-double penalty(const Interface& c, const Pass& p, std::size_t i, std::size_t k, double node_mass) {
+// SOFT 2: the spring of the node's mass and the segment's (the mean of its nodes', +inf for a
+// rigid segment) in series, stiff enough that its period is 2 pi / sqrt(scale) steps.
+double segment_based_penalty(const State& s, const Interface& c, const Pass& p, std::size_t k,
+                             double node_mass) {
+  const double dt = s.step > 0.0 ? s.step : c.initial_step;
+  if (!(dt > 0.0)) return 0.0;
+  double segment_mass = std::numeric_limits<double>::infinity();
+  if (std::isfinite(p.surface.smallest_node_mass[k])) {
+    segment_mass = 0.0;
+    for (const Index n : p.surface.segments[k])
+      segment_mass += 0.25 * s.nodes.mass[static_cast<std::size_t>(n)];
+  }
+  const double pair =
+      std::isinf(segment_mass) ? node_mass : node_mass * segment_mass / (node_mass + segment_mass);
+  const auto pass = static_cast<std::size_t>(&p - c.passes.data());
+  return c.segment_based_scale[pass] * pair / (dt * dt);
+}
+
+double penalty(const State& s, const Interface& c, const Pass& p, std::size_t i, std::size_t k,
+               double node_mass) {
+  if (c.segment_based) return segment_based_penalty(s, c, p, k, node_mass);
   const double segment = p.surface.stiffness[k];
   const double node = p.stiffness[i] > 0.0 ? p.stiffness[i] : segment;  // a node on no element
   double stiffness = c.penalty_scale == PenaltyScale::segment ? segment
@@ -130,7 +150,7 @@ Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t
   const auto k = static_cast<std::size_t>(t.segment);
   const Index node = p.nodes[i];
   const double m = s.nodes.mass[static_cast<std::size_t>(node)];
-  const double stiffness = penalty(c, p, i, k, m);
+  const double stiffness = penalty(s, c, p, i, k, m);
   const std::array<Index, 4>& seg = p.surface.segments[k];
   Vec3 v_segment = Vec3::Zero();
   for (std::size_t j = 0; j < 4; ++j)

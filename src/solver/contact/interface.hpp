@@ -86,13 +86,18 @@ struct Interface {
   double viscous_friction = 0.0;  ///< VC (x VSF): limit of the friction stress
   double damping = 0.0;           ///< VDC / 100: share of critical damping on the normal force
   double birth = 0.0, death = 1.0e20;
-  /// SOFT 1 (and 2, which runs as 1): the stiffness is at least that of a spring whose period
-  /// matches the initial step for the smaller mass.
+  /// SOFT 1: the stiffness is at least that of a spring whose period matches the initial step
+  /// for the smaller mass.
   bool soft_constraint = false;
   double soft_scale = 0.1;  ///< SOFSCL
   PenaltyScale penalty_scale = PenaltyScale::smaller;
   int sort_interval = 10;     ///< cycles between bucket sorts (NSBCS; sooner if nodes moved far)
   double initial_step = 0.0;  ///< the first solution step, for SOFT 1 (0 until known)
+  /// SOFT 2 (segment-based penalty): k = scale m1 m2 / (m1 + m2) / dt^2 with the current step,
+  /// m1 the node's mass and m2 the segment's (the mean of its nodes'); `segment_based_scale`
+  /// per pass is 0.5 SLSFAC times the segment side's SFS or SFM.
+  bool segment_based = false;
+  std::array<double, 2> segment_based_scale{};
   InitialPenetration initial_penetration = InitialPenetration::move;
   /// A force transducer has no passes and this active: transducer_pass fills its resultants.
   Transducer sensor;
