@@ -24,6 +24,8 @@ const char* material_name(model::MaterialKind k) {
       return "PIECEWISE_LINEAR_PLASTICITY";
     case model::MaterialKind::null_material:
       return "NULL";
+    case model::MaterialKind::spotweld:
+      return "SPOTWELD";
   }
   return "?";
 }

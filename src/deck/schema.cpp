@@ -32,7 +32,8 @@ constexpr std::array kDimensions{"-",
                                  "area",
                                  "energy_per_volume",
                                  "stiffness_per_length",
-                                 "strain"};
+                                 "strain",
+                                 "moment"};
 
 struct LineCursor {
   std::string_view file;

@@ -116,12 +116,18 @@ void check_deformable_beam(const Part& p, const Section& s, const Material& mat,
                            core::Diagnostics& diags) {
   const BeamSettings& b = s.beam;
   const int f = s.element_formulation;
-  if (f != 1 && f != 2) {
+  if (f != 1 && f != 2 && f != 9) {
     diags.error(b.formulation_loc,
                 "part {}: beam ELFORM {} of section {} is not supported (1 Hughes-Liu, 2 "
-                "Belytschko-Schwer resultant)",
+                "Belytschko-Schwer resultant, 9 spot weld)",
                 p.id, f, s.id);
     return;
+  }
+  // The spot-weld beam and its material go together.
+  if ((f == 9) != (mat.kind == MaterialKind::spotweld)) {
+    diags.error(f == 9 ? p.material_loc : b.formulation_loc, "part {}: {}", p.id,
+                f == 9 ? "the spot-weld beam (ELFORM 9) needs *MAT_SPOTWELD"
+                       : "*MAT_SPOTWELD runs on spot-weld beams (ELFORM 9) only");
   }
   if (f == 2 && mat.kind != MaterialKind::elastic) {
     diags.error(p.material_loc,
@@ -135,13 +141,13 @@ void check_deformable_beam(const Part& p, const Section& s, const Material& mat,
                 "*MAT_PLASTIC_KINEMATIC or *MAT_PIECEWISE_LINEAR_PLASTICITY",
                 p.id);
   }
-  if (f == 1 && b.cross_section == 2) {
+  if (f != 2 && b.cross_section == 2) {
     diags.error(b.cross_section_loc,
                 "part {}: CST 2 (user integration rule, *INTEGRATION_BEAM) of section {} is not "
                 "supported (0 rectangular, 1 tubular)",
                 p.id, s.id);
   }
-  if (f == 1 &&
+  if (f != 2 &&
       (b.quadrature < 1.0 || b.quadrature > 5.0 || b.quadrature != std::floor(b.quadrature))) {
     diags.error(b.quadrature_loc,
                 "part {}: QR/IRID = {:g} of section {} is not supported (1-5; user rules "
@@ -230,6 +236,13 @@ void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
                 "part {}: *MAT_NULL solids need an equation of state (EOSID): it gives all of "
                 "their stress",
                 p.id);
+  }
+  if (mat->kind == MaterialKind::spotweld && use.beams == 0 && use.solids + use.shells > 0) {
+    diags.error(
+        p.material_loc,
+        "part {}: *MAT_SPOTWELD runs on spot-weld beams (ELFORM 9) only; solid (hexahedron) "
+        "welds are not supported",
+        p.id);
   }
   if (mat->kind == MaterialKind::null_material && s->kind == SectionKind::solid_spg) {
     diags.error(p.section_loc, "part {}: *MAT_NULL is not available on SPG sections", p.id);

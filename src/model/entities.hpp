@@ -194,13 +194,27 @@ struct NullMaterial {
   double youngs_modulus = 0.0, poisson_ratio = 0.0;  ///< YM, PR (null shells and beams)
 };
 
+/// *MAT_SPOTWELD (MAT_100) on spot-weld beams (ELFORM 9): elastic-plastic with isotropic
+/// hardening and the weld's failure criteria.
+struct SpotweldMaterial {
+  double youngs_modulus = 0.0, poisson_ratio = 0.0;
+  double yield_stress = 0.0, hardening_modulus = 0.0;  ///< SIGY, EH (plastic modulus)
+  double mass_scaling_step = 0.0;                      ///< DT
+  double failure_time = 0.0;                           ///< TFAIL (0: none)
+  double failure_strain = 0.0;                         ///< EFAIL (0: none)
+  /// NRR NRS NRT MRR MSS MTT: the resultants at failure (0: that term is not considered).
+  std::array<double, 6> failure_resultants{};
+  double filter_vectors = 0.0;  ///< NF
+};
+
 enum class MaterialKind {
   elastic,
   plastic_kinematic,
   johnson_cook,
   rigid,
   piecewise_linear,
-  null_material
+  null_material,
+  spotweld
 };
 
 struct Material {
@@ -214,6 +228,7 @@ struct Material {
   RigidMaterial rigid;
   PiecewiseLinearPlasticityMaterial piecewise_linear;
   NullMaterial null_material;
+  SpotweldMaterial spotweld;
   core::SourceLoc loc;
 };
 

@@ -166,6 +166,24 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
       out.pressure_cutoff = mat.null_material.pressure_cutoff;
       out.spall = 1;
       break;
+    case model::MaterialKind::spotweld: {
+      // Isotropic hardening with EH the plastic modulus (MAT_003 with BETA 1 and no rate); EFAIL
+      // erodes a weld whose every fibre reached it, unless the resultants decide.
+      const auto& w = mat.spotweld;
+      PlasticKinematicModel k;
+      k.yield_stress = w.yield_stress;
+      k.hardening_modulus = w.hardening_modulus;
+      k.isotropic_fraction = 1.0;
+      out.model = k;
+      elastic_moduli(out, w.youngs_modulus, w.poisson_ratio);
+      out.failure_time = w.failure_time;
+      out.failure_resultants = w.failure_resultants;
+      const bool by_resultants =
+          std::any_of(w.failure_resultants.begin(), w.failure_resultants.end(),
+                      [](double f) { return f > 0.0; });
+      out.failure_strain = by_resultants ? 0.0 : w.failure_strain;
+      break;
+    }
     case model::MaterialKind::rigid:
       break;  // rigid parts become rigid bodies, never elements
   }

@@ -254,3 +254,85 @@ TEST_CASE("what the beams cannot run is refused at its deck location") {
   CHECK(collinear.find("beam element 1 of part 1: its orientation (node 3) lies along the beam") !=
         std::string::npos);
 }
+
+namespace {
+
+// The lap joint of the spot-weld test (joins_test.cpp), t, mm, s: plate A (10 x 10 mm, 10 mm
+// thick, three corners held) at z = 0, plate B (1 mm) at z = 1, joined from A's free corner
+// (node 1) to the corner above it (node 5) by a spot-weld beam (ELFORM 9, a 2 mm round rod,
+// *MAT_SPOTWELD `weld` card 1 after MID RO and card 2), node 5 pulled by 1e4 t N along
+// `direction`. Returns when the weld eroded (-1: it held).
+double beam_weld_fails_at(const std::string& weld, const std::string& direction, double end) {
+  test::TempDir dir;
+  test::Simulation sim = test::prepare(
+      dir, fmt::format("*KEYWORD\n*CONTROL_TERMINATION\n{}\n", end) +
+               "*PART\nA\n1,2,1\n*PART\nB\n2,1,1\n*PART\nweld\n3,3,2\n"
+               "*SECTION_SHELL\n1,2\n1.0,1.0,1.0,1.0\n*SECTION_SHELL\n2,2\n10.0,10.0,10.0,10.0\n"
+               "*SECTION_BEAM\n3,9,0.8333333333,2,1\n2.0,2.0\n"
+               "*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n*MAT_SPOTWELD\n2,7.85e-9," +
+               weld +
+               "*NODE\n1,0,0,0\n2,10,0,0\n3,10,10,0\n4,0,10,0\n5,0,0,1\n6,10,0,1\n7,10,10,1\n"
+               "8,0,10,1\n9,5,5,0\n"
+               "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,2,5,6,7,8\n*ELEMENT_BEAM\n3,3,1,5,9\n"
+               "*SET_NODE_LIST\n1\n2,3,4\n*BOUNDARY_SPC_SET\n1,0,1,1,1,1,1,1\n" +
+               direction + "*DEFINE_CURVE\n1\n0,0\n1,10000\n*END\n");
+  REQUIRE(sim.state->beams.count() == 1);
+  double failed = -1.0;
+  long cycles_since = 0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    if (failed < 0.0 && s.beams.eroded[0]) failed = s.time;
+  };
+  hooks.stop_requested = [&] { return failed >= 0.0 && ++cycles_since > 20; };
+  test::run(sim, hooks);
+  return failed;
+}
+
+}  // namespace
+
+TEST_CASE("spot-weld beams fail at the resultants, the time or the strain *MAT_SPOTWELD names") {
+  // Pulled slowly (the joint's own period is some 0.1 ms against the 10 ms ramp), the weld
+  // carries F = 1e4 t: NRR 100 N fails it at 10 ms, NRS = NRT = 200 N at 20 ms (the weld's s
+  // axis points to node 9, 45 degrees off the pull: its two shear terms add up to (F/200)^2),
+  // and both
+  // (F/100)^2 + (F/200)^2 = 1 at F = 89.44 N, 8.944 ms. The weld is stiff and elastic here
+  // (SIGY 1e4 MPa); the shear's lever to the weld's end enters only a moment term, none here.
+  const std::string strong = "210e3,0.3,1e4,0\n";
+  const std::string normal = "*LOAD_NODE_POINT\n5,3,1,1.0\n";
+  const std::string shear = "*LOAD_NODE_POINT\n5,1,1,1.0\n";
+  const double combined = 1.0 / std::sqrt(1e-4 + 2.5e-5) / 1e4;
+  struct Case {
+    std::string what, weld, load;
+    double expected;
+  };
+  for (const Case& c :
+       {Case{"axial", strong + "0,100.0\n", normal, 0.01},
+        Case{"shear", strong + "0,0,200.0,200.0\n", shear, 0.02},
+        Case{"both", strong + "0,100.0,200.0,200.0\n", normal + shear, combined},
+        Case{"TFAIL", "210e3,0.3,1e4,0,0,5e-3\n", normal, 5e-3},
+        // SIGY 50 MPa, EH 1000 MPa on 3.1416 mm^2: every fibre reaches EFAIL 0.1 when
+        // F = A (SIGY + EH EFAIL) = 471.2 N (47.12 ms; the elastic strain is left out of EH's
+        // plastic strain).
+        Case{"EFAIL", "210e3,0.3,50.0,1000.0\n0.1\n", normal, M_PI * (50.0 + 100.0) / 1e4}}) {
+    const double failed = beam_weld_fails_at(c.weld, c.load, c.expected * 1.05);
+    MESSAGE(c.what, ": the weld failed at ", failed * 1e3, " ms against ", c.expected * 1e3,
+            " ms (", 100.0 * (failed / c.expected - 1.0), " %)");
+    CHECK(std::abs(failed / c.expected - 1.0) < 0.01);
+  }
+  // Pushed together it holds: the axial term counts tension only.
+  CHECK(beam_weld_fails_at(strong + "0,100.0\n", "*LOAD_NODE_POINT\n5,3,1,-1.0\n", 0.012) < 0.0);
+}
+
+TEST_CASE("the spot-weld beam and *MAT_SPOTWELD go together") {
+  test::TempDir dir;
+  const auto loaded = test::load_file(
+      dir.write("deck.k",
+                "*KEYWORD\n*CONTROL_TERMINATION\n1e-3\n*NODE\n1,0,0,0\n2,1,0,0\n3,2,0,0\n4,0,1,0\n"
+                "*PART\nweld on elastic\n1,9,1\n*PART\nspotweld on Hughes-Liu\n2,1,2\n"
+                "*SECTION_BEAM\n9,9,1.0,2,1\n1.0\n*SECTION_BEAM\n1,1,1.0,2,1\n1.0\n"
+                "*MAT_ELASTIC\n1,7.85e-9,210e3,0.3\n*MAT_SPOTWELD\n2,7.85e-9,210e3,0.3,300\n"
+                "*ELEMENT_BEAM\n1,1,1,2,4\n2,2,2,3,4\n*END\n"),
+      true);
+  CHECK(loaded->has_message("part 1: the spot-weld beam (ELFORM 9) needs *MAT_SPOTWELD"));
+  CHECK(loaded->has_message("part 2: *MAT_SPOTWELD runs on spot-weld beams (ELFORM 9) only"));
+}

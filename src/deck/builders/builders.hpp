@@ -38,6 +38,7 @@ void section_beam(KeywordRecord& r, model::ModelDatabase& m);
 // materials.cpp
 void mat_elastic(KeywordRecord& r, model::ModelDatabase& m);
 void mat_null(KeywordRecord& r, model::ModelDatabase& m);
+void mat_spotweld(KeywordRecord& r, model::ModelDatabase& m);
 void mat_plastic_kinematic(KeywordRecord& r, model::ModelDatabase& m);
 void mat_johnson_cook(KeywordRecord& r, model::ModelDatabase& m);
 void mat_rigid(KeywordRecord& r, model::ModelDatabase& m);

@@ -59,6 +59,38 @@ void mat_null(KeywordRecord& r, model::ModelDatabase& m) {
   m.materials.push_back(std::move(mat));
 }
 
+void mat_spotweld(KeywordRecord& r, model::ModelDatabase& m) {
+  const Row& c1 = r.card("1");
+  const Row& c2 = r.card("2");
+  model::Material mat = start(r, c1, model::MaterialKind::spotweld);
+  auto& w = mat.spotweld;
+  w.youngs_modulus = c1.real("E");
+  w.poisson_ratio = c1.real("PR");
+  w.yield_stress = c1.real("SIGY");
+  w.hardening_modulus = c1.real("EH");
+  w.mass_scaling_step = c1.real("DT");
+  w.failure_time = c1.real("TFAIL");
+  w.failure_strain = c2.real("EFAIL");
+  const int nrr = c2.index("NRR");
+  for (int k = 0; k < 6; ++k)
+    w.failure_resultants[static_cast<std::size_t>(k)] = c2.real(nrr + k);
+  w.filter_vectors = c2.real("NF");
+  check_poisson(r, c1);
+  if (w.mass_scaling_step > 0.0) {
+    r.diags().warning(c1.loc("DT"),
+                      "*MAT_SPOTWELD {}: DT = {:g}: the welds' mass is not scaled; their own "
+                      "step enters the run's",
+                      mat.id, w.mass_scaling_step);
+  }
+  if (w.filter_vectors > 0.0) {
+    r.diags().warning(c2.loc("NF"),
+                      "*MAT_SPOTWELD {}: NF = {:g}: the resultants are not filtered (failure and "
+                      "output read them as they are)",
+                      mat.id, w.filter_vectors);
+  }
+  m.materials.push_back(std::move(mat));
+}
+
 void mat_plastic_kinematic(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& c1 = r.card("1");
   const Row& c2 = r.card("2");

@@ -13,6 +13,7 @@ const std::vector<BuilderEntry>& builder_table() {
       {"ELEMENT_BEAM", element_beam},
       {"CONTROL_RIGID", control_rigid},
       {"MAT_NULL", mat_null},
+      {"MAT_SPOTWELD", mat_spotweld},
       {"PART_INERTIA", part_inertia},
       {"PART", part},
       {"SECTION_SOLID", section_solid},

@@ -22,8 +22,8 @@ class BeamsBlock final : public Block {
   }
 
   void forces(State& s, ForceReport& r) override {
-    const ElementPassResult e =
-        beam_element_pass(s, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
+    const ElementPassResult e = beam_element_pass(
+        s, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt, s.time});
     gather_beam_forces(s);
     if (e.mass_changed) refresh_added_mass(s);
     // Elements are numbered solids first, then shells, then beams (element_ref.hpp).

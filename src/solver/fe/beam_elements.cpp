@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <variant>
 
@@ -111,6 +112,31 @@ double beam_step(const BeamContext& c, Index e, double length) {
   return std::min(axial, c.st.beams.flexural_step[i] * length / c.st.beams.initial_length[i]);
 }
 
+// *MAT_SPOTWELD on a spot-weld beam: it fails at TFAIL, or when
+// (max(N, 0) / NRR)^2 + (Vs / NRS)^2 + (Vt / NRT)^2 + (T / MRR)^2 + (Ms / MSS)^2 + (Mt / MTT)^2
+// reaches 1 (terms with a zero strength left out; the axial term in tension only), the bending
+// moments taken at the weld's more loaded end: |Ms| + L |Vt| / 2, |Mt| + L |Vs| / 2 (the
+// resultants are the element's mid-length values, the shear adds its lever to either end).
+bool spot_weld_fails(const BeamContext& c, const double* res, double length) {
+  const Material& m = c.mat;
+  if (m.failure_time > 0.0 && c.in.time >= m.failure_time) return true;
+  const std::array<double, 6> load = {std::max(res[0], 0.0),
+                                      res[1],
+                                      res[2],
+                                      res[3],
+                                      std::abs(res[4]) + 0.5 * length * std::abs(res[2]),
+                                      std::abs(res[5]) + 0.5 * length * std::abs(res[1])};
+  double sum = 0.0;
+  bool any = false;
+  for (std::size_t k = 0; k < 6; ++k) {
+    if (!(m.failure_resultants[k] > 0.0)) continue;
+    any = true;
+    const double ratio = load[k] / m.failure_resultants[k];
+    sum += ratio * ratio;
+  }
+  return any && sum >= 1.0;
+}
+
 // Hughes-Liu: the fibres' uniaxial-stress updates and the resultants they give.
 template <class Model>
 ElementOutcome hughes_liu(BeamContext& c, const Model& model, Index e) {
@@ -181,7 +207,8 @@ ElementOutcome hughes_liu(BeamContext& c, const Model& model, Index e) {
   f.m1 = Vec3(-torque, -ms + 0.5 * l * vt, -mt - 0.5 * l * vs);
   f.m2 = Vec3(torque, ms + 0.5 * l * vt, mt - 0.5 * l * vs);
   store_ends(c.st, e, a, f);
-  return {beam_step(c, e, l), false, b.points > 0 && failed == b.points};
+  const bool fibres_failed = b.points > 0 && failed == b.points;
+  return {beam_step(c, e, l), false, fibres_failed || spot_weld_fails(c, res, l)};
 }
 
 // Belytschko-Schwer: elastic resultants; the end moments from the deformational rotation rates

@@ -21,6 +21,7 @@ struct BeamPassInput {
   double step = 0.0;               ///< dt the current velocities were integrated over
   double scale_factor = 0.9;       ///< TSSFAC
   double mass_scaling_step = 0.0;  ///< target dt with mass scaling, 0 = off
+  double time = 0.0;               ///< t^n, for *MAT_SPOTWELD's TFAIL
 };
 
 ElementPassResult beam_element_pass(State& state, const BeamPassInput& input);

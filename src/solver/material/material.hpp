@@ -73,6 +73,10 @@ struct Material {
   int spall = 2;
 
   double failure_strain = 0.0;  ///< MAT_003 FS / MAT_024 FAIL: erode at this plastic strain
+  /// *MAT_SPOTWELD: TFAIL (0: none) and NRR NRS NRT MRR MSS MTT (0: term not considered), read
+  /// by the spot-weld beam on its resultants.
+  double failure_time = 0.0;
+  std::array<double, 6> failure_resultants{};
   EosParams eos;
   double erosion_plastic_strain = 0.0;  ///< *MAT_ADD_EROSION EPSP (0 none)
 
