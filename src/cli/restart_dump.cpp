@@ -24,7 +24,7 @@ constexpr std::array<char, 20> kMagic = {'m', 'c', 'd', 'y', 'n', 'a', ' ', 'r',
 constexpr std::uint32_t kVersion = 8;  // 2: the layout string; 3: checksummed sections;
                                        // 4: the node owners of a run over several processes;
                                        // 5: shells and nodal rotations; 6: joints; 7: beams, welds;
-                                       // 8: force transducers, SOFT 2
+                                       // 8: force transducers, SOFT 2, C0 triangles
 constexpr std::string_view kHeader = "header", kResume = "resume point", kOutputs = "outputs",
                            kEnd = "end of dump";
 

@@ -84,10 +84,10 @@ void check_controls(const ModelDatabase& m, core::Diagnostics& diags, bool has_e
 void check_deformable_shell(const Part& p, const Section& s, core::Diagnostics& diags) {
   const ShellSettings& sh = s.shell;
   const int f = s.element_formulation;
-  if (f != 2 && f != 0 && f != 16) {
+  if (f != 2 && f != 0 && f != 16 && f != 4) {
     diags.error(sh.formulation_loc,
                 "part {}: shell ELFORM {} of section {} is not supported for deformable shells "
-                "(2 Belytschko-Tsay, 16 fully integrated)",
+                "(2 Belytschko-Tsay, 4 C0 triangle, 16 fully integrated)",
                 p.id, s.element_formulation, s.id);
   }
   if (sh.integration_points > 10) {

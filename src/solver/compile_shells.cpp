@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solver/compile.hpp"
+#include "solver/fe/shell_c0_triangle.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -121,10 +122,8 @@ void shell_moduli(const model::Material& mat, Material& out, const model::Part& 
 
 // *CONTROL_SHELL: notes for the fields that do nothing here.
 void note_shell_control(const model::ShellControl& c, core::Diagnostics& d) {
-  if (c.sort_triangles != 0)
-    d.note(c.loc,
-           "*CONTROL_SHELL: ESORT {}: triangles run as degenerate Belytschko-Tsay "
-           "quadrilaterals (the C0 triangle is not available)",
+  if (c.sort_triangles >= 2)
+    d.note(c.loc, "*CONTROL_SHELL: ESORT {}: triangles run as C0 triangles (as ESORT 1)",
            c.sort_triangles);
   if (c.warping == 1)
     d.note(c.loc, "*CONTROL_SHELL: BWC 1 (Belytschko-Wong-Chiang warping) runs as BWC 2");
@@ -184,7 +183,10 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
     ShellBlock b;
     b.part = static_cast<Index>(p);
     const bool full = sec->element_formulation == 16;
-    b.formulation = full ? ShellFormulation::fully_integrated : ShellFormulation::belytschko_tsay;
+    b.formulation = full                            ? ShellFormulation::fully_integrated
+                    : sec->element_formulation == 4 ? ShellFormulation::c0_triangle
+                                                    : ShellFormulation::belytschko_tsay;
+    b.sort_triangles = control.sort_triangles >= 1;
     b.in_plane_points = full ? 4 : 1;
     b.layers = std::clamp(set.integration_points == 0 ? 2 : set.integration_points, 1, 10);
     if (set.quadrature == 1.0 && b.layers > 1)
@@ -241,10 +243,28 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
       const double mass = (mm.density * t + set.nonstructural_mass) * area;
       const bool triangle = conn[3] == conn[2];
       const int corners = triangle ? 3 : 4;
+      if (!triangle && b.formulation == ShellFormulation::c0_triangle) {
+        d.error(el.loc,
+                "shell element {} of part {} has four nodes; section {} is the C0 triangle "
+                "(ELFORM 4), for three-node shells (N4 = N3)",
+                el.id, part.id, sec->id);
+      }
       // Rotary inertia (Belytschko, Lin and Tsay 1984): the lumped translational mass times
       // max(t^2 / 12, A / 8), scaled up so that the rotations never set the step.
-      const double inertia =
-          control.rotary_scale * std::max(t * t / 12.0, area / 8.0) * mass / corners;
+      double inertia = control.rotary_scale * std::max(t * t / 12.0, area / 8.0) * mass / corners;
+      if (triangle && (b.formulation == ShellFormulation::c0_triangle || b.sort_triangles)) {
+        std::array<Vec3, 4> x;
+        for (std::size_t c = 0; c < 4; ++c)
+          x[c] = nd.initial.col(conn[c]);
+        const double e_plane = youngs_modulus(mm) / (1.0 - std::pow(poisson_ratio(mm), 2));
+        double longest = 0.0;
+        for (std::size_t c = 0; c < 3; ++c)
+          longest = std::max(longest, (x[(c + 1) % 3] - x[c]).norm());
+        const double step = 2.0 * area / longest / std::sqrt(e_plane / mm.density);
+        inertia = std::max(
+            inertia, shell_kernel::c0_triangle_inertia(
+                         x.data(), b.shear_factor * mm.shear_modulus * t, mass / corners, step));
+      }
       for (int c = 0; c < corners; ++c) {
         nd.mass[static_cast<std::size_t>(conn[static_cast<std::size_t>(c)])] += mass / corners;
         rotary[static_cast<std::size_t>(conn[static_cast<std::size_t>(c)])] += inertia;

@@ -40,7 +40,7 @@ constexpr std::array<std::size_t, 27> kDumpedSizes = {sizeof(Nodes),
                                                       sizeof(WeldState)};
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
-static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 248,  80,
+static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 256,  80,
                                                           584, 72,  112, 128, 240, 3000, 1992,
                                                           96,  112, 432, 352, 144, 192,  136,
                                                           56,  64,  304, 624, 432, 120},
@@ -86,9 +86,10 @@ void fields(Ar& ar, Solids& s) {
 
 template <class Ar>
 void fields(Ar& ar, ShellBlock& b) {
-  ar(b.part, b.begin, b.end, b.point_begin, b.in_plane_points, b.layers, b.formulation, b.material,
-     b.hourglass, b.bending_hourglass, b.warping_hourglass, b.shear_factor, b.thickness_update,
-     b.plane_stress_iterations, b.reference_surface, b.layer_z, b.layer_weight);
+  ar(b.part, b.begin, b.end, b.point_begin, b.in_plane_points, b.layers, b.formulation,
+     b.sort_triangles, b.material, b.hourglass, b.bending_hourglass, b.warping_hourglass,
+     b.shear_factor, b.thickness_update, b.plane_stress_iterations, b.reference_surface, b.layer_z,
+     b.layer_weight);
 }
 
 template <class Ar>

@@ -102,6 +102,7 @@ struct Solids {
 enum class ShellFormulation {
   belytschko_tsay,   ///< ELFORM 2: one in-plane point, corotational, hourglass control
   fully_integrated,  ///< ELFORM 16: 2x2 in-plane points, assumed transverse shear strain
+  c0_triangle,       ///< ELFORM 4: three-node Mindlin triangle, MITC3 shear (shell_c0_triangle.hpp)
 };
 
 /// Shell elements of one part: a contiguous range [begin, end) of the shell arrays.
@@ -114,6 +115,9 @@ struct ShellBlock {
   int in_plane_points = 1;  ///< 1 (ELFORM 2) or 4 (ELFORM 16)
   int layers = 2;           ///< NIP: points through the thickness
   ShellFormulation formulation = ShellFormulation::belytschko_tsay;
+  /// *CONTROL_SHELL ESORT >= 1: the block's triangles run as C0 triangles, not as degenerate
+  /// quadrilaterals of its formulation.
+  bool sort_triangles = false;
   Index material = 0;
   HourglassParams hourglass;       ///< IHQ, QM (membrane)
   double bending_hourglass = 0.1;  ///< QB

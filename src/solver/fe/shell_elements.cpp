@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "solver/fe/element_loop.hpp"
+#include "solver/fe/shell_c0_triangle.hpp"
 #include "solver/fe/shell_fully_integrated.hpp"
 #include "solver/fe/shell_kernel.hpp"
 
@@ -146,7 +147,12 @@ void block_pass(ShellContext& c, const Model& model, fe::PassTotals& totals) {
       fe::ElementArrays{s.eroded, s.corner_force, 24, s.mass, s.added_mass, s.time_step},
       c.in.scale_factor, c.in.mass_scaling_step, [](Index) { return false; },
       [&](Index e) {
-        ElementOutcome o = c.block.formulation == ShellFormulation::fully_integrated
+        const bool triangle =
+            s.nodes[static_cast<std::size_t>(e)][3] == s.nodes[static_cast<std::size_t>(e)][2];
+        ElementOutcome o = c.block.formulation == ShellFormulation::c0_triangle ||
+                                   (triangle && c.block.sort_triangles)
+                               ? c0_triangle(c, model, e)
+                           : c.block.formulation == ShellFormulation::fully_integrated
                                ? fully_integrated(c, model, e)
                                : belytschko_tsay(c, model, e);
         if (!std::isfinite(s.internal_energy[static_cast<std::size_t>(e)])) o.step = NAN;
