@@ -37,6 +37,10 @@ std::string process_problem(const solver::State& s, const core::Communicator& co
     return "--spg-angular-budget runs on one process only; run it without mpirun";
   if (step_log && comm.size() > 1)
     return "--step-log runs on one process only; run it without mpirun";
+  // A tie moves force and mass between nodes any process may own; the ties are not split yet.
+  if (!s.ties.empty() && comm.size() > 1)
+    return "tied contacts (*CONTACT_TIED_...) run on one process only; run without mpirun "
+           "(--threads N uses the cores of one machine)";
   long entities = s.solids.count() + s.shells.count() + s.beams.count();
   for (const solver::spg::Domain& d : s.spg)
     entities += d.count();

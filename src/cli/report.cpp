@@ -44,6 +44,8 @@ const char* contact_name(model::ContactKind k) {
       return "SURFACE_TO_SURFACE";
     case model::ContactKind::force_transducer:
       return "FORCE_TRANSDUCER_PENALTY";
+    case model::ContactKind::tied:
+      return "TIED";
   }
   return "?";
 }

@@ -15,7 +15,9 @@ enum class ContactKind {
   surface_to_surface,
   /// *CONTACT_FORCE_TRANSDUCER_PENALTY: applies nothing; reports the other contacts' forces on
   /// side A (only those from side B when B is given).
-  force_transducer
+  force_transducer,
+  /// *CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE: side A's nodes held on side B.
+  tied
 };
 
 /// Side of a contact: SURFA/SURFB with its type code (keywords.md §2.15).

@@ -98,6 +98,7 @@ void add_body_load_blocks(State& s, Blocks& blocks);         // loads/condition_
 void add_applied_load_blocks(State& s, Blocks& blocks);      // loads/applied_loads.cpp
 void add_global_damping_blocks(State& s, Blocks& blocks);    // loads/global_damping.cpp
 void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
+void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
 
 /// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
 std::string element_name(const State& s, Index element);

@@ -21,6 +21,7 @@ Blocks make_blocks(State& s) {
       add_applied_load_blocks,
       add_global_damping_blocks,
       add_contact_blocks,
+      add_tie_blocks,  // last: it passes every force on a slave node to its segment
   };
   Blocks blocks;
   for (const AddBlocks add : kFormulations)

@@ -300,6 +300,14 @@ struct JointStiffnessState {
   double work = 0.0;                    ///< done on the springs (stored and dissipated)
 };
 
+/// A slave node of a tied contact (*CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE) held
+/// on its master segment at the point `weights` name (contact/ties.cpp).
+struct Tie {
+  Index slave = 0;
+  std::array<Index, 4> masters{};
+  std::array<double, 4> weights{};
+};
+
 /// A spot weld (*CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT): the rigid body of
 /// its two nodes until it fails (rigid/welds.cpp).
 struct WeldState {
@@ -435,6 +443,7 @@ struct State {
   std::vector<NodalMotion> nodal_motions;
   std::vector<RigidWallState> rigid_walls;
   std::vector<contact::Interface> contacts;
+  std::vector<Tie> ties;  ///< tied contacts' slave nodes, by slave node (deck data)
   std::vector<BodyLoadState> body_loads;
   std::vector<PointLoadState> point_loads;
   std::vector<PressureLoadState> pressure_loads;

@@ -161,6 +161,6 @@ TEST_CASE("all builders run on a deck using every supported keyword without inte
   CHECK(m.nodes.size() == 12);
   CHECK(m.solids.size() == 1);
   CHECK(m.shells.size() == 1);
-  CHECK(m.contacts.size() == 6);
+  CHECK(m.contacts.size() == 8);
   CHECK(m.outputs.ascii.size() == 7);
 }

@@ -1,4 +1,4 @@
-// The six *CONTACT_ keywords share one card layout (keywords.md §2.15) and one builder.
+// The *CONTACT_ keywords share one card layout (keywords.md §2.15) and one builder.
 #include "deck/builders/builders.hpp"
 
 namespace mcdyna::deck::builders {
@@ -12,6 +12,9 @@ model::ContactKind kind_of(std::string_view schema_name) {
   if (schema_name == "CONTACT_AUTOMATIC_SINGLE_SURFACE") return K::automatic_single_surface;
   if (schema_name == "CONTACT_NODES_TO_SURFACE") return K::nodes_to_surface;
   if (schema_name == "CONTACT_FORCE_TRANSDUCER_PENALTY") return K::force_transducer;
+  if (schema_name == "CONTACT_TIED_NODES_TO_SURFACE" ||
+      schema_name == "CONTACT_TIED_SURFACE_TO_SURFACE")
+    return K::tied;
   return K::surface_to_surface;
 }
 

@@ -45,6 +45,8 @@ const std::vector<BuilderEntry>& builder_table() {
       {"CONTACT_NODES_TO_SURFACE", contact},
       {"CONTACT_SURFACE_TO_SURFACE", contact},
       {"CONTACT_FORCE_TRANSDUCER_PENALTY", contact},
+      {"CONTACT_TIED_NODES_TO_SURFACE", contact},
+      {"CONTACT_TIED_SURFACE_TO_SURFACE", contact},
       {"BOUNDARY_SPC_NODE", boundary_spc},
       {"BOUNDARY_SPC_SET", boundary_spc},
       {"BOUNDARY_PRESCRIBED_MOTION_NODE", boundary_prescribed_motion},
