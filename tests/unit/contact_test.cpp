@@ -286,6 +286,18 @@ std::string sunk_block(const std::string& control) {
          "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
 }
 
+// Runs `sim` to its end and returns the largest contact force contact 1 applied.
+double largest_contact_force(Simulation& sim) {
+  double largest = 0.0;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    largest = std::max(largest, s.contacts[0].force_a.norm());
+  };
+  run(sim, hooks);
+  REQUIRE(sim.result.reason == solver::StopReason::end_time);
+  return largest;
+}
+
 double lowest_z(const solver::State& s) {
   double z = 1e30;
   for (solver::Index n = 0; n < 27; ++n)
@@ -352,13 +364,7 @@ TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or t
     Simulation sim = prepare(dir, sunk_block(control));
     const bool tracked = !control.empty();
     CHECK(lowest_z(*sim.state) == doctest::Approx(tracked ? -0.02 : 0.0).scale(1.0).epsilon(1e-12));
-    double largest = 0.0;
-    solver::RunHooks hooks;
-    hooks.progress = [&](const solver::State& s) {
-      largest = std::max(largest, s.contacts[0].force_a.norm());
-    };
-    run(sim, hooks);
-    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    const double largest = largest_contact_force(sim);
     MESSAGE((tracked ? "IGNORE 1" : "IGNORE 0"), ": largest contact force ", largest);
     CHECK(largest == 0.0);
     CHECK(std::abs(motion(*sim.state, 0, 27).velocity.z()) < 1e-9);
@@ -490,14 +496,7 @@ TEST_CASE("contact SOFT 2: both ways, initial penetrations kept as the baseline"
   REQUIRE(sim.state->contacts.size() == 1);
   CHECK(sim.state->contacts[0].passes.size() == 2);
   CHECK(lowest_z(*sim.state) == doctest::Approx(-0.02).scale(1.0).epsilon(1e-12));
-  double largest = 0.0;
-  solver::RunHooks hooks;
-  hooks.progress = [&](const solver::State& s) {
-    largest = std::max(largest, s.contacts[0].force_a.norm());
-  };
-  run(sim, hooks);
-  REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  CHECK(largest == 0.0);
+  CHECK(largest_contact_force(sim) == 0.0);
   CHECK(std::abs(motion(*sim.state, 0, 27).velocity.z()) < 1e-9);
 }
 

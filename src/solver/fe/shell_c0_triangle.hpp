@@ -120,15 +120,7 @@ fe::ElementOutcome c0_triangle(ShellContext& c, const Model& model, Index e) {
   const Corners k = corners(c.st, e);
   const Frame f = triangle_frame(k.x);
   if (!(f.area > 0.0)) return {0.0, true, false};
-  // The corners' velocities and rotation rates in the frame.
-  double vx[3], vy[3], vz[3], tx[3], ty[3];
-  for (int n = 0; n < 3; ++n) {
-    vx[n] = k.v[n].dot(f.e1);
-    vy[n] = k.v[n].dot(f.e2);
-    vz[n] = k.v[n].dot(f.e3);
-    tx[n] = k.w[n].dot(f.e1);
-    ty[n] = k.w[n].dot(f.e2);
-  }
+  const auto [vx, vy, vz, tx, ty] = in_frame(k, f, 3);
   Rates r{};
   for (int n = 0; n < 3; ++n) {
     r.d[0] += f.b1[n] * vx[n];

@@ -70,14 +70,7 @@ fe::ElementOutcome fully_integrated(ShellContext& c, const Model& model, Index e
   const auto i = static_cast<std::size_t>(e);
   const auto [k, f, out] = start_element(c.st, e);
   if (!(f.area > 0.0)) return {0.0, true, false};
-  double vx[4], vy[4], vz[4], tx[4], ty[4];
-  for (int n = 0; n < 4; ++n) {
-    vx[n] = k.v[n].dot(f.e1);
-    vy[n] = k.v[n].dot(f.e2);
-    vz[n] = k.v[n].dot(f.e3);
-    tx[n] = k.w[n].dot(f.e1);
-    ty[n] = k.w[n].dot(f.e2);
-  }
+  const auto [vx, vy, vz, tx, ty] = in_frame(k, f, 4);
   // Tying points of the assumed shear: the xi-shear at the edge midpoints (0, -1) and (0, 1),
   // the eta-shear at (-1, 0) and (1, 0).
   const ShearRow xi_low = covariant_shear(f, 0.0, -1.0, 0),

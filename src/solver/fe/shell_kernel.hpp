@@ -181,6 +181,23 @@ inline Corners corners(const State& st, Index e) {
   return k;
 }
 
+// The corners' velocities and rotation rates on the element's frame (`n` corners).
+struct FrameVelocities {
+  double vx[4], vy[4], vz[4], tx[4], ty[4];
+};
+
+inline FrameVelocities in_frame(const Corners& k, const Frame& f, int n) {
+  FrameVelocities u{};
+  for (int i = 0; i < n; ++i) {
+    u.vx[i] = k.v[i].dot(f.e1);
+    u.vy[i] = k.v[i].dot(f.e2);
+    u.vz[i] = k.v[i].dot(f.e3);
+    u.tx[i] = k.w[i].dot(f.e1);
+    u.ty[i] = k.w[i].dot(f.e2);
+  }
+  return u;
+}
+
 // The start of an element's pass: its corners, its frame, and its corner forces cleared.
 struct ElementStart {
   Corners k;
