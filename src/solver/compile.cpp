@@ -232,6 +232,74 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
       nd.count(), s.solids.nodes, [](std::size_t) { return 8; }, nd.corner_offsets, nd.corners);
 }
 
+// Elements whose every corner is free sideways breathe in a mode above their L / c step
+// estimate (verification.md "Lone elements"): the one-point hexahedron at 2 c sqrt((1 + nu) /
+// (1 - nu)) / L, unstable for TSSFAC above sqrt((1 - nu) / (1 + nu)) (0.734 at nu 0.3), as soon
+// as every corner is on at most two hexahedra (a column one element across); the shell square
+// at 2 c sqrt(1 + nu) / L, TSSFAC above 1 / sqrt(1 + nu) (0.877), when it is alone (a strip one
+// element wide is held enough). Said per part when the deck's TSSFAC is above the bound.
+void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
+                               core::Diagnostics& d) {
+  const double tssfac = s.time_control.scale_factor;
+  const auto node_count = static_cast<std::size_t>(s.nodes.count());
+  std::vector<int> uses(node_count, 0);
+  for (const auto& conn : s.solids.nodes)
+    for (const Index n : conn)
+      ++uses[static_cast<std::size_t>(n)];
+  std::vector<int> shell_uses(node_count, 0);
+  for (const auto& conn : s.shells.nodes)
+    for (std::size_t c = 0; c < (conn[3] == conn[2] ? 3U : 4U); ++c)
+      ++shell_uses[static_cast<std::size_t>(conn[c])];
+  auto poisson = [&](Index part) {
+    const Index mi = s.parts[static_cast<std::size_t>(part)].material;
+    if (mi < 0) return 0.0;
+    const Material& mat = s.materials[static_cast<std::size_t>(mi)];
+    const double k = mat.bulk_modulus, g = mat.shear_modulus;
+    return (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+  };
+  std::vector<long> flagged(s.parts.size(), 0);
+  for (std::size_t e = 0; e < s.solids.nodes.size(); ++e) {
+    const auto& conn = s.solids.nodes[e];
+    if (std::all_of(conn.begin(), conn.end(),
+                    [&](Index n) { return uses[static_cast<std::size_t>(n)] <= 2; }))
+      ++flagged[static_cast<std::size_t>(s.solids.part[e])];
+  }
+  for (std::size_t p = 0; p < flagged.size(); ++p) {
+    if (flagged[p] == 0) continue;
+    const double nu = poisson(static_cast<Index>(p));
+    const double bound = std::sqrt((1.0 - nu) / (1.0 + nu));
+    if (tssfac <= bound) continue;
+    d.warning(m.parts[p].loc,
+              "part {}: {} hexahedra are one element across (every corner on at most two): "
+              "their sideways breathing is above the step estimate for TSSFAC > {:.3f} "
+              "(Poisson's ratio {:.2f}); at TSSFAC {} they can go unstable: mesh two elements "
+              "across or lower TSSFAC",
+              m.parts[p].id, flagged[p], bound, nu, tssfac);
+  }
+  std::fill(flagged.begin(), flagged.end(), 0);
+  for (std::size_t e = 0; e < s.shells.nodes.size(); ++e) {
+    const auto& conn = s.shells.nodes[e];
+    const std::size_t corners = conn[3] == conn[2] ? 3U : 4U;
+    bool alone = true;
+    for (std::size_t c = 0; c < corners; ++c) {
+      const auto n = static_cast<std::size_t>(conn[c]);
+      alone = alone && shell_uses[n] == 1 && uses[n] == 0 && s.nodes.rigid_body[n] < 0;
+    }
+    if (alone) ++flagged[static_cast<std::size_t>(s.shells.part[e])];
+  }
+  for (std::size_t p = 0; p < flagged.size(); ++p) {
+    if (flagged[p] == 0) continue;
+    const double nu = poisson(static_cast<Index>(p));
+    const double bound = 1.0 / std::sqrt(1.0 + nu);
+    if (tssfac <= bound) continue;
+    d.warning(m.parts[p].loc,
+              "part {}: {} shell element(s) stand alone (no corner shared): their in-plane "
+              "breathing is above the step estimate for TSSFAC > {:.3f} (Poisson's ratio "
+              "{:.2f}); at TSSFAC {} they can go unstable",
+              m.parts[p].id, flagged[p], bound, nu, tssfac);
+  }
+}
+
 }  // namespace detail
 
 std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics& diags) {
@@ -280,6 +348,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   }
   s->mass_scaling_dt =
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
+  detail::warn_free_corner_elements(m, *s, diags);
   if (diags.error_count() > errors) return nullptr;
   return s;
 }

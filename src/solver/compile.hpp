@@ -75,6 +75,9 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+/// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one
+/// element across) when TSSFAC is above their breathing mode's bound (compile.cpp).
+void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, core::Diagnostics& d);
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);

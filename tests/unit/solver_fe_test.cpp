@@ -221,6 +221,14 @@ TEST_CASE("a lone element blown up by too long a step stops the run instead of g
     run(below);
     CHECK(below.result.reason == solver::StopReason::end_time);
     Simulation above = lone_element(b, c.shell, c.unstable);
+    // The run says so before it starts.
+    core::Diagnostics said;
+    CHECK(solver::compile(above.loaded->model(), said) != nullptr);
+    std::string warnings;
+    for (const core::Diagnostic& m : said.all())
+      warnings += m.message + "\n";
+    CHECK(warnings.find(c.shell ? "shell element(s) stand alone"
+                                : "hexahedra are one element across") != std::string::npos);
     run(above);
     MESSAGE((c.shell ? "shell" : "solid"), " at TSSFAC ", c.unstable, ": ", above.result.message);
     CHECK(above.result.reason != solver::StopReason::end_time);
