@@ -19,13 +19,13 @@ LoadedDeck load_deck(const std::filesystem::path& path, std::ostream& migration_
   const auto t0 = Clock::now();
   const deck::Registry registry;
   d.deck = deck::read_deck(path, d.diags);
-  d.cases = deck::read_cases(d.deck, d.diags);
+  const std::vector<deck::Case> cases = deck::read_cases(d.deck, d.diags);
   if (case_id > 0) {
-    const auto c = std::find_if(d.cases.begin(), d.cases.end(),
+    const auto c = std::find_if(cases.begin(), cases.end(),
                                 [&](const deck::Case& k) { return k.id == case_id; });
-    if (c == d.cases.end()) {
+    if (c == cases.end()) {
       std::string defined;
-      for (const deck::Case& k : d.cases)
+      for (const deck::Case& k : cases)
         defined += fmt::format("{}{} ({})", defined.empty() ? "" : ", ", k.id, k.job);
       d.diags.error(core::SourceLoc{}, "--case {}: the deck defines {}", case_id,
                     defined.empty() ? std::string("no *CASE") : "the cases " + defined);

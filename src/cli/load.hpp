@@ -13,7 +13,6 @@ namespace mcdyna::cli {
 struct LoadedDeck {
   core::Diagnostics diags;
   deck::Deck deck;
-  std::vector<deck::Case> cases;  ///< the deck's *CASE definitions
   deck::BuildResult built;
   std::size_t unsupported_physics = 0;  ///< unsupported keywords that change the physics
   double read_ms = 0.0, build_ms = 0.0, check_ms = 0.0;

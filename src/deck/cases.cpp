@@ -1,8 +1,9 @@
 #include "deck/cases.hpp"
 
 #include <algorithm>
-#include <charconv>
+#include <optional>
 
+#include "deck/numbers.hpp"
 #include "deck/text_util.hpp"
 
 namespace mcdyna::deck {
@@ -10,8 +11,9 @@ namespace mcdyna::deck {
 namespace {
 
 bool is_integer(std::string_view token, long& value) {
-  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return ec == std::errc{} && end == token.data() + token.size();
+  const std::optional<std::int64_t> n = parse_integer(token);
+  if (n) value = static_cast<long>(*n);
+  return n.has_value();
 }
 
 // The tokens of a card split at commas and blanks.

@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "deck/deck.hpp"
+#include "deck/numbers.hpp"
 #include "deck/text_util.hpp"
 
 namespace mcdyna::deck {
@@ -79,6 +79,9 @@ class Lexer {
   std::optional<fs::path> resolve_include(std::string_view name, const fs::path& including_dir,
                                           std::string& searched) const;
 
+  /// At the end of the deck: a *CASE_BEGIN_n left open is an error.
+  void finish();
+
  private:
   struct FileState {
     std::uint32_t file = 0;
@@ -97,11 +100,6 @@ class Lexer {
   void handle_duplication(const KeywordBlock& b);
   std::vector<long> subcases_of(const KeywordLine& k, const core::SourceLoc& loc);
 
- public:
-  /// At the end of the deck: a *CASE_BEGIN_n left open is an error.
-  void finish();
-
- private:
   struct OpenCase {
     long id = 0;
     core::SourceLoc loc;
@@ -189,13 +187,12 @@ void Lexer::lex(const fs::path& path, std::string text, std::optional<std::uint3
 // a keyword line's "CID=n" puts that one keyword in subcase n.
 std::vector<long> Lexer::subcases_of(const KeywordLine& k, const core::SourceLoc& loc) {
   auto number = [&](std::string_view text, std::string_view what) -> std::optional<long> {
-    long n = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
-    if (ec != std::errc{} || end != text.data() + text.size() || n <= 0) {
+    const std::optional<std::int64_t> n = parse_integer(text);
+    if (!n || *n <= 0) {
       diags_.error(loc, "{}: \"{}\" is not a subcase number (a positive integer)", what, text);
       return std::nullopt;
     }
-    return n;
+    return static_cast<long>(*n);
   };
   constexpr std::string_view kBegin = "CASE_BEGIN_", kEnd = "CASE_END_";
   std::string_view name = k.name;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solver/fe/hex_geometry.hpp"
+#include "solver/fe/shell_elements.hpp"  // poisson_ratio
 
 namespace mcdyna::solver {
 
@@ -242,20 +243,26 @@ void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
                                core::Diagnostics& d) {
   const double tssfac = s.time_control.scale_factor;
   const auto node_count = static_cast<std::size_t>(s.nodes.count());
-  std::vector<int> uses(node_count, 0);
+  std::vector<int> uses(node_count, 0), shell_uses(node_count, 0);
   for (const auto& conn : s.solids.nodes)
     for (const Index n : conn)
       ++uses[static_cast<std::size_t>(n)];
-  std::vector<int> shell_uses(node_count, 0);
   for (const auto& conn : s.shells.nodes)
     for (std::size_t c = 0; c < (conn[3] == conn[2] ? 3U : 4U); ++c)
       ++shell_uses[static_cast<std::size_t>(conn[c])];
-  auto poisson = [&](Index part) {
-    const Index mi = s.parts[static_cast<std::size_t>(part)].material;
-    if (mi < 0) return 0.0;
-    const Material& mat = s.materials[static_cast<std::size_t>(mi)];
-    const double k = mat.bulk_modulus, g = mat.shear_modulus;
-    return (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+  // Per part, the flagged elements' count said when TSSFAC is above bound(nu).
+  auto warn = [&](const std::vector<long>& flagged, double (*bound_of)(double), const char* what) {
+    for (std::size_t p = 0; p < flagged.size(); ++p) {
+      const Index material = s.parts[p].material;
+      if (flagged[p] == 0 || material < 0) continue;
+      const double nu = poisson_ratio(s.materials[static_cast<std::size_t>(material)]);
+      const double bound = bound_of(nu);
+      if (tssfac <= bound) continue;
+      d.warning(m.parts[p].loc,
+                "part {}: {} {}: their breathing is above the step estimate for TSSFAC > {:.3f} "
+                "(Poisson's ratio {:.2f}); at TSSFAC {} they can go unstable",
+                m.parts[p].id, flagged[p], what, bound, nu, tssfac);
+    }
   };
   std::vector<long> flagged(s.parts.size(), 0);
   for (std::size_t e = 0; e < s.solids.nodes.size(); ++e) {
@@ -264,18 +271,10 @@ void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
                     [&](Index n) { return uses[static_cast<std::size_t>(n)] <= 2; }))
       ++flagged[static_cast<std::size_t>(s.solids.part[e])];
   }
-  for (std::size_t p = 0; p < flagged.size(); ++p) {
-    if (flagged[p] == 0) continue;
-    const double nu = poisson(static_cast<Index>(p));
-    const double bound = std::sqrt((1.0 - nu) / (1.0 + nu));
-    if (tssfac <= bound) continue;
-    d.warning(m.parts[p].loc,
-              "part {}: {} hexahedra are one element across (every corner on at most two): "
-              "their sideways breathing is above the step estimate for TSSFAC > {:.3f} "
-              "(Poisson's ratio {:.2f}); at TSSFAC {} they can go unstable: mesh two elements "
-              "across or lower TSSFAC",
-              m.parts[p].id, flagged[p], bound, nu, tssfac);
-  }
+  warn(
+      flagged, [](double nu) { return std::sqrt((1.0 - nu) / (1.0 + nu)); },
+      "hexahedra are one element across (every corner on at most two; mesh two across or lower "
+      "TSSFAC)");
   std::fill(flagged.begin(), flagged.end(), 0);
   for (std::size_t e = 0; e < s.shells.nodes.size(); ++e) {
     const auto& conn = s.shells.nodes[e];
@@ -287,17 +286,9 @@ void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
     }
     if (alone) ++flagged[static_cast<std::size_t>(s.shells.part[e])];
   }
-  for (std::size_t p = 0; p < flagged.size(); ++p) {
-    if (flagged[p] == 0) continue;
-    const double nu = poisson(static_cast<Index>(p));
-    const double bound = 1.0 / std::sqrt(1.0 + nu);
-    if (tssfac <= bound) continue;
-    d.warning(m.parts[p].loc,
-              "part {}: {} shell element(s) stand alone (no corner shared): their in-plane "
-              "breathing is above the step estimate for TSSFAC > {:.3f} (Poisson's ratio "
-              "{:.2f}); at TSSFAC {} they can go unstable",
-              m.parts[p].id, flagged[p], bound, nu, tssfac);
-  }
+  warn(
+      flagged, [](double nu) { return 1.0 / std::sqrt(1.0 + nu); },
+      "shell element(s) stand alone (no corner shared)");
 }
 
 }  // namespace detail

@@ -256,11 +256,8 @@ void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& 
         std::array<Vec3, 4> x;
         for (std::size_t c = 0; c < 4; ++c)
           x[c] = nd.initial.col(conn[c]);
-        const double e_plane = youngs_modulus(mm) / (1.0 - std::pow(poisson_ratio(mm), 2));
-        double longest = 0.0;
-        for (std::size_t c = 0; c < 3; ++c)
-          longest = std::max(longest, (x[(c + 1) % 3] - x[c]).norm());
-        const double step = 2.0 * area / longest / std::sqrt(e_plane / mm.density);
+        const double step = shell_kernel::shell_step(x.data(), area, true, youngs_modulus(mm),
+                                                     poisson_ratio(mm), mm.density);
         inertia = std::max(
             inertia, shell_kernel::c0_triangle_inertia(
                          x.data(), b.shear_factor * mm.shear_modulus * t, mass / corners, step));

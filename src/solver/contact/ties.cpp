@@ -92,16 +92,14 @@ class TieBlock final : public Block {
   // and the slaves the weighted mean of their corners'.
   void initialise(State& s) override {
     Nodes& nd = s.nodes;
-    std::fill(carried_.begin(), carried_.end(), 0.0);
+    carry_masses(nd, s.ties);
     std::vector<Vec3> momentum(masters_.size(), Vec3::Zero());
     for (const Tie& tie : s.ties) {
       const auto i = static_cast<std::size_t>(tie.slave);
       const double m = nd.mass[i] + nd.added_mass[i];
-      for (std::size_t k = 0; k < 4; ++k) {
-        if (tie.weights[k] == 0.0) continue;
-        carried_[slot(tie.masters[k])] += tie.weights[k] * m;
-        momentum[slot(tie.masters[k])] += tie.weights[k] * m * nd.velocity.col(tie.slave);
-      }
+      for (std::size_t k = 0; k < 4; ++k)
+        if (tie.weights[k] != 0.0)
+          momentum[slot(tie.masters[k])] += tie.weights[k] * m * nd.velocity.col(tie.slave);
     }
     for (std::size_t j = 0; j < masters_.size(); ++j) {
       const Index n = masters_[j];
@@ -125,13 +123,7 @@ class TieBlock final : public Block {
 
   Index advance_velocities(State& s, const StepTimes& t) override {
     Nodes& nd = s.nodes;
-    std::fill(carried_.begin(), carried_.end(), 0.0);
-    for (const Tie& tie : s.ties) {
-      const auto i = static_cast<std::size_t>(tie.slave);
-      const double m = nd.mass[i] + nd.added_mass[i];
-      for (std::size_t k = 0; k < 4; ++k)
-        if (tie.weights[k] != 0.0) carried_[slot(tie.masters[k])] += tie.weights[k] * m;
-    }
+    carry_masses(nd, s.ties);
     for (std::size_t j = 0; j < masters_.size(); ++j) {
       const Index n = masters_[j];
       const auto i = static_cast<std::size_t>(n);
@@ -153,6 +145,16 @@ class TieBlock final : public Block {
   }
 
  private:
+  // M = sum w m_slave per master corner, with the masses of now (DT2MS adds to them).
+  void carry_masses(const Nodes& nd, const std::vector<Tie>& ties) {
+    std::fill(carried_.begin(), carried_.end(), 0.0);
+    for (const Tie& tie : ties) {
+      const auto i = static_cast<std::size_t>(tie.slave);
+      const double m = nd.mass[i] + nd.added_mass[i];
+      for (std::size_t k = 0; k < 4; ++k)
+        if (tie.weights[k] != 0.0) carried_[slot(tie.masters[k])] += tie.weights[k] * m;
+    }
+  }
   [[nodiscard]] std::size_t slot(Index master) const {
     return static_cast<std::size_t>(std::lower_bound(masters_.begin(), masters_.end(), master) -
                                     masters_.begin());

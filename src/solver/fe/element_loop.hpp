@@ -37,6 +37,11 @@ constexpr int kElementChunk = 128;
 /// dilatation, omega = 2 c sqrt(1 + nu) / L, is above the L / c estimate: TSSFAC 0.9 > 0.877).
 constexpr double kRunawayGrowth = 1.0e4;
 
+/// Whether an element of area or volume `size` has run away from its `initial` one.
+[[nodiscard]] inline bool runaway(double size, double initial) {
+  return size > kRunawayGrowth * initial;
+}
+
 /// What one element's update found.
 struct ElementOutcome {
   double step = 0.0;

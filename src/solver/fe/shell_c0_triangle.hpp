@@ -189,7 +189,7 @@ fe::ElementOutcome c0_triangle(ShellContext& c, const Model& model, Index e) {
   }
   const bool all_failed = failed == c.block.layers;
   return {shell_step(c, k.x, f.area, true), false, all_failed,
-          f.area > fe::kRunawayGrowth * sh.initial_area[i]};
+          fe::runaway(f.area, sh.initial_area[i])};
 }
 
 }  // namespace mcdyna::solver::shell_kernel

@@ -136,7 +136,7 @@ ElementOutcome belytschko_tsay(ShellContext& c, const Model& model, Index e) {
   }
   const bool all_failed = failed == c.block.layers;
   return {shell_step(c, k.x, f.area, k.triangle), false, all_failed,
-          f.area > fe::kRunawayGrowth * c.st.shells.initial_area[static_cast<std::size_t>(e)]};
+          fe::runaway(f.area, c.st.shells.initial_area[static_cast<std::size_t>(e)])};
 }
 
 template <class Model>

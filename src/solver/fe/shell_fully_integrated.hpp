@@ -139,7 +139,7 @@ fe::ElementOutcome fully_integrated(ShellContext& c, const Model& model, Index e
   for (int n = 0; n < 4; ++n)
     add_corner(out, f, n, k.triangle, fx[n], fy[n], fz[n], mx[n], my[n]);
   return {shell_step(c, k.x, f.area, k.triangle), false, failed == 4 * layers,
-          f.area > fe::kRunawayGrowth * c.st.shells.initial_area[static_cast<std::size_t>(e)]};
+          fe::runaway(f.area, c.st.shells.initial_area[static_cast<std::size_t>(e)])};
 }
 
 }  // namespace mcdyna::solver::shell_kernel

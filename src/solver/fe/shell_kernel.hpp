@@ -153,14 +153,19 @@ inline void charge_work(ShellContext& c, Index e, double work) {
 // The element step: the shortest characteristic length over the plane-stress wave speed
 // sqrt(E / (rho (1 - nu^2))); the length is A over the longest side (quadrilateral) or 2A over it
 // (triangle), LS-DYNA's ISDO 0.
-inline double shell_step(const ShellContext& c, const Vec3 x[4], double area, bool triangle) {
+inline double shell_step(const Vec3 x[4], double area, bool triangle, double young, double poisson,
+                         double density) {
   double longest = 0.0;
   const int n = triangle ? 3 : 4;
   for (int i = 0; i < n; ++i)
     longest = std::max(longest, (x[(i + 1) % n] - x[i]).squaredNorm());
   const double length = (triangle ? 2.0 : 1.0) * area / std::sqrt(longest);
-  const double speed = std::sqrt(c.young / (c.mat.density * (1.0 - c.poisson * c.poisson)));
+  const double speed = std::sqrt(young / (density * (1.0 - poisson * poisson)));
   return length / speed;
+}
+
+inline double shell_step(const ShellContext& c, const Vec3 x[4], double area, bool triangle) {
+  return shell_step(x, area, triangle, c.young, c.poisson, c.mat.density);
 }
 
 // The element's corners at the start of its pass: positions, velocities, angular velocities.

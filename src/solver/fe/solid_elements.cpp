@@ -241,7 +241,7 @@ ElementOutcome one_point_element(ElementContext& c, const Model& model, Index e)
       coef[1 << kk][r] =
           -0.125 * (m[r][0] * cp.ji[kk][0] + m[r][1] * cp.ji[kk][1] + m[r][2] * cp.ji[kk][2]);
   hex::add_pattern_combination(coef, f);
-  return {vr.step, false, failed, volume > fe::kRunawayGrowth * s.initial_volume[i]};
+  return {vr.step, false, failed, fe::runaway(volume, s.initial_volume[i])};
 }
 
 template <class Model>
@@ -291,7 +291,7 @@ ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, 
   for (int p = 0; p < 8; ++p)
     add_stress_forces(s.points.deviator.col(first + p).data(), vr.pressure_total, g[p].det, g[p].b,
                       f);
-  return {vr.step, false, failed, volume > fe::kRunawayGrowth * s.initial_volume[i]};
+  return {vr.step, false, failed, fe::runaway(volume, s.initial_volume[i])};
 }
 
 // The elements of one block with its material's deviatoric model (visited once per block).
