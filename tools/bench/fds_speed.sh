@@ -10,6 +10,11 @@
 #   OSU=1 (*CONTROL_ACCURACY OSU of the generated deck, default 1)
 #   RUN=DIR: also the cycles per plunge-mm of a finished FDS run in DIR, per stage (from its
 #     d3hsp cycle count and force_vs_plunge.csv / glstat.csv)
+#   INSTRUCTIONS=1: also count each phase's instructions per particle-step with callgrind
+#     (tools/bench/instructions.py, cycles 41-100 of the same deck, about 5 minutes) and give the
+#     roofline its instruction columns
+#   ROOFLINE=0: skip the roofline (by default the machine's ceilings are measured once with
+#     tools/bench/bandwidth.cpp and each run's phases are set against them, tools/bench/roofline.py)
 # Figures print; nothing is asserted (wall-clock time is never a test).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -24,6 +29,26 @@ mkdir -p "$work"
 deck=$work/fds_h${h}_${cycles}_osu${osu}.k
 /usr/bin/python3 tools/decks/fds.py "$h" "$deck" --time-scale "$scale" --cycles "$cycles" \
   --states 1 --osu "$osu" >/dev/null
+
+roofline=${ROOFLINE:-1}
+ceilings=$work/ceilings.txt
+if [[ "$roofline" == 1 ]]; then
+  # The ceilings with the solver's own compiler flags (CMake's Release: -O3, no -march).
+  g++ -O3 -fopenmp tools/bench/bandwidth.cpp -o "$work/bandwidth"
+  echo "ceilings of this machine (tools/bench/bandwidth.cpp):"
+  "$work/bandwidth" ${THREADS:-1 2} | tee "$ceilings" | sed 's/^/  /'
+fi
+
+counts=""
+if [[ "$roofline" == 1 && "${INSTRUCTIONS:-0}" == 1 ]]; then
+  for n in 40 100; do
+    /usr/bin/python3 tools/decks/fds.py "$h" "$work/fds_h${h}_$n.k" --time-scale "$scale" \
+      --cycles "$n" --states 1 --osu "$osu" >/dev/null
+  done
+  counts=$work/instructions.txt
+  /usr/bin/python3 tools/bench/instructions.py "$binary" "$work/fds_h${h}_40.k" \
+    "$work/fds_h${h}_100.k" --spg-step "$step" | tee "$counts" | sed 's/^/  /'
+fi
 
 echo "deck: FDS h = $h mm, time scale $scale, $cycles cycles from the first touch, OSU $osu," \
   "--spg-step $step, $binary"
@@ -41,6 +66,9 @@ for threads in ${THREADS:-1 2}; do
        on && / s +[0-9.]+ %$/{n=NF; name=$1; for(i=2;i<=n-4;i++) name=name" "$i;
                                printf "    %-22s %9s s %6s %%\n", name, $(n-3), $(n-1)}' \
     "$out/d3hsp"
+  if [[ "$roofline" == 1 ]]; then
+    /usr/bin/python3 tools/bench/roofline.py "$out/d3hsp" "$ceilings" $counts | sed 's/^/    /'
+  fi
 done
 
 if [[ -n "${RUN:-}" ]]; then
