@@ -17,6 +17,7 @@
 
 #include "core/bounded_sum.hpp"
 #include "solver/material/constitutive.hpp"
+#include "solver/spg/pair_sums.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -109,11 +110,12 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
       pj.setZero();
       continue;
     }
-    Mat3 df = Mat3::Zero();
-    for (Index q = d.kernel.list.offsets[jj]; q < d.kernel.list.offsets[jj + 1]; ++q) {
-      const Index k = d.kernel.list.neighbours[static_cast<std::size_t>(q)];
-      df.noalias() += (x.col(k) - x.col(j)) * d.kernel.shape.gradient.col(q).transpose();
-    }
+    double sums[9];
+    const Index* neighbours = d.kernel.list.neighbours.data();
+    pairs::row_gradient(
+        x.data(), x.col(j).data(), d.kernel.shape.gradient.data(), d.kernel.list.offsets[jj],
+        d.kernel.list.offsets[jj + 1], [&](Index q) { return neighbours[q]; }, sums);
+    const Mat3 df = Eigen::Map<const Mat3>(sums);
     const Eigen::Map<const Mat3> f_hat(d.fields.deformation.col(j).data());
     const Mat3 f_inv = f_hat.inverse();
     const Mat3 l = df * f_inv;
@@ -135,12 +137,11 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
   for (std::int64_t r = 0; r < particle_count; ++r) {
     const Index i = member(particles, static_cast<std::size_t>(r));
     const auto ii = static_cast<std::size_t>(i);
-    Vec3 f = Vec3::Zero();
-    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
-      const Eigen::Map<const Mat3> pj(
-          p.col(d.kernel.transpose.rows[static_cast<std::size_t>(t)]).data());
-      f.noalias() -= pj * d.kernel.transpose.gradient.col(t);
-    }
+    Vec3 f;
+    const Index* rows_of = d.kernel.transpose.rows.data();
+    pairs::transpose_force(
+        p.data(), d.kernel.transpose.gradient.data(), d.kernel.transpose.offsets[ii],
+        d.kernel.transpose.offsets[ii + 1], [&](Index t) { return rows_of[t]; }, f.data());
     acc.col(i) = !d.kernel.pinned[ii] && mc ? Vec3(f / d.kernel.smoothed_mass[ii]) : f;
   }
   if (stabilization) {  // ITB 1: every particle pinned, acc holds forces

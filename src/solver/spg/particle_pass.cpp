@@ -10,6 +10,7 @@
 
 #include "solver/material/constitutive.hpp"
 #include "solver/spg/distribution.hpp"
+#include "solver/spg/pair_sums.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -254,15 +255,15 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
   const Eigen::Matrix3Xd& v = s.nodes.velocity;
   const Index node_j = d.particles.nodes[jj];
   // F-hat and the reference velocity gradient from differences to particle j (sum grad phi = 0
-  // makes them equal to Eq. 33's sums, with less round-off).
-  Mat3 f = Mat3::Zero(), lr = Mat3::Zero();
-  for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
-    const auto pp = static_cast<std::size_t>(p);
-    const Index node_i = d.particles.nodes[static_cast<std::size_t>(d.kernel.list.neighbours[pp])];
-    const Vec3 g = d.kernel.shape.gradient.col(p);
-    f.noalias() += (x.col(node_i) - x.col(node_j)) * g.transpose();
-    lr.noalias() += (v.col(node_i) - v.col(node_j)) * g.transpose();
-  }
+  // makes them equal to Eq. 33's sums, with less round-off); both sums at once (pair_sums.hpp).
+  double fs[9], ls[9];
+  const Index* nodes = d.particles.nodes.data();
+  const Index* neighbours = d.kernel.list.neighbours.data();
+  pairs::row_gradients(
+      x.data(), v.data(), x.col(node_j).data(), v.col(node_j).data(),
+      d.kernel.shape.gradient.data(), d.kernel.list.offsets[jj], d.kernel.list.offsets[jj + 1],
+      [&](Index p) { return nodes[neighbours[p]]; }, fs, ls);
+  const Mat3 f = Eigen::Map<const Mat3>(fs), lr = Eigen::Map<const Mat3>(ls);
   ParticleKinematics k;
   k.deformation = f;
   k.invertible = f.determinant() > 0.0;
@@ -408,16 +409,23 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
     const Index i = member(owned, m);
     const auto ii = static_cast<std::size_t>(i);
     Vec3 f = Vec3::Zero();
-    for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
-      const auto tt = static_cast<std::size_t>(t);
-      const Eigen::Map<const Mat3> p_j(
-          d.fields.stress_gradient.col(d.kernel.transpose.rows[tt]).data());
-      f.noalias() -= p_j * d.kernel.transpose.gradient.col(t);
-      if (control)
+    if (control) {
+      for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
+        const auto tt = static_cast<std::size_t>(t);
+        const Eigen::Map<const Mat3> p_j(
+            d.fields.stress_gradient.col(d.kernel.transpose.rows[tt]).data());
+        f.noalias() -= p_j * d.kernel.transpose.gradient.col(t);
         f += d.kernel.shape.value[static_cast<std::size_t>(d.kernel.transpose.pairs[tt])] *
              d.fields.mode_force.col(d.kernel.transpose.rows[tt]);
+      }
+      f -= d.fields.mode_force.col(i);
+    } else {  // the same sum in two-wide registers (pair_sums.hpp)
+      const Index* rows_of = d.kernel.transpose.rows.data();
+      pairs::transpose_force(
+          d.fields.stress_gradient.data(), d.kernel.transpose.gradient.data(),
+          d.kernel.transpose.offsets[ii], d.kernel.transpose.offsets[ii + 1],
+          [&](Index t) { return rows_of[t]; }, f.data());
     }
-    if (control) f -= d.fields.mode_force.col(i);
     s.nodes.force.col(d.particles.nodes[ii]) += f;
   }
   d.times.force += seconds_since(start);
