@@ -194,8 +194,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 struct Workspace {
   Eigen::Matrix3Xd acceleration;  ///< advance_velocities: a_J of the smoothed particles
   Eigen::Matrix3Xd change;  ///< absorb_constraints: what conditions changed, own and row ghosts
-  std::vector<double> mass_factor;      ///< particle_pass with DT2MS: m / (m - added) per particle
-  std::vector<double> damping_share;    ///< advance_velocities with PDAMP: |PDAMP| / n per row
+  std::vector<double> mass_factor;  ///< particle_pass with DT2MS: m / (m - added) per particle
+  /// advance_velocities with PDAMP, per particle: x, the previous u-hat, m-hat and |PDAMP| / n of
+  /// its row, packed in one column for the pairs that read them (smoothing.cpp PairEnd).
+  Eigen::Matrix<double, 8, Eigen::Dynamic> damping_ends;
   std::vector<double> damping_removed;  ///< the same: kinetic energy PDAMP took per particle
   Eigen::Matrix<double, 9, Eigen::Dynamic> stress;  ///< frequency.cpp: linearised w sigma F^-T
   Eigen::Matrix3Xd force, hat, vector, product;     ///< frequency.cpp: f, u-hat, x and A x

@@ -30,7 +30,8 @@ namespace {
 // update, the impulses of its row's pairs (I, J) and, over its transpose, minus those of the
 // pairs (J, I): each pair is computed twice with the same arithmetic (the same bits at both
 // ends), which costs less than storing 24 bytes per pair and reading them back in transpose
-// order (the SPG passes are memory-bound).
+// order (measured, issue 46: 14 % fewer instructions in the pass but 1.8 % slower, the
+// transposed read being a scattered gather from a 12 MB array; manual/verification.md).
 // ((u_J - u_I) . e) e = ((u_J - u_I) . r) r / |r|^2 for r = x_J - x_I: one division, no root.
 struct PairEnd {
   Vec3 position, velocity;  ///< x and the previous u-hat
@@ -38,20 +39,28 @@ struct PairEnd {
   double share = 0.0;       ///< |PDAMP| / n of the row the pair belongs to (used for I)
 };
 
-PairEnd pair_end(const State& s, const Domain& d, Index i) {
-  const auto ii = static_cast<std::size_t>(i);
-  return {s.nodes.position.col(d.particles.nodes[ii]), d.fields.unsmoothed_previous.col(i),
-          d.particles.mass[ii], d.scratch.damping_share[ii]};
+// Particle i's end, from the column damping_shares packed for it.
+PairEnd pair_end(const Domain& d, Index i) {
+  const auto e = d.scratch.damping_ends.col(i);
+  return {e.head<3>(), e.segment<3>(3), e(6), e(7)};
 }
 
-// |PDAMP| / n of every row, once per cycle rather than at every pair that needs it.
-void damping_shares(Domain& d) {
+// |PDAMP| / n of every row, and every particle's end packed in one column (x through the
+// particle's node, the previous u-hat, m-hat, the share: 64 bytes, one cache line), once per
+// cycle rather than gathered from four arrays and a node index at each of the ~50 pairs that
+// read it.
+void damping_shares(const State& s, Domain& d) {
   const Index n = d.count();
-  d.scratch.damping_share.resize(static_cast<std::size_t>(n));
+  d.scratch.damping_ends.resize(8, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
-  for (Index i = 0; i < n; ++i)
-    d.scratch.damping_share[static_cast<std::size_t>(i)] =
-        d.settings.damping / static_cast<double>(std::max<Index>(d.kernel.list.count(i) - 1, 1));
+  for (Index i = 0; i < n; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    auto e = d.scratch.damping_ends.col(i);
+    e.head<3>() = s.nodes.position.col(d.particles.nodes[ii]);
+    e.segment<3>(3) = d.fields.unsmoothed_previous.col(i);
+    e(6) = d.particles.mass[ii];
+    e(7) = d.settings.damping / static_cast<double>(std::max<Index>(d.kernel.list.count(i) - 1, 1));
+  }
 }
 
 // The impulse of the pair (I, J) of row I on I.
@@ -130,7 +139,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // particle order after the loop (an OpenMP reduction would round differently for each
   // thread count) with core::ExactSum (over processes as well).
   if (damping) {
-    damping_shares(d);
+    damping_shares(s, d);
     d.scratch.damping_removed.assign(static_cast<std::size_t>(n), 0.0);
   }
   if (smooths_velocity(mode)) {
@@ -140,14 +149,14 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       const auto ii = static_cast<std::size_t>(i);
       const bool free_i = d.kernel.pinned[ii] == 0;
       const bool damp_i = damping && free_i;
-      const PairEnd end_i = damp_i ? pair_end(s, d, i) : PairEnd{};
+      const PairEnd end_i = damp_i ? pair_end(d, i) : PairEnd{};
       Vec3 sum = Vec3::Zero(), own = Vec3::Zero();
       for (Index p = d.kernel.list.offsets[ii]; p < d.kernel.list.offsets[ii + 1]; ++p) {
         const auto pp = static_cast<std::size_t>(p);
         const Index j = d.kernel.list.neighbours[pp];
         if (mc) sum += d.kernel.shape.value[pp] * acc.col(j);
         if (damp_i && j != i && !d.kernel.pinned[static_cast<std::size_t>(j)])
-          own += pair_impulse(end_i, pair_end(s, d, j));
+          own += pair_impulse(end_i, pair_end(d, j));
       }
       if (!mc) sum = acc.col(i);
       if (free_i) {
@@ -165,7 +174,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
       for (Index t = d.kernel.transpose.offsets[ii]; t < d.kernel.transpose.offsets[ii + 1]; ++t) {
         const Index j = d.kernel.transpose.rows[static_cast<std::size_t>(t)];
         if (j != i && !d.kernel.pinned[static_cast<std::size_t>(j)])
-          total -= pair_impulse(pair_end(s, d, j), end_i);
+          total -= pair_impulse(pair_end(d, j), end_i);
       }
       const Vec3 undamped = d.fields.unsmoothed.col(i);
       d.fields.unsmoothed.col(i) += total / d.particles.mass[ii];
