@@ -26,9 +26,13 @@ step=${SPG_STEP:-eigen}
 osu=${OSU:-1}
 work=${TMPDIR:-/tmp}/mcdyna_fds_bench
 mkdir -p "$work"
+# The bench deck, ending after CYCLES cycles: fds_deck OUT CYCLES.
+fds_deck() {
+  /usr/bin/python3 tools/decks/fds.py "$h" "$1" --time-scale "$scale" --cycles "$2" \
+    --states 1 --osu "$osu" >/dev/null
+}
 deck=$work/fds_h${h}_${cycles}_osu${osu}.k
-/usr/bin/python3 tools/decks/fds.py "$h" "$deck" --time-scale "$scale" --cycles "$cycles" \
-  --states 1 --osu "$osu" >/dev/null
+fds_deck "$deck" "$cycles"
 
 roofline=${ROOFLINE:-1}
 ceilings=$work/ceilings.txt
@@ -42,8 +46,7 @@ fi
 counts=""
 if [[ "$roofline" == 1 && "${INSTRUCTIONS:-0}" == 1 ]]; then
   for n in 40 100; do
-    /usr/bin/python3 tools/decks/fds.py "$h" "$work/fds_h${h}_$n.k" --time-scale "$scale" \
-      --cycles "$n" --states 1 --osu "$osu" >/dev/null
+    fds_deck "$work/fds_h${h}_$n.k" "$n"
   done
   counts=$work/instructions.txt
   /usr/bin/python3 tools/bench/instructions.py "$binary" "$work/fds_h${h}_40.k" \

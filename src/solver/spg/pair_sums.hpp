@@ -7,8 +7,6 @@
 /// instructions here, the force gather 6 %). Each entry is formed by the same products and sums
 /// in the same order as the Eigen expression it replaces (named at each function), so the bits
 /// are the same.
-#include <Eigen/Core>
-
 #include <cstddef>
 #include <cstdint>
 

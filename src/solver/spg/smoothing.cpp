@@ -39,17 +39,16 @@ struct PairEnd {
   double share = 0.0;       ///< |PDAMP| / n of the row the pair belongs to (used for I)
 };
 
-// Particle i's end, from the column damping_shares packed for it.
+// Particle i's end, from the column pack_pair_ends filled for it.
 PairEnd pair_end(const Domain& d, Index i) {
   const auto e = d.scratch.damping_ends.col(i);
   return {e.head<3>(), e.segment<3>(3), e(6), e(7)};
 }
 
-// |PDAMP| / n of every row, and every particle's end packed in one column (x through the
-// particle's node, the previous u-hat, m-hat, the share: 64 bytes, one cache line), once per
-// cycle rather than gathered from four arrays and a node index at each of the ~50 pairs that
-// read it.
-void damping_shares(const State& s, Domain& d) {
+// Every particle's end packed in one column (x through the particle's node, the previous u-hat,
+// m-hat, and |PDAMP| / n of its row: 64 bytes), once per cycle rather than gathered from four
+// arrays and a node index at each of the ~50 pairs that read it.
+void pack_pair_ends(const State& s, Domain& d) {
   const Index n = d.count();
   d.scratch.damping_ends.resize(8, n);
 #pragma omp parallel for schedule(static, 256) if (n > 512)
@@ -139,7 +138,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
   // particle order after the loop (an OpenMP reduction would round differently for each
   // thread count) with core::ExactSum (over processes as well).
   if (damping) {
-    damping_shares(s, d);
+    pack_pair_ends(s, d);
     d.scratch.damping_removed.assign(static_cast<std::size_t>(n), 0.0);
   }
   if (smooths_velocity(mode)) {
