@@ -42,7 +42,7 @@ constexpr std::array<std::size_t, 27> kDumpedSizes = {sizeof(Nodes),
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 256,  80,
                                                           584, 72,  112, 128, 240, 3024, 1984,
-                                                          96,  112, 432, 352, 144, 192,  136,
+                                                          96,  112, 456, 352, 144, 192,  136,
                                                           56,  64,  304, 624, 432, 120},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
               "below, or note it among the deck data left out");
@@ -275,7 +275,7 @@ void fields(Ar& ar, Pass& p) {
 
 template <class Ar>
 void fields(Ar& ar, AppliedForce& f) {
-  ar(f.node, f.hit, f.force);
+  ar(f.node, f.hit, f.slot, f.force);
 }
 
 template <class Ar>
@@ -289,7 +289,7 @@ void fields(Ar& ar, Interface& c) {
      c.damping, c.birth, c.death, c.soft_constraint, c.soft_scale, c.penalty_scale, c.sort_interval,
      c.initial_step, c.initial_penetration, c.segment_based, c.segment_based_scale, c.sensor);
   ar(c.last_sort, c.sorted_positions, c.tracked, c.capture, c.force_a, c.force_b, c.moment_a,
-     c.moment_b, c.mass_in_contact, c.energy, c.applied);
+     c.moment_b, c.mass_in_contact, c.energy, c.applied, c.computed);
 }
 
 }  // namespace contact

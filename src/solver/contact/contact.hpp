@@ -2,21 +2,24 @@
 /// Penalty contact (keywords.md §2.15): once per cycle, after the internal forces, every active
 /// interface finds the slave nodes that have penetrated a master segment (bucket-sorted
 /// candidates, contact_search.cpp) and adds the penalty, friction and damping forces to the
-/// nodes of both sides (contact_forces.cpp). Deterministic for any thread count: the per-node
-/// work runs in parallel, the forces are added in node order.
+/// nodes of both sides (contact_forces.cpp). Deterministic for any thread and process count: the
+/// per-node work runs in parallel, each slave node's hit on the process that owns it, and every
+/// node's forces are added in the order of one process (contact_block.cpp says how the processes
+/// share the work).
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::contact {
 
 /// Adds the interface's contact forces at t^n to s.nodes.force (positions at t^n, velocities at
 /// t^{n-1/2}) and updates its resultants and energy.
-/// `sort`: whether the candidate lists are rebuilt first (sort_due).
-void interface_pass(State& s, Interface& c, bool sort);
+/// `sort`: whether the candidate lists are rebuilt first (sort_due). Adds the wall seconds of its
+/// exchanges between processes (and the waits in them) to `exchange_seconds`.
+void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds);
 
 /// A force transducer (*CONTACT_FORCE_TRANSDUCER_PENALTY): its resultants from the forces the
 /// other interfaces applied this cycle (their `applied` lists), applying none itself. Run after
 /// every other interface's pass.
-void transducer_pass(State& s, Interface& t);
+void transducer_pass(State& s, Interface& t, double& exchange_seconds);
 
 /// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
 /// last sort, or a node has moved more than half the search margin. Over several processes

@@ -5,11 +5,22 @@
 
 #include "solver/block.hpp"
 #include "solver/contact/contact.hpp"
+#include "solver/parallel/exchange_plan.hpp"
 #include "solver/parallel/owned_gather.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
+
+// A node's x and v, 6 doubles, as the contact exchanges send them.
+void pack_motion(const State& s, Index n, double* out) {
+  std::copy_n(s.nodes.position.col(n).data(), 3, out);
+  std::copy_n(s.nodes.velocity.col(n).data(), 3, out + 3);
+}
+void unpack_motion(State& s, Index n, const double* in) {
+  std::copy_n(in, 3, s.nodes.position.col(n).data());
+  std::copy_n(in + 3, 3, s.nodes.velocity.col(n).data());
+}
 
 class ContactBlock final : public Block {
  public:
@@ -18,105 +29,208 @@ class ContactBlock final : public Block {
   void forces(State& s, ForceReport& /*report*/) override {
     contact::Interface& c = s.contacts[interface_];
     if (s.ownership.comm.size() == 1) {
-      contact::interface_pass(s, c, contact::sort_due(s, c));
+      contact::interface_pass(s, c, contact::sort_due(s, c), exchange_seconds_);
       return;
     }
     const auto start = std::chrono::steady_clock::now();
-    if (generation_ != s.ownership.generation) list_nodes(s);
-    if (near_sort_ != c.last_sort) list_near_nodes(s);
+    if (generation_ != s.ownership.generation) follow_owners(s);
     const bool sort = contact::sort_due(s, c);
-    share_motion(s, sort ? nodes_ : near_nodes_);
+    if (sort)
+      share_segment_nodes(s);
+    else
+      segment_ghosts_.exchange([&](Index n, double* out) { pack_motion(s, n, out); },
+                               [&](Index n, const double* in) { unpack_motion(s, n, in); });
     exchange_seconds_ += spg::seconds_since(start);
-    contact::interface_pass(s, c, sort);
+    contact::interface_pass(s, c, sort, exchange_seconds_);
+    if (sort) plan_segment_ghosts(s);
   }
-  // The all-gather of the nodes' motion (and the wait for the slowest process) is exchange.
+  // The exchanges of the nodes' motion (and the wait for the slowest process) are exchange.
   void split_times(const State& /*s*/, PhaseTimes& phases) const override {
     phases.seconds[PhaseTimes::exchange] += exchange_seconds_;
     phases.seconds[PhaseTimes::contact] -= exchange_seconds_;
   }
 
  private:
-  // Over several processes every process applies every hit, as one process does, and the
-  // owners of the slave nodes compute them. At a bucket sort every process sorts the whole
-  // interface, from the x and v of every node in it; between sorts it needs those of the nodes
-  // that can be hit (the sort's `near` nodes) and of the deformable segment nodes. Their owners
-  // send them to all (one all-gather per cycle). Rigid-body nodes are placed alike by every
-  // process and are not sent. What each contact force does to a node counts on the node's
-  // owner only (the others' copies of it are not used).
-  void share_motion(State& s, const std::vector<Index>& nodes) {
-    Eigen::Matrix3Xd& x = s.nodes.position;
-    Eigen::Matrix3Xd& v = s.nodes.velocity;
+  // Over several processes each process computes the hits of the slave nodes it owns, from
+  // candidates it sorted for those nodes only, and the owner of every node adds the forces on
+  // it in the order of one process (contact_forces.cpp). It reads the x and v of its own slave
+  // nodes and of the segment nodes: rigid-body nodes are placed alike by every process; the
+  // deformable segment nodes come from their owners, all of them to every process at a bucket
+  // sort (the boxes of every segment), between sorts those its candidates hold
+  // (`segment_ghosts_`, point to point). What a slave node carries from cycle to cycle
+  // (friction, side, initial penetration, candidates, position at the last sort) goes with it
+  // when a renewal gives it another owner.
+  void share_segment_nodes(State& s) {
     parallel::gather_owned(
-        s.ownership.comm, nodes.size(),
-        [&](std::size_t k) { return s.ownership.owner[static_cast<std::size_t>(nodes[k])]; },
+        s.ownership.comm, segment_nodes_.size(),
+        [&](std::size_t k) {
+          return s.ownership.owner[static_cast<std::size_t>(segment_nodes_[k])];
+        },
         [&](std::size_t k, std::vector<double>& out) {
-          out.insert(out.end(), x.col(nodes[k]).data(), x.col(nodes[k]).data() + 3);
-          out.insert(out.end(), v.col(nodes[k]).data(), v.col(nodes[k]).data() + 3);
+          out.resize(out.size() + 6);
+          pack_motion(s, segment_nodes_[k], out.data() + out.size() - 6);
         },
         [&](std::size_t k, const double*& in) {
-          std::copy(in, in + 3, x.col(nodes[k]).data());
-          std::copy(in + 3, in + 6, v.col(nodes[k]).data());
+          unpack_motion(s, segment_nodes_[k], in);
           in += 6;
         });
   }
 
-  // The interface's deformable nodes, ascending.
-  void list_nodes(const State& s) {
+  // The deformable segment nodes the candidates of this process's slave nodes hold that
+  // another process owns. Collective.
+  void plan_segment_ghosts(const State& s) {
     const contact::Interface& c = s.contacts[interface_];
-    std::vector<std::uint8_t> in(static_cast<std::size_t>(s.nodes.count()), 0);
-    auto mark = [&](Index n) { in[static_cast<std::size_t>(n)] = 1; };
-    for (const Index n : c.tracked)
-      mark(n);
-    for (const contact::Pass& p : c.passes) {
-      for (const Index n : p.nodes)
-        mark(n);
-      for (const auto& segment : p.surface.segments)
-        for (const Index n : segment)
-          mark(n);
-    }
-    nodes_.clear();
-    for (Index n = 0; n < s.nodes.count(); ++n)
-      if (in[static_cast<std::size_t>(n)] && s.nodes.rigid_body[static_cast<std::size_t>(n)] < 0)
-        nodes_.push_back(n);
-    generation_ = s.ownership.generation;
+    std::vector<std::uint8_t> ghost(static_cast<std::size_t>(s.nodes.count()), 0);
+    for (const contact::Pass& p : c.passes)
+      for (const Index k : p.near) {
+        const auto i = static_cast<std::size_t>(k);
+        if (!s.ownership.owned_now(p.nodes[i])) continue;
+        for (Index q = p.candidate_offsets[i]; q < p.candidate_offsets[i + 1]; ++q)
+          for (const Index n : p.surface.segments[static_cast<std::size_t>(p.candidates[q])])
+            if (!s.ownership.owned_now(n) && s.nodes.rigid_body[static_cast<std::size_t>(n)] < 0)
+              ghost[static_cast<std::size_t>(n)] = 1;
+      }
+    segment_ghosts_ = parallel::ExchangePlan(s.ownership.comm, s.ownership.owner, ghost, 6);
   }
 
-  // The deformable nodes a cycle between sorts reads: the passes' near nodes and the segments'
-  // nodes, ascending.
-  void list_near_nodes(const State& s) {
-    const contact::Interface& c = s.contacts[interface_];
+  // The interface's deformable segment nodes, ascending; the slave nodes' state handed to their
+  // new owners when the owners changed; the ghosts planned again. Collective.
+  void follow_owners(State& s) {
+    contact::Interface& c = s.contacts[interface_];
+    if (generation_ >= 0) hand_over(s, c);
     std::vector<std::uint8_t> in(static_cast<std::size_t>(s.nodes.count()), 0);
-    for (const contact::Pass& p : c.passes) {
-      for (const Index k : p.near)
-        in[static_cast<std::size_t>(p.nodes[static_cast<std::size_t>(k)])] = 1;
+    for (const contact::Pass& p : c.passes)
       for (const auto& segment : p.surface.segments)
         for (const Index n : segment)
           in[static_cast<std::size_t>(n)] = 1;
+    segment_nodes_.clear();
+    for (Index n = 0; n < s.nodes.count(); ++n)
+      if (in[static_cast<std::size_t>(n)] && s.nodes.rigid_body[static_cast<std::size_t>(n)] < 0)
+        segment_nodes_.push_back(n);
+    owner_ = s.ownership.owner;
+    generation_ = s.ownership.generation;
+    plan_segment_ghosts(s);
+  }
+
+  // Each slave node that leaves this process sends its new owner what it carries between
+  // cycles: per pass node [0, pass, index, friction 3, side 3, initial, count, candidates...],
+  // per tracked node [1, index, position at the last sort 3]. Collective.
+  void hand_over(State& s, contact::Interface& c) {
+    const int me = s.ownership.comm.rank();
+    const std::vector<int>& now = s.ownership.owner;
+    auto leaves = [&](Index n) {
+      const auto k = static_cast<std::size_t>(n);
+      return owner_[k] == me && now[k] != me;
+    };
+    std::vector<std::vector<double>> to(static_cast<std::size_t>(s.ownership.comm.size()));
+    for (std::size_t pass = 0; pass < c.passes.size(); ++pass) {
+      const contact::Pass& p = c.passes[pass];
+      for (const Index k : p.near) {
+        const auto i = static_cast<std::size_t>(k);
+        const Index node = p.nodes[i];
+        if (!leaves(node)) continue;
+        std::vector<double>& out =
+            to[static_cast<std::size_t>(now[static_cast<std::size_t>(node)])];
+        out.insert(out.end(), {0.0, static_cast<double>(pass), static_cast<double>(i)});
+        out.insert(out.end(), p.friction.col(k).data(), p.friction.col(k).data() + 3);
+        out.insert(out.end(), p.side.col(k).data(), p.side.col(k).data() + 3);
+        out.push_back(p.initial_penetration[i]);
+        out.push_back(static_cast<double>(p.candidate_offsets[i + 1] - p.candidate_offsets[i]));
+        for (Index q = p.candidate_offsets[i]; q < p.candidate_offsets[i + 1]; ++q)
+          out.push_back(static_cast<double>(p.candidates[static_cast<std::size_t>(q)]));
+      }
     }
-    near_nodes_.clear();
-    for (const Index n : nodes_)
-      if (in[static_cast<std::size_t>(n)]) near_nodes_.push_back(n);
-    near_sort_ = c.last_sort;
+    for (std::size_t t = 0; t < c.tracked.size(); ++t) {
+      const Index node = c.tracked[t];
+      if (!leaves(node) || s.nodes.rigid_body[static_cast<std::size_t>(node)] >= 0) continue;
+      std::vector<double>& out = to[static_cast<std::size_t>(now[static_cast<std::size_t>(node)])];
+      out.insert(out.end(), {1.0, static_cast<double>(t)});
+      const auto col = static_cast<Eigen::Index>(t);
+      out.insert(out.end(), c.sorted_positions.col(col).data(),
+                 c.sorted_positions.col(col).data() + 3);
+    }
+    const std::vector<std::vector<double>> from = s.ownership.comm.all_to_all(to);
+    // The candidates of each pass's nodes under the new owners: kept for the nodes this
+    // process still owns, received for those it gained, none for the others.
+    std::vector<std::vector<std::vector<Index>>> gained(c.passes.size());
+    for (std::size_t pass = 0; pass < c.passes.size(); ++pass)
+      gained[pass].resize(c.passes[pass].nodes.size());
+    for (const std::vector<double>& in : from)
+      for (std::size_t k = 0; k < in.size();) {
+        if (in[k] == 1.0) {
+          const auto col = static_cast<Eigen::Index>(in[k + 1]);
+          std::copy_n(&in[k + 2], 3, c.sorted_positions.col(col).data());
+          k += 5;
+          continue;
+        }
+        const auto pass = static_cast<std::size_t>(in[k + 1]);
+        const auto i = static_cast<std::size_t>(in[k + 2]);
+        contact::Pass& p = c.passes[pass];
+        const auto col = static_cast<Eigen::Index>(i);
+        std::copy_n(&in[k + 3], 3, p.friction.col(col).data());
+        std::copy_n(&in[k + 6], 3, p.side.col(col).data());
+        p.initial_penetration[i] = in[k + 9];
+        const auto count = static_cast<std::size_t>(in[k + 10]);
+        for (std::size_t q = 0; q < count; ++q)
+          gained[pass][i].push_back(static_cast<Index>(in[k + 11 + q]));
+        k += 11 + count;
+      }
+    for (std::size_t pass = 0; pass < c.passes.size(); ++pass)
+      regroup(s, c.passes[pass], gained[pass], me);
+  }
+
+  // A pass's candidate lists (CSR) and near nodes for the current owners.
+  void regroup(const State& s, contact::Pass& p, const std::vector<std::vector<Index>>& gained,
+               int me) const {
+    std::vector<Index> offsets(p.nodes.size() + 1, 0), candidates;
+    std::vector<Index> near;
+    for (std::size_t i = 0; i < p.nodes.size(); ++i) {
+      const auto node = static_cast<std::size_t>(p.nodes[i]);
+      if (s.ownership.owner[node] == me) {
+        if (owner_[node] == me) {
+          for (Index q = p.candidate_offsets[i]; q < p.candidate_offsets[i + 1]; ++q)
+            candidates.push_back(p.candidates[static_cast<std::size_t>(q)]);
+        } else {
+          candidates.insert(candidates.end(), gained[i].begin(), gained[i].end());
+          if (gained[i].empty()) {  // it carried nothing: no contact before the next sort
+            p.friction.col(static_cast<Eigen::Index>(i)).setZero();
+            p.side.col(static_cast<Eigen::Index>(i)).setZero();
+            p.initial_penetration[i] = 0.0;
+          }
+        }
+      }
+      offsets[i + 1] = static_cast<Index>(candidates.size());
+      if (offsets[i + 1] > offsets[i]) near.push_back(static_cast<Index>(i));
+    }
+    p.candidate_offsets = std::move(offsets);
+    p.candidates = std::move(candidates);
+    p.near = std::move(near);
   }
 
   std::size_t interface_;
-  std::vector<Index> nodes_, near_nodes_;
-  long near_sort_ = -2;  ///< the interface's last sort when near_nodes_ was listed
+  std::vector<Index> segment_nodes_;  ///< deformable, ascending
+  std::vector<int> owner_;            ///< the node owners the lists were made for
+  parallel::ExchangePlan segment_ghosts_;
   long generation_ = -1;
   double exchange_seconds_ = 0.0;
 };
 
-// A force transducer: applies nothing, reads what the contact blocks before it applied.
+// A force transducer: applies nothing, reads the hits the contact blocks before it computed.
 class TransducerBlock final : public Block {
  public:
   explicit TransducerBlock(std::size_t interface) : interface_(interface) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
   void forces(State& s, ForceReport& /*report*/) override {
-    contact::transducer_pass(s, s.contacts[interface_]);
+    contact::transducer_pass(s, s.contacts[interface_], exchange_seconds_);
+  }
+  void split_times(const State& /*s*/, PhaseTimes& phases) const override {
+    phases.seconds[PhaseTimes::exchange] += exchange_seconds_;
+    phases.seconds[PhaseTimes::contact] -= exchange_seconds_;
   }
 
  private:
   std::size_t interface_;
+  double exchange_seconds_ = 0.0;
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // contact point.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,15 @@
 namespace mcdyna::solver::contact {
 
 namespace {
+
+// Runs `exchange` (a collective) and adds its wall seconds to `seconds`.
+template <class Exchange>
+auto timed(double& seconds, Exchange&& exchange) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = exchange();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
 
 // A node whose closest point lies beyond the segment's edges by more than this share of the
 // segment's size is not in contact with it (its neighbour segment, or none, holds it).
@@ -241,78 +251,123 @@ struct Resultants {
       force_moment[static_cast<std::size_t>(6 * side + 3 + k)].add(m[k]);
     }
   }
-  void store(Interface& c) const {
-    auto v = [&](int first) {
-      return Vec3(force_moment[static_cast<std::size_t>(first)].value(),
-                  force_moment[static_cast<std::size_t>(first + 1)].value(),
-                  force_moment[static_cast<std::size_t>(first + 2)].value());
+  // The totals over the processes (each holds the partial sums of the nodes it owns).
+  void store(Interface& c, const core::Communicator& comm, double& exchange_seconds) const {
+    std::vector<core::ExactSum> partials(force_moment.begin(), force_moment.end());
+    partials.push_back(mass);
+    partials.push_back(work);
+    const std::vector<double> total = timed(exchange_seconds, [&] { return comm.sum(partials); });
+    auto v = [&](std::size_t first) {
+      return Vec3(total[first], total[first + 1], total[first + 2]);
     };
     c.force_a = v(0);
     c.moment_a = v(3);
     c.force_b = v(6);
     c.moment_b = v(9);
-    c.mass_in_contact = mass.value();
-    c.energy -= work.value();
+    c.mass_in_contact = total[12];
+    c.energy -= total[13];
   }
 };
 
-// A hit as doubles, for the processes to share them (one list packs and unpacks).
-template <class Visit>
-void hit_values(Hit& h, Visit&& visit) {
-  double segment = h.segment;
-  visit(&segment, 1);
-  h.segment = static_cast<Index>(segment);
-  visit(h.weights.data(), 4);
-  for (Vec3* v : {&h.force, &h.friction, &h.push})
-    visit(v->data(), 3);
-  visit(&h.initial, 1);
+// One node's share of a hit: the slave node's force (slot 0) or a segment node's (slot 1 + its
+// corner). `key` orders them as one process adds them: pass, slave node, slot.
+struct Contribution {
+  std::int64_t key = 0;
+  Index node = 0;
+  Vec3 force = Vec3::Zero();
+};
+
+std::int64_t contribution_key(std::size_t pass, std::size_t node_index, std::size_t slot) {
+  return (static_cast<std::int64_t>(pass) << 40) | (static_cast<std::int64_t>(node_index) << 3) |
+         static_cast<std::int64_t>(slot);
 }
 
-// The hits of the pass's nodes near the surface. Over several processes each computes those of
-// the slave nodes it owns and every process receives all of them (one all-gather per pass), so
-// that every process adds them in the same order as one process does; the search and the
-// forces, the costly part, are split.
-std::vector<Hit> pass_hits(const State& s, const Interface& c, const Pass& p) {
-  const auto n = static_cast<Index>(p.near.size());
-  std::vector<Hit> hits(p.near.size());
+// The hit of the pass's near node k (an index into p.near).
+Hit near_hit(const State& s, const Interface& c, const Pass& p, std::size_t k) {
+  return contact_force(s, c, p, static_cast<std::size_t>(p.near[k]));
+}
+
+// Every force of the interface's hits, in the order one process adds them: each process
+// computes the hits of the slave nodes it owns, keeps their state (friction, side, initial
+// penetration) and sends each segment node's share to the node's owner, which adds all shares
+// of its nodes in the order of their keys (pass, slave node, slot): the same sums, bit for bit,
+// on any number of processes. `hit_base` numbers the hits (AppliedForce::hit).
+std::vector<Contribution> owned_contributions(const State& s, Interface& c,
+                                              double& exchange_seconds) {
   const parallel::Ownership& own = s.ownership;
-  const bool split = own.comm.size() > 1 && !own.owner.empty();
+  const int processes = own.comm.size();
+  const bool split = processes > 1 && !own.owner.empty();
   const int me = own.comm.rank();
-  auto owner = [&](Index k) {
-    return own.owner[static_cast<std::size_t>(
-        p.nodes[static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)])])];
+  auto owner = [&](Index node) { return split ? own.owner[static_cast<std::size_t>(node)] : me; };
+  std::vector<Contribution> mine;
+  std::vector<std::vector<double>> to(static_cast<std::size_t>(processes));
+  c.computed.clear();
+  Index hit_base = 0;  // the node counts of the passes before
+  auto emit = [&](std::int64_t key, Index node, const Vec3& f) {
+    const auto slot = static_cast<Index>(key & 7);
+    const auto i = static_cast<Index>((key >> 3) & ((std::int64_t{1} << 37) - 1));
+    c.computed.push_back({node, hit_base + i, slot, f});
+    const int r = owner(node);
+    if (r == me) {
+      mine.push_back({key, node, f});
+      return;
+    }
+    std::vector<double>& out = to[static_cast<std::size_t>(r)];
+    out.insert(out.end(), {static_cast<double>(key), static_cast<double>(node), f[0], f[1], f[2]});
   };
+  for (std::size_t pass = 0; pass < c.passes.size(); ++pass) {
+    Pass& p = c.passes[pass];
+    if (pass > 0) hit_base += static_cast<Index>(c.passes[pass - 1].nodes.size());
+    // The near nodes this process owns (all of them after a sort over several processes;
+    // those of the first sort, made whole before the split, are filtered here).
+    std::vector<Index> owned;
+    owned.reserve(p.near.size());
+    for (std::size_t k = 0; k < p.near.size(); ++k)
+      if (owner(p.nodes[static_cast<std::size_t>(p.near[k])]) == me)
+        owned.push_back(static_cast<Index>(k));
+    const auto n = static_cast<Index>(owned.size());
+    std::vector<Hit> hits(owned.size());
 #pragma omp parallel for schedule(static, 64) if (n > 512)
-  for (Index k = 0; k < n; ++k)
-    if (!split || owner(k) == me)
-      hits[static_cast<std::size_t>(k)] =
-          contact_force(s, c, p, static_cast<std::size_t>(p.near[static_cast<std::size_t>(k)]));
-  if (!split) return hits;
-  parallel::gather_owned(
-      own.comm, hits.size(), [&](std::size_t k) { return owner(static_cast<Index>(k)); },
-      [&](std::size_t k, std::vector<double>& out) {
-        hit_values(hits[k],
-                   [&](const double* v, int count) { out.insert(out.end(), v, v + count); });
-      },
-      [&](std::size_t k, const double*& in) {
-        hit_values(hits[k], [&](double* v, int count) {
-          std::copy(in, in + count, v);
-          in += count;
-        });
-      });
-  return hits;
+    for (Index q = 0; q < n; ++q)
+      hits[static_cast<std::size_t>(q)] =
+          near_hit(s, c, p, static_cast<std::size_t>(owned[static_cast<std::size_t>(q)]));
+    for (std::size_t q = 0; q < owned.size(); ++q) {
+      const Hit& h = hits[q];
+      const auto i = static_cast<std::size_t>(p.near[static_cast<std::size_t>(owned[q])]);
+      p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
+      p.side.col(static_cast<Eigen::Index>(i)) = h.push;
+      p.initial_penetration[i] = h.initial;
+      if (h.segment < 0) continue;
+      emit(contribution_key(pass, i, 0), p.nodes[i], h.force);
+      const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
+      for (std::size_t j = 0; j < 4; ++j)
+        if (h.weights[j] != 0.0)
+          emit(contribution_key(pass, i, 1 + j), seg[j], -h.weights[j] * h.force);
+    }
+  }
+  if (!split) return mine;
+  const std::vector<std::vector<double>> from =
+      timed(exchange_seconds, [&] { return own.comm.all_to_all(to); });
+  for (const std::vector<double>& in : from)
+    for (std::size_t k = 0; k + 5 <= in.size(); k += 5)
+      mine.push_back({static_cast<std::int64_t>(in[k]), static_cast<Index>(in[k + 1]),
+                      Vec3(in[k + 2], in[k + 3], in[k + 4])});
+  // Each list is in key order already; the merge puts them in the order of one process.
+  std::stable_sort(mine.begin(), mine.end(),
+                   [](const Contribution& a, const Contribution& b) { return a.key < b.key; });
+  return mine;
 }
 
 }  // namespace
 
-void interface_pass(State& s, Interface& c, bool sort) {
+void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds) {
   // What the interface took from the structure (penalty springs and friction), the glstat
   // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
   // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
   // linear spring, so an elastic impact gives it all back). This half: last cycle's forces.
-  // The work and the resultants are exact sums (core::ExactSum). Over several processes the
-  // hits are computed by the slave nodes' owners and shared (pass_hits); every process then
-  // applies all of them, in node order.
+  // The work and the resultants are exact sums (core::ExactSum): over several processes each
+  // adds the forces on the nodes it owns (`applied` holds those only) and the partial sums
+  // merge exactly.
   const double step = s.step;
   Resultants sums;
   auto charge = [&](Index node, const Vec3& f) {
@@ -327,50 +382,34 @@ void interface_pass(State& s, Interface& c, bool sort) {
       p.friction.setZero();
       p.side.setZero();
     }
-    sums.store(c);
+    sums.store(c, s.ownership.comm, exchange_seconds);
     return;
   }
   if (sort) sort_buckets(s, c);
-  Index hit_number = 0;
-  for (Pass& p : c.passes) {
-    const std::vector<Hit> hits = pass_hits(s, c, p);
-    // Forces added in node order: the same sums for any thread count.
-    for (std::size_t k = 0; k < hits.size(); ++k) {
-      const Hit& h = hits[k];
-      const auto i = static_cast<std::size_t>(p.near[k]);
-      p.friction.col(static_cast<Eigen::Index>(i)) = h.friction;
-      p.side.col(static_cast<Eigen::Index>(i)) = h.push;
-      p.initial_penetration[i] = h.initial;
-      if (h.segment < 0) continue;
-      const Index node = p.nodes[i];
-      const Vec3 x = s.nodes.position.col(node);
-      s.nodes.force.col(node) += h.force;
-      c.applied.push_back({node, hit_number, h.force});
-      charge(node, h.force);
-      const int side_nodes = p.nodes_on_side_a ? 0 : 1;
-      const int side_segments = 1 - side_nodes;
-      sums.add(side_nodes, h.force, x.cross(h.force));
-      if (p.nodes_on_side_a) sums.mass.add(s.nodes.mass[static_cast<std::size_t>(node)]);
-      const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
-      for (std::size_t j = 0; j < 4; ++j) {
-        if (h.weights[j] == 0.0) continue;
-        const Vec3 f = -h.weights[j] * h.force;
-        const Vec3 xj = s.nodes.position.col(seg[j]);
-        s.nodes.force.col(seg[j]) += f;
-        c.applied.push_back({seg[j], hit_number, f});
-        charge(seg[j], f);
-        sums.add(side_segments, f, xj.cross(f));
-      }
-      ++hit_number;
-    }
+  for (const Contribution& f : owned_contributions(s, c, exchange_seconds)) {
+    const Pass& p = c.passes[static_cast<std::size_t>(f.key >> 40)];
+    const auto slot = static_cast<Index>(f.key & 7);
+    s.nodes.force.col(f.node) += f.force;
+    c.applied.push_back({f.node, 0, slot, f.force});
+    charge(f.node, f.force);
+    // Side A (0) holds the slave nodes of a pass whose nodes are on side A.
+    const bool on_slave_side = slot == 0;
+    const int side = (on_slave_side == p.nodes_on_side_a) ? 0 : 1;
+    sums.add(side, f.force, Vec3(s.nodes.position.col(f.node)).cross(f.force));
+    if (on_slave_side && p.nodes_on_side_a)
+      sums.mass.add(s.nodes.mass[static_cast<std::size_t>(f.node)]);
   }
-  sums.store(c);
+  sums.store(c, s.ownership.comm, exchange_seconds);
 }
 
-void transducer_pass(State& s, Interface& t) {
+void transducer_pass(State& s, Interface& t, double& exchange_seconds) {
+  // Each process sums the hits it computed (Interface::computed: whole hits, their nodes'
+  // positions current here) and the processes' partial sums merge exactly; a node touched by
+  // hits of several processes counts its mass once, on its owner.
+  const core::Communicator& comm = s.ownership.comm;
   Resultants sums;
   if (s.time < t.birth || s.time > t.death) {
-    sums.store(t);
+    sums.store(t, comm, exchange_seconds);
     return;
   }
   const Transducer& sensor = t.sensor;
@@ -383,7 +422,7 @@ void transducer_pass(State& s, Interface& t) {
   std::vector<Index> touched;  // side A nodes that took a force, for the mass in contact
   for (const Interface& c : s.contacts) {
     if (c.sensor.active) continue;
-    const std::vector<AppliedForce>& f = c.applied;
+    const std::vector<AppliedForce>& f = c.computed;
     for (std::size_t begin = 0; begin < f.size();) {
       // One hit: f[begin] is the slave node's force, the rest its segment's nodes'.
       std::size_t end = begin + 1;
@@ -423,11 +462,19 @@ void transducer_pass(State& s, Interface& t) {
       begin = end;
     }
   }
+  if (comm.size() > 1) {
+    const std::vector<double> everyone = timed(exchange_seconds, [&] {
+      return comm.all_gather_varying(std::vector<double>(touched.begin(), touched.end()));
+    });
+    touched.clear();
+    for (const double n : everyone)
+      if (s.ownership.owned_now(static_cast<Index>(n))) touched.push_back(static_cast<Index>(n));
+  }
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (const Index n : touched)
     sums.mass.add(s.nodes.mass[static_cast<std::size_t>(n)]);
-  sums.store(t);
+  sums.store(t, comm, exchange_seconds);
 }
 
 }  // namespace mcdyna::solver::contact

@@ -52,7 +52,7 @@ void sort_pass(const State& s, Pass& p, double margin) {
     extents[k] = (boxes[k].hi - boxes[k].lo).maxCoeff();
   }
   for (const Index n : p.nodes)
-    grid.origin = grid.origin.cwiseMin(s.nodes.position.col(n));
+    if (s.ownership.owned_now(n)) grid.origin = grid.origin.cwiseMin(s.nodes.position.col(n));
   // Cells of twice the median widened segment: a node sees the few segments around it, and the
   // odd large segment (a fan closing a screw's end) is binned into every cell it covers.
   double cell = 1.0;
@@ -72,8 +72,13 @@ void sort_pass(const State& s, Pass& p, double margin) {
   }
   std::sort(bins.begin(), bins.end());
   const auto nodes = static_cast<Index>(p.nodes.size());
+  // Over several processes each looks up the slave nodes it owns only: their owner alone
+  // computes their hits (contact_forces.cpp). The candidates of a node are the boxes that hold
+  // it, in segment order, whatever the grid's origin and cell: the same on any process count.
   auto each_candidate = [&](Index i, auto&& take) {
-    const Vec3 x = s.nodes.position.col(p.nodes[static_cast<std::size_t>(i)]);
+    const Index node = p.nodes[static_cast<std::size_t>(i)];
+    if (!s.ownership.owned_now(node)) return;
+    const Vec3 x = s.nodes.position.col(node);
     const Key key = Grid::key(grid.cell_of(x));
     auto it = std::lower_bound(bins.begin(), bins.end(), std::make_pair(key, Index{0}));
     for (; it != bins.end() && it->first == key; ++it) {
@@ -124,7 +129,7 @@ bool sort_due(const State& s, const Interface& c) {
     const Index node = c.tracked[static_cast<std::size_t>(i)];
     // Over several processes the position of a deformable node is current on its owner only
     // between sorts (contact_block.cpp); rigid-body nodes are placed alike everywhere.
-    if (!s.ownership.owns_node(node) && s.nodes.rigid_body[static_cast<std::size_t>(node)] < 0)
+    if (!s.ownership.owned_now(node) && s.nodes.rigid_body[static_cast<std::size_t>(node)] < 0)
       continue;
     moved = moved || (s.nodes.position.col(node) - c.sorted_positions.col(i)).squaredNorm() > limit;
   }

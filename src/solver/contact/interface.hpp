@@ -56,12 +56,15 @@ struct Pass {
   std::vector<double> initial_penetration;
 };
 
-/// A force applied at the last pass, kept to charge its work over the following step and for
-/// the force transducers. The forces of one hit (the slave node's, then its segment nodes')
-/// share `hit`, numbered from 0 over the interface's passes.
+/// A force of the last pass. `Interface::applied`: the forces this process added to the nodes
+/// it owns, kept to charge their work over the following step. `Interface::computed`: the whole
+/// hits this process computed (its slave nodes'), for the force transducers: the forces of one
+/// hit (the slave node's, slot 0, then its segment nodes', slot 1 + the corner) share `hit`, the
+/// slave node's index in its pass plus the node counts of the passes before.
 struct AppliedForce {
   Index node = 0;
   Index hit = 0;
+  Index slot = 0;
   Vec3 force = Vec3::Zero();
 };
 
@@ -112,8 +115,9 @@ struct Interface {
   Vec3 force_a = Vec3::Zero(), force_b = Vec3::Zero();    ///< on side A / side B nodes
   Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();  ///< about the origin
   double mass_in_contact = 0.0;                           ///< of the A nodes in contact
-  double energy = 0.0;  ///< work the contact forces took from the structure
-  std::vector<AppliedForce> applied;
+  double energy = 0.0;                 ///< work the contact forces took from the structure
+  std::vector<AppliedForce> applied;   ///< on the nodes this process owns
+  std::vector<AppliedForce> computed;  ///< the hits of the slave nodes this process owns
 };
 
 }  // namespace mcdyna::solver::contact

@@ -68,6 +68,12 @@ struct Ownership {
   [[nodiscard]] bool owns_node(std::int32_t n) const {
     return owns.empty() || owns[static_cast<std::size_t>(n)] != 0;
   }
+  /// Per node: `owner` names this process. Within the cycle of a renewal that re-owns particles
+  /// `owner` is already new while `owns` and `moves` follow at the halo's rebuild after the
+  /// forces: the blocks that route work by owner in that cycle (contact) read this.
+  [[nodiscard]] bool owned_now(std::int32_t n) const {
+    return owner.empty() || owner[static_cast<std::size_t>(n)] == comm.rank();
+  }
   [[nodiscard]] bool computes_element(std::int32_t e) const {
     return computes.empty() || computes[static_cast<std::size_t>(e)] != 0;
   }
