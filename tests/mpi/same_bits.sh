@@ -3,8 +3,9 @@
 # d3plot state must be byte for byte the same (issue 25: the same bits for any process count).
 # glstat's "time per zone cycle" line is a timing and is left out, as are d3hsp and the dumps.
 #
-#   tests/mpi/same_bits.sh MCDYNA MPIEXEC OUT_DIR DECK [run options...]
+#   [PROCESSES="2 3"] tests/mpi/same_bits.sh MCDYNA MPIEXEC OUT_DIR DECK [run options...]
 #
+# PROCESSES: the counts compared with 1 process (default 2, 3 and 4).
 # Prints one line per process count and exits 1 when any file differs or a run fails.
 set -u
 source "$(dirname "$0")/compare_outputs.sh"
@@ -18,7 +19,7 @@ mkdir -p "$out"
   exit 1
 }
 status=0
-for n in 2 3 4; do
+for n in ${PROCESSES:-2 3 4}; do
   # One thread per process: CI machines may have fewer cores than processes, and the answer
   # does not depend on the thread count either.
   "$mpiexec" -np "$n" --oversubscribe --allow-run-as-root "$bin" run "$deck" --out "$out/np$n" \
