@@ -6,7 +6,7 @@
 # 2-process run (nodes and bytes received per cycle, messages per cycle) from d3hsp's
 # decomposition table. Goal (issue 25): >= 1.8x at 2 processes.
 #
-#   REPEAT=3 [FINE=1] tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna with MPI; ~7 min)
+#   REPEAT=3 [FINE=1] tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna with MPI; ~10 min)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=${1:-${TMPDIR:-/tmp}/mcdyna_mpi_speed}
@@ -76,6 +76,10 @@ bench "FE Taylor bar (coarse)" decks/taylor_bar/taylor_coarse.k 3000
 bench "FE Taylor bar (medium)" decks/taylor_bar/taylor_medium.k 1000
 bench "SPG Taylor bar (coarse)" decks/taylor_bar/taylor_spg_coarse.k 1000
 bench "FDS h 0.15" decks/fds/fds_h0.15.k 300
+# A deck as engineers write one (issue 46): two SPG sheets in contact with each other, a
+# hexahedral screw, two transducers; 30,118 particles at h 0.2.
+[ -f "$out/fds_two_sheets.k" ] || /usr/bin/python3 tools/decks/fds_two_sheets.py "$out/fds_two_sheets.k" >/dev/null
+bench "FDS two sheets h 0.2" "$out/fds_two_sheets.k" 300
 # FINE=1: also the paper's finest FDS deck (h 0.075: 143,157 particles, 751 MB per process),
 # generated here; about 6 minutes more.
 if [ "${FINE:-0}" = 1 ]; then
