@@ -282,16 +282,11 @@ std::int64_t contribution_key(std::size_t pass, std::size_t node_index, std::siz
          static_cast<std::int64_t>(slot);
 }
 
-// The hit of the pass's near node k (an index into p.near).
-Hit near_hit(const State& s, const Interface& c, const Pass& p, std::size_t k) {
-  return contact_force(s, c, p, static_cast<std::size_t>(p.near[k]));
-}
-
 // Every force of the interface's hits, in the order one process adds them: each process
 // computes the hits of the slave nodes it owns, keeps their state (friction, side, initial
 // penetration) and sends each segment node's share to the node's owner, which adds all shares
 // of its nodes in the order of their keys (pass, slave node, slot): the same sums, bit for bit,
-// on any number of processes. `hit_base` numbers the hits (AppliedForce::hit).
+// on any number of processes. The hits it computed go to Interface::computed whole.
 std::vector<Contribution> owned_contributions(const State& s, Interface& c,
                                               double& exchange_seconds) {
   const parallel::Ownership& own = s.ownership;
@@ -303,10 +298,9 @@ std::vector<Contribution> owned_contributions(const State& s, Interface& c,
   std::vector<std::vector<double>> to(static_cast<std::size_t>(processes));
   c.computed.clear();
   Index hit_base = 0;  // the node counts of the passes before
-  auto emit = [&](std::int64_t key, Index node, const Vec3& f) {
-    const auto slot = static_cast<Index>(key & 7);
-    const auto i = static_cast<Index>((key >> 3) & ((std::int64_t{1} << 37) - 1));
-    c.computed.push_back({node, hit_base + i, slot, f});
+  auto emit = [&](std::size_t pass, std::size_t i, std::size_t slot, Index node, const Vec3& f) {
+    c.computed.push_back({node, hit_base + static_cast<Index>(i), static_cast<Index>(slot), f});
+    const std::int64_t key = contribution_key(pass, i, slot);
     const int r = owner(node);
     if (r == me) {
       mine.push_back({key, node, f});
@@ -330,7 +324,9 @@ std::vector<Contribution> owned_contributions(const State& s, Interface& c,
 #pragma omp parallel for schedule(static, 64) if (n > 512)
     for (Index q = 0; q < n; ++q)
       hits[static_cast<std::size_t>(q)] =
-          near_hit(s, c, p, static_cast<std::size_t>(owned[static_cast<std::size_t>(q)]));
+          contact_force(s, c, p,
+                        static_cast<std::size_t>(
+                            p.near[static_cast<std::size_t>(owned[static_cast<std::size_t>(q)])]));
     for (std::size_t q = 0; q < owned.size(); ++q) {
       const Hit& h = hits[q];
       const auto i = static_cast<std::size_t>(p.near[static_cast<std::size_t>(owned[q])]);
@@ -338,11 +334,10 @@ std::vector<Contribution> owned_contributions(const State& s, Interface& c,
       p.side.col(static_cast<Eigen::Index>(i)) = h.push;
       p.initial_penetration[i] = h.initial;
       if (h.segment < 0) continue;
-      emit(contribution_key(pass, i, 0), p.nodes[i], h.force);
+      emit(pass, i, 0, p.nodes[i], h.force);
       const std::array<Index, 4>& seg = p.surface.segments[static_cast<std::size_t>(h.segment)];
       for (std::size_t j = 0; j < 4; ++j)
-        if (h.weights[j] != 0.0)
-          emit(contribution_key(pass, i, 1 + j), seg[j], -h.weights[j] * h.force);
+        if (h.weights[j] != 0.0) emit(pass, i, 1 + j, seg[j], -h.weights[j] * h.force);
     }
   }
   if (!split) return mine;
