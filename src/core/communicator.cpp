@@ -77,6 +77,18 @@ std::vector<double> Communicator::sum(const std::vector<ExactSum>& partials) con
   return totals;
 }
 
+std::vector<std::int64_t> Communicator::sum(const std::vector<std::int64_t>& partial) const {
+#ifdef MCDYNA_WITH_MPI
+  if (mpi_ && size_ > 1) {
+    std::vector<std::int64_t> all(partial.size());
+    MPI_Allreduce(partial.data(), all.data(), static_cast<int>(partial.size()), MPI_INT64_T,
+                  MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  }
+#endif
+  return partial;
+}
+
 double Communicator::min(double value) const {
 #ifdef MCDYNA_WITH_MPI
   if (mpi_ && size_ > 1) {

@@ -34,6 +34,8 @@ class Communicator {
   [[nodiscard]] double sum(const ExactSum& partial) const;
   /// The same for several sums at once (one message).
   [[nodiscard]] std::vector<double> sum(const std::vector<ExactSum>& partials) const;
+  /// The integer sums over all processes, entry by entry (exact, hence any order).
+  [[nodiscard]] std::vector<std::int64_t> sum(const std::vector<std::int64_t>& partial) const;
   /// The smallest of the processes' values.
   [[nodiscard]] double min(double value) const;
   [[nodiscard]] std::int64_t min(std::int64_t value) const;

@@ -6,7 +6,8 @@
 #   tests/mpi/restart_same_n.sh MCDYNA MPIEXEC N OUT_DIR DECK DUMP_CYCLES STOP_CYCLES [END_TIME]
 #
 # END_TIME (optional) ends the run that goes through and the continued one there instead of at
-# the deck's termination time.
+# the deck's termination time. RUN_OPTIONS (environment, optional): more `mcdyna run` options
+# for all three runs.
 set -u
 source "$(dirname "$0")/compare_outputs.sh"
 bin=$1 mpiexec=$2 n=$3 out=$4 deck=$5 every=$6 stop=$7
@@ -16,7 +17,9 @@ rm -rf "$out"
 mkdir -p "$out"
 # The deck with a d3dump every DUMP_CYCLES cycles.
 sed "0,/^\*KEYWORD/s//*KEYWORD\n*DATABASE_BINARY_D3DUMP\n$every/" "$deck" >"$out/deck.k"
-launch=("$mpiexec" -np "$n" --oversubscribe --allow-run-as-root "$bin" run "$out/deck.k" -q)
+read -r -a options <<<"${RUN_OPTIONS:-}"
+launch=("$mpiexec" -np "$n" --oversubscribe --allow-run-as-root "$bin" run "$out/deck.k" -q
+  "${options[@]}")
 "${launch[@]}" --out "$out/through" "${end[@]}" >"$out/through.log" 2>&1 || {
   echo "the uninterrupted run failed"
   cat "$out/through.log"

@@ -404,7 +404,7 @@ TEST_CASE("ITB 1 stiffness lengths bound the frequencies with the stabilisation"
     for (Index p = d.kernel.list.offsets[ss]; p < d.kernel.list.offsets[ss + 1]; ++p)
       d.kernel.shape.hessian.col(p) *= 8.0;
     d.kernel.step_bound.scale = 1.0;
-    spg::update_stiffness_length(d);
+    spg::update_stiffness_length(s, d);
     spg::calibrate_stiffness_length(s, d);
     MESSAGE("with one stiff row ", d.kernel.step_bound.scale);
     CHECK(d.kernel.step_bound.scale >= 2.0);

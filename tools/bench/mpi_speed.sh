@@ -27,23 +27,25 @@ shortest() { # files... -> the smallest time-loop seconds
   for f in "$@"; do loop_seconds "$f"; done | sort -g | head -1
 }
 
-bench() { # name deck cycles
+bench() { # name deck cycles [run options...]
   local name=$1 deck=$2 cycles=$3
+  shift 3
+  local options=("$@")
   local d="$out/$name"
   rm -rf "$d"
   for ((k = 1; k <= repeat; ++k)); do
-    "$bin" run "$deck" --out "$d/p1t1.$k" -q --threads 1 --cycles "$cycles" >/dev/null 2>&1
-    "$bin" run "$deck" --out "$d/p1t2.$k" -q --threads 2 --cycles "$cycles" >/dev/null 2>&1
+    "$bin" run "$deck" --out "$d/p1t1.$k" -q --threads 1 --cycles "$cycles" "${options[@]}" >/dev/null 2>&1
+    "$bin" run "$deck" --out "$d/p1t2.$k" -q --threads 2 --cycles "$cycles" "${options[@]}" >/dev/null 2>&1
     mpirun -np 2 --bind-to core "$bin" run "$deck" --out "$d/p2t1.$k" -q --threads 1 \
-      --cycles "$cycles" >/dev/null 2>&1 </dev/null
+      --cycles "$cycles" "${options[@]}" >/dev/null 2>&1 </dev/null
   done
   # The start (the first kernel renewal, whole on every process before the split) once per
   # configuration, from 1-cycle runs: the later cycles are what a long run is made of.
   for ((k = 1; k <= repeat; ++k)); do
-    "$bin" run "$deck" --out "$d/s11.$k" -q --threads 1 --cycles 1 >/dev/null 2>&1
-    "$bin" run "$deck" --out "$d/s12.$k" -q --threads 2 --cycles 1 >/dev/null 2>&1
+    "$bin" run "$deck" --out "$d/s11.$k" -q --threads 1 --cycles 1 "${options[@]}" >/dev/null 2>&1
+    "$bin" run "$deck" --out "$d/s12.$k" -q --threads 2 --cycles 1 "${options[@]}" >/dev/null 2>&1
     mpirun -np 2 --bind-to core "$bin" run "$deck" --out "$d/s21.$k" -q --threads 1 \
-      --cycles 1 >/dev/null 2>&1 </dev/null
+      --cycles 1 "${options[@]}" >/dev/null 2>&1 </dev/null
   done
   ln -sfn p1t1.1 "$d/p1t1"
   ln -sfn p2t1.1 "$d/p2t1"
@@ -76,10 +78,13 @@ bench "FE Taylor bar (coarse)" decks/taylor_bar/taylor_coarse.k 3000
 bench "FE Taylor bar (medium)" decks/taylor_bar/taylor_medium.k 1000
 bench "SPG Taylor bar (coarse)" decks/taylor_bar/taylor_spg_coarse.k 1000
 bench "FDS h 0.15" decks/fds/fds_h0.15.k 300
+# The FDS recipe's step (the decks' How-to-run line): the power iteration split too.
+bench "FDS h 0.15, eigen step" decks/fds/fds_h0.15.k 300 --spg-step eigen
 # A deck as engineers write one (issue 46): two SPG sheets in contact with each other, a
 # hexahedral screw, two transducers; 30,118 particles at h 0.2.
 [ -f "$out/fds_two_sheets.k" ] || /usr/bin/python3 tools/decks/fds_two_sheets.py "$out/fds_two_sheets.k" >/dev/null
 bench "FDS two sheets h 0.2" "$out/fds_two_sheets.k" 300
+bench "FDS two sheets h 0.2, eigen" "$out/fds_two_sheets.k" 300 --spg-step eigen
 # FINE=1: also the paper's finest FDS deck (h 0.075: 143,157 particles, 751 MB per process),
 # generated here; about 6 minutes more.
 if [ "${FINE:-0}" = 1 ]; then

@@ -28,6 +28,9 @@ struct ParticleShare {
   /// The particles whose rows hold an owned one (the transpose) that another process owns: their
   /// u-hat (Eq. 13's gather) arrives through `column_ghosts`.
   ExchangePlan column_ghosts;
+  /// With the eigenvalue step: the particles in the stressed rows that another process owns;
+  /// the power iteration's iterate (spg/frequency.cpp) arrives through `stress_ghosts`.
+  ExchangePlan stress_ghosts;
   /// Wall seconds in this part's exchanges and synchronisations (the timing's "exchange" row).
   double exchange_seconds = 0.0;
 };

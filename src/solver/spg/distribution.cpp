@@ -68,6 +68,8 @@ void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit) {
   visit(f.deformation.col(j).data(), 9);
   visit(f.stress_gradient.col(j).data(), 9);
   flags({&f.failed, &f.debris});
+  // The eigenvalue step's power iterate, kept on the particles' owners (frequency.cpp).
+  if (d.kernel.step_bound.mode.cols() > 0) visit(d.kernel.step_bound.mode.col(j).data(), 3);
 }
 
 parallel::ParticleShare& share_of(State& s, std::size_t domain) {
@@ -79,8 +81,7 @@ parallel::ParticleShare& share_of(State& s, std::size_t domain) {
 
 bool splittable(const Domain& d) {
   const Stabilization mode = d.settings.stabilization;
-  return (mode == Stabilization::momentum_consistent || mode == Stabilization::none) &&
-         d.settings.step_estimate == StepEstimate::nearest_neighbour;
+  return mode == Stabilization::momentum_consistent || mode == Stabilization::none;
 }
 
 std::size_t domain_index(const State& s, const Domain& d) {
@@ -137,6 +138,22 @@ void share_particles(State& s, std::size_t domain) {
     }
   share.row_ghosts = parallel::ExchangePlan(comm, share.owner, row_ghost, 3);
   share.column_ghosts = parallel::ExchangePlan(comm, share.owner, column_ghost, 3);
+  // The eigenvalue step's power iteration (frequency.cpp) forms the stress of the stressed rows
+  // from an iterate that lives on the owners: it reads the iterate of every particle in them.
+  share.stress_ghosts = parallel::ExchangePlan();
+  if (d.settings.step_estimate == StepEstimate::eigenvalue) {
+    std::vector<std::uint8_t> stress_ghost(n, 0);
+    for (const Index j : share.stressed.index) {
+      const auto jj = static_cast<std::size_t>(j);
+      stress_ghost[jj] = share.owned.flag[jj] ? 0 : 1;
+      for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
+        const auto k =
+            static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);
+        if (!share.owned.flag[k]) stress_ghost[k] = 1;
+      }
+    }
+    share.stress_ghosts = parallel::ExchangePlan(comm, share.owner, stress_ghost, 3);
+  }
 }
 
 void synchronise(State& s, std::size_t domain, Scope scope) {
@@ -200,6 +217,21 @@ void share_columns(const State& s, std::size_t domain, double* values, int width
         std::copy(in, in + w, values + w * j);
         in += w;
       });
+}
+
+void exchange_columns(parallel::ParticleShare& share, parallel::ExchangePlan& plan,
+                      Eigen::Matrix3Xd& field) {
+  const auto start = std::chrono::steady_clock::now();
+  plan.exchange(
+      [&](Index j, double* out) {
+        for (int c = 0; c < 3; ++c)
+          out[c] = field(c, j);
+      },
+      [&](Index j, const double* in) {
+        for (int c = 0; c < 3; ++c)
+          field(c, j) = in[c];
+      });
+  share.exchange_seconds += seconds_since(start);
 }
 
 std::vector<int> row_builders(const std::vector<std::uint8_t>& flagged, int processes) {

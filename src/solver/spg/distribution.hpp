@@ -26,11 +26,12 @@
 
 namespace mcdyna::solver::spg {
 
-/// Whether a part can be split: MC-SPG or plain nodal integration, with the nearest-neighbour
-/// step (PDAMP included: its pairs read the previous u-hat of the row partners, which then come
-/// with the column ghosts). ITB 1's stabilisation and the eigenvalue step (power iteration)
-/// read products across the whole part; such a part is still computed whole on every process
-/// (its nodes replicated, SpgBlock::mark_replicated).
+/// Whether a part can be split: MC-SPG or plain nodal integration (PDAMP included: its pairs
+/// read the previous u-hat of the row partners, which then come with the column ghosts), with
+/// either step estimate (the eigenvalue step's power iteration forms its products on each
+/// process's rows, frequency.cpp). ITB 1's stabilisation reads second derivatives across the
+/// whole part; such a part is still computed whole on every process (its nodes replicated,
+/// SpgBlock::mark_replicated).
 bool splittable(const Domain& d);
 
 /// The index of `d` in s.spg.
@@ -70,6 +71,11 @@ void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owne
 /// `width` values per particle, stored one particle after the other from `values`: every
 /// process receives those of each particle from its owner. Collective.
 void share_columns(const State& s, std::size_t domain, double* values, int width);
+
+/// Columns of a 3 x count field from the particles' owners into the ghosts of `plan` (one of
+/// `share`'s), timed as exchange.
+void exchange_columns(parallel::ParticleShare& share, parallel::ExchangePlan& plan,
+                      Eigen::Matrix3Xd& field);
 
 /// The process that builds each of a renewal's flagged rows (-1: not flagged): the flagged
 /// rows in particle order, in equal consecutive shares.

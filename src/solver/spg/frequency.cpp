@@ -14,9 +14,12 @@
 // mode-control springs and PDAMP. The elastic tangent is used where the material yields: the
 // plastic tangent is softer, so the elastic frequency bounds it.
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "core/bounded_sum.hpp"
 #include "solver/material/constitutive.hpp"
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/pair_sums.hpp"
 #include "solver/spg/spg_solver.hpp"
 
@@ -77,19 +80,27 @@ const ParticleSubset& result_support(const Domain& d, const ProductPatch& patch)
 
 // A x for displacements x (3 x count) into `out`, with the domain's workspace for the stress,
 // the forces (turned into the smoothed particles' accelerations in place) and u-hat. With
-// `patch`, formed on it only and zero elsewhere.
+// `patch`, formed on it only and zero elsewhere. Over several processes (`share`), formed on
+// this process's stressed rows and own particles, as the cycle's passes are (distribution.hpp):
+// x must hold the stress ghosts' iterate; the accelerations reach the row ghosts and u-hat the
+// column ghosts between the passes; `out` is current on the own particles only.
 void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,
-           Eigen::Matrix3Xd& out, bool stabilization, const ProductPatch* patch) {
+           Eigen::Matrix3Xd& out, bool stabilization, const ProductPatch* patch,
+           parallel::ParticleShare* share) {
   const Index n = d.count();
   const double shear = mat.shear_modulus;
   const bool mc = d.settings.stabilization == Stabilization::momentum_consistent;
   Eigen::Matrix<double, 9, Eigen::Dynamic>& p = d.scratch.stress;
   Eigen::Matrix3Xd& acc = d.scratch.force;
   Eigen::Matrix3Xd& hat = d.scratch.hat;
-  const ParticleSubset* rows = patch != nullptr ? &patch->rows : nullptr;
-  const ParticleSubset* particles = patch != nullptr ? &patch->particles : nullptr;
-  const ParticleSubset* hats = patch == nullptr ? nullptr : mc ? &patch->hat : particles;
-  const ParticleSubset* outs = patch == nullptr ? nullptr : &result_support(d, *patch);
+  const ParticleSubset* rows = patch != nullptr   ? &patch->rows
+                               : share != nullptr ? &share->stressed
+                                                  : nullptr;
+  const ParticleSubset* particles = patch != nullptr   ? &patch->particles
+                                    : share != nullptr ? &share->owned
+                                                       : nullptr;
+  const ParticleSubset* hats = patch == nullptr ? particles : mc ? &patch->hat : particles;
+  const ParticleSubset* outs = patch == nullptr ? particles : &result_support(d, *patch);
   if (patch != nullptr) {
     p.setZero(9, n);
     acc.setZero(3, n);
@@ -148,6 +159,7 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
     stabilization_operator(d, mat, x, d.fields.gradient.force, rows, particles);
     acc += d.fields.gradient.force;
   }
+  if (share != nullptr && mc) exchange_columns(*share, share->row_ghosts, acc);  // Eq. 30's a_J
   const auto hat_count = static_cast<std::int64_t>(members(hats, n));
 #pragma omp parallel for schedule(static, 256) if (hat_count > 512)
   for (std::int64_t r = 0; r < hat_count; ++r) {
@@ -169,6 +181,7 @@ void apply(const State& s, Domain& d, const Material& mat, const Eigen::Matrix3X
       hat.col(k) = sum;
     }
   }
+  if (share != nullptr && mc) exchange_columns(*share, share->column_ghosts, hat);  // Eq. 13's
   const auto out_count = static_cast<std::int64_t>(members(outs, n));
 #pragma omp parallel for schedule(static, 256) if (out_count > 512)
   for (std::int64_t r = 0; r < out_count; ++r) {
@@ -194,35 +207,65 @@ double start_value(Index i, int k) {
 
 // The power iteration's norms are order-free sums (core::BoundedSum, after a pass for the
 // largest term): the same bits for any thread count and any split of the particles over
-// processes (issue 25), where a serial sum would need every term on one process.
+// processes (issue 25): over several, each process adds the terms of its own particles under
+// the largest term of all, and the integer digits are summed over the processes.
 template <class Term>
-double order_free_sum(Eigen::Index count, Term&& term) {
+double order_free_sum(Index count, const parallel::ParticleShare* share,
+                      const core::Communicator& comm, Term&& term) {
+  const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
+  const std::size_t terms = members(own, count);
   double bound = 0.0;
-  for (Eigen::Index i = 0; i < count; ++i)
-    bound = std::max(bound, std::abs(term(i)));
+  for (std::size_t k = 0; k < terms; ++k)
+    bound = std::max(bound, std::abs(term(member(own, k))));
+  if (share != nullptr) bound = -comm.min(-bound);
   core::BoundedSum sum(bound);
-  for (Eigen::Index i = 0; i < count; ++i)
-    if (const double t = term(i); t != 0.0) sum.add(t);
-  return sum.value();
+  for (std::size_t k = 0; k < terms; ++k)
+    if (const double t = term(member(own, k)); t != 0.0) sum.add(t);
+  if (share == nullptr) return sum.value();
+  const core::BoundedSum::Digits mine = sum.digits();
+  const std::vector<std::int64_t> all =
+      comm.sum(std::vector<std::int64_t>(mine.begin(), mine.end()));
+  return core::BoundedSum::from_digits(bound, {all[0], all[1]}).value();
 }
 
-double order_free_norm(const Eigen::Matrix3Xd& x) {
-  return std::sqrt(
-      order_free_sum(x.cols(), [&](Eigen::Index i) { return x.col(i).squaredNorm(); }));
-}
+// The norms and products of the iteration, over the whole part or a process's own particles.
+struct OrderFree {
+  const parallel::ParticleShare* share = nullptr;
+  core::Communicator comm;
 
-// sum_i w_i x_i . y_i.
-double order_free_weighted_dot(const std::vector<double>& w, const Eigen::Matrix3Xd& x,
-                               const Eigen::Matrix3Xd& y) {
-  return order_free_sum(x.cols(), [&](Eigen::Index i) {
-    return w[static_cast<std::size_t>(i)] * x.col(i).dot(y.col(i));
-  });
-}
-
-// |x| in the product of `w` (empty: the Euclidean norm).
-double length_in(const std::vector<double>& w, const Eigen::Matrix3Xd& x) {
-  return w.empty() ? order_free_norm(x) : std::sqrt(order_free_weighted_dot(w, x, x));
-}
+  [[nodiscard]] double norm(const Eigen::Matrix3Xd& x) const {
+    return std::sqrt(order_free_sum(static_cast<Index>(x.cols()), share, comm,
+                                    [&](Index i) { return x.col(i).squaredNorm(); }));
+  }
+  // sum_i w_i x_i . y_i.
+  [[nodiscard]] double weighted_dot(const std::vector<double>& w, const Eigen::Matrix3Xd& x,
+                                    const Eigen::Matrix3Xd& y) const {
+    return order_free_sum(static_cast<Index>(x.cols()), share, comm, [&](Index i) {
+      return w[static_cast<std::size_t>(i)] * x.col(i).dot(y.col(i));
+    });
+  }
+  // |x| in the product of `w` (empty: the Euclidean norm).
+  [[nodiscard]] double length_in(const std::vector<double>& w, const Eigen::Matrix3Xd& x) const {
+    return w.empty() ? norm(x) : std::sqrt(weighted_dot(w, x, x));
+  }
+  // The particle where x is largest (the lowest index among equals), over every process.
+  [[nodiscard]] Index largest(const Eigen::Matrix3Xd& x) const {
+    const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
+    double value = -1.0;
+    Index at = -1;
+    for (std::size_t k = 0; k < members(own, static_cast<Index>(x.cols())); ++k) {
+      const Index i = member(own, k);
+      if (x.col(i).squaredNorm() > value) {
+        value = x.col(i).squaredNorm();
+        at = i;
+      }
+    }
+    if (share == nullptr) return at;
+    const double top = -comm.min(-value);
+    return static_cast<Index>(
+        comm.min(static_cast<std::int64_t>(value == top ? at : std::numeric_limits<Index>::max())));
+  }
+};
 
 // The inner product in which A is self-adjoint, where it is known: without MC smoothing every
 // particle moves with its node's mass, A = M^-1 K with K symmetric, and the Rayleigh quotient
@@ -255,29 +298,31 @@ Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& r
   return x;
 }
 
-FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
-                                    Eigen::Matrix3Xd* mode, bool without_stabilization,
-                                    bool on_support) {
+FrequencyEstimate largest_frequency(State& s, Domain& d, int iterations, Eigen::Matrix3Xd* mode,
+                                    bool without_stabilization, bool on_support) {
   const bool stabilization =
       d.settings.stabilization == Stabilization::strain_gradient && !without_stabilization;
   const Index n = d.count();
   FrequencyEstimate r;
   if (n == 0) return r;
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
+  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const OrderFree sums{share, s.ownership.comm};
   Eigen::Matrix3Xd& x = d.scratch.vector;
   Eigen::Matrix3Xd& ax = d.scratch.product;
   ax.resize(3, n);
-  if (mode && mode->cols() == n && order_free_norm(*mode) > 0.0)
+  if (mode && mode->cols() == n && sums.norm(*mode) > 0.0)
     x = *mode;
   else
     x = frequency_start(n);
   const std::vector<double> w = self_adjoint_weights(s, d);
-  x /= length_in(w, x);
+  x /= sums.length_in(w, x);
   // Products on the patch while it stays small (past half the particles the whole-domain loops
-  // cost less than the reaches and the zeroing).
+  // cost less than the reaches and the zeroing). Over several processes a patch would reach
+  // across them: the products are formed on each process's share, which gives the same bits.
   ParticleSubset live;
   ProductPatch patch;
-  bool on_patch = on_support;
+  bool on_patch = on_support && share == nullptr;
   if (on_patch) {
     live.flag.assign(static_cast<std::size_t>(n), 0);
     for (Index i = 0; i < n; ++i)
@@ -290,28 +335,23 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
       spread(d, live, patch);
       on_patch = 2 * result_support(d, patch).index.size() < static_cast<std::size_t>(n);
     }
-    apply(s, d, mat, x, ax, stabilization, on_patch ? &patch : nullptr);
+    if (share != nullptr) exchange_columns(*share, share->stress_ghosts, x);
+    apply(s, d, mat, x, ax, stabilization, on_patch ? &patch : nullptr, share);
     if (on_patch) {
       live = result_support(d, patch);
       ++r.patch_products;
     }
     // |x| = 1: the Rayleigh quotient where the product is known (A x holds the forces' side,
     // -M^-1 K x), else |A x|.
-    const double lambda = w.empty() ? order_free_norm(ax) : -order_free_weighted_dot(w, x, ax);
+    const double lambda = w.empty() ? sums.norm(ax) : -sums.weighted_dot(w, x, ax);
     r.omega_squared = lambda;
     r.iterations = it + 1;
     r.change = previous > 0.0 ? std::abs(lambda - previous) / lambda : 1.0;
     previous = lambda;
     if (!(lambda > 0.0)) break;
-    x = ax / (w.empty() ? lambda : length_in(w, ax));
+    x = ax / (w.empty() ? lambda : sums.length_in(w, ax));
   }
-  // Where the mode lives: the particle with the largest share.
-  double largest = -1.0;
-  for (Index i = 0; i < n; ++i)
-    if (x.col(i).squaredNorm() > largest) {
-      largest = x.col(i).squaredNorm();
-      r.particle = i;
-    }
+  r.particle = sums.largest(x);  // where the mode lives: the particle with the largest share
   if (mode) *mode = x;
   return r;
 }

@@ -453,7 +453,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
   if (d.settings.stabilization == Stabilization::strain_gradient)
     stabilization_moments(s, d, all ? std::vector<std::uint8_t>{} : rows);
   // After the moments: ITB 1's lengths include its stabilisation's stiffness.
-  if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(d);
+  if (d.settings.step_estimate == StepEstimate::eigenvalue) update_stiffness_length(s, d);
   smooth_masses(s, d);
   if (d.diagnostics.renewals == 0)
     d.kernel.step_bound.initial_critical = calibrate_stiffness_length(s, d);

@@ -77,22 +77,6 @@ const ParticleSubset* advanced_particles(const parallel::ParticleShare* share) {
   return share ? &share->owned : nullptr;
 }
 
-// Columns of a 3 x count field from the particles' owners into their ghosts, timed as exchange.
-void exchange_columns(parallel::ParticleShare& share, parallel::ExchangePlan& plan,
-                      Eigen::Matrix3Xd& field) {
-  const auto start = std::chrono::steady_clock::now();
-  plan.exchange(
-      [&](Index j, double* out) {
-        for (int c = 0; c < 3; ++c)
-          out[c] = field(c, j);
-      },
-      [&](Index j, const double* in) {
-        for (int c = 0; c < 3; ++c)
-          field(c, j) = in[c];
-      });
-  share.exchange_seconds += seconds_since(start);
-}
-
 }  // namespace
 
 Index advance_velocities(State& s, Domain& d, double dt) {

@@ -98,7 +98,7 @@ struct FrequencyEstimate {
 /// ITB 1's stabilisation is part of the operator unless `without_stabilization`.
 /// `on_support`: the start vector is nonzero on a few particles (frequency_start with rows);
 /// each product is then formed where it can be nonzero only (the same bits, see ProductPatch).
-FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
+FrequencyEstimate largest_frequency(State& s, Domain& d, int iterations,
                                     Eigen::Matrix3Xd* mode = nullptr,
                                     bool without_stabilization = false, bool on_support = false);
 /// The fixed pseudo-random start of the power iteration (the same for any thread count), on the
@@ -106,18 +106,19 @@ FrequencyEstimate largest_frequency(const State& s, Domain& d, int iterations,
 Eigen::Matrix3Xd frequency_start(Index count, const std::vector<std::uint8_t>& rows = {});
 
 /// `--spg-step eigen` (stiffness_length.cpp): StepBound::lengths from the current rows, times
-/// StepBound::scale. Run at every renewal, after the transpose holds the new gradients.
-void update_stiffness_length(Domain& d);
+/// StepBound::scale. Run at every renewal, after the transpose holds the new gradients; over
+/// several processes each computes its own particles' lengths and every process receives all.
+void update_stiffness_length(State& s, Domain& d);
 /// At the first renewal, after the smoothed masses: the critical step of the initial arrangement
 /// (converged power iteration), returned; with `--spg-step eigen` the lengths are scaled so that
 /// the shortest particle step equals it.
-double calibrate_stiffness_length(const State& s, Domain& d);
+double calibrate_stiffness_length(State& s, Domain& d);
 /// Every cycle with `--spg-step eigen`: one power iteration from the last mode gives the current
 /// critical step of the particles; the lengths are scaled so that the shortest particle step
 /// (with the masses it has, StepBound::pass_step) matches it. `renewed` flags the rows renewed
 /// at this cycle's check (empty: none): a few iterations started on them find a mode the
 /// renewal made there before the step is taken.
-void recalibrate_stiffness_length(const State& s, Domain& d,
+void recalibrate_stiffness_length(State& s, Domain& d,
                                   const std::vector<std::uint8_t>& renewed = {});
 
 /// The rows due for renewal at a check (every SMSTEP steps), flagged in `rows`; returns how

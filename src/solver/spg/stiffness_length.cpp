@@ -36,6 +36,7 @@
 #include <limits>
 
 #include "solver/material/constitutive.hpp"
+#include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -123,7 +124,7 @@ void add_stabilization_stiffness(const Domain& d, std::vector<double>& stiffness
 }
 }  // namespace
 
-void update_stiffness_length(Domain& d) {
+void update_stiffness_length(State& s, Domain& d) {
   const Index n = d.count();
   std::vector<double> row_gradient(static_cast<std::size_t>(n), 0.0);  // G_J
 #pragma omp parallel for schedule(static) if (n > 4096)
@@ -156,10 +157,15 @@ void update_stiffness_length(Domain& d) {
         stiffness[ii] > 0.0 ? d.kernel.step_bound.scale * std::sqrt(own / stiffness[ii])
                             : std::numeric_limits<double>::infinity();
   }
+  // Over several processes a particle's transpose is whole on its owner only, and the cycle's
+  // step reads the lengths of every stressed row (particle_pass.cpp).
+  const std::size_t domain = domain_index(s, d);
+  if (s.ownership.split_part(domain) != nullptr)
+    timed_exchange(s, domain,
+                   [&] { share_columns(s, domain, d.kernel.step_bound.lengths.data(), 1); });
 }
 
-void recalibrate_stiffness_length(const State& s, Domain& d,
-                                  const std::vector<std::uint8_t>& renewed) {
+void recalibrate_stiffness_length(State& s, Domain& d, const std::vector<std::uint8_t>& renewed) {
   if (!(d.kernel.step_bound.pass_step > 0.0) || !std::isfinite(d.kernel.step_bound.pass_step))
     return;
   if (renewed.empty() && s.cycle % kRecalibrationInterval != 0) return;
@@ -192,7 +198,7 @@ void recalibrate_stiffness_length(const State& s, Domain& d,
   rescale(d.kernel.step_bound, ratio);
 }
 
-double calibrate_stiffness_length(const State& s, Domain& d) {
+double calibrate_stiffness_length(State& s, Domain& d) {
   d.kernel.step_bound.mode.resize(3, 0);
   const FrequencyEstimate f =
       largest_frequency(s, d, kCalibrationIterations, &d.kernel.step_bound.mode);
@@ -210,15 +216,19 @@ double calibrate_stiffness_length(const State& s, Domain& d) {
   }
   if (d.settings.step_estimate != StepEstimate::eigenvalue) return critical;  // reported only
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
+  // Over several processes each takes its own particles (their volumes are current there).
+  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
   double shortest = std::numeric_limits<double>::infinity();  // min l / (c sqrt(mobility))
-  for (Index i = 0; i < d.count(); ++i) {
-    const auto ii = static_cast<std::size_t>(i);
+  for (std::size_t k = 0; k < members(own, d.count()); ++k) {
+    const auto ii = static_cast<std::size_t>(member(own, k));
     if (d.kernel.isolated[ii] || !std::isfinite(d.kernel.step_bound.lengths[ii])) continue;
     const double c =
         std::sqrt(wave_speed_squared(mat, d.fields.volume[ii] / d.particles.initial_volume[ii]));
     shortest = std::min(shortest,
                         d.kernel.step_bound.lengths[ii] / (c * std::sqrt(d.kernel.mobility[ii])));
   }
+  if (share != nullptr) shortest = s.ownership.comm.min(shortest);
   if (std::isfinite(shortest)) rescale(d.kernel.step_bound, critical / shortest);
   return critical;
 }
