@@ -41,7 +41,7 @@ constexpr std::array<std::size_t, 27> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 256,  80,
-                                                          584, 72,  112, 128, 240, 3024, 1984,
+                                                          584, 72,  112, 128, 240, 3048, 1984,
                                                           96,  112, 456, 352, 144, 192,  136,
                                                           56,  64,  304, 624, 432, 120},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "

@@ -6,7 +6,7 @@
 # 2-process run (nodes and bytes received per cycle, messages per cycle) from d3hsp's
 # decomposition table. Goal (issue 25): >= 1.8x at 2 processes.
 #
-#   REPEAT=3 [FINE=1] tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna with MPI; ~10 min)
+#   REPEAT=3 [FINE=1] tools/bench/mpi_speed.sh [OUT_DIR]   (needs build/mcdyna with MPI; ~14 min)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=${1:-${TMPDIR:-/tmp}/mcdyna_mpi_speed}

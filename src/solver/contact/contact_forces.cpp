@@ -286,7 +286,9 @@ std::int64_t contribution_key(std::size_t pass, std::size_t node_index, std::siz
 // computes the hits of the slave nodes it owns, keeps their state (friction, side, initial
 // penetration) and sends each segment node's share to the node's owner, which adds all shares
 // of its nodes in the order of their keys (pass, slave node, slot): the same sums, bit for bit,
-// on any number of processes. The hits it computed go to Interface::computed whole.
+// on any number of processes. A replicated node (moved by every process: a shell's, an ITB 1
+// part's) gets its shares on every process. The hits it computed go to Interface::computed
+// whole.
 std::vector<Contribution> owned_contributions(const State& s, Interface& c,
                                               double& exchange_seconds) {
   const parallel::Ownership& own = s.ownership;
@@ -301,13 +303,23 @@ std::vector<Contribution> owned_contributions(const State& s, Interface& c,
   auto emit = [&](std::size_t pass, std::size_t i, std::size_t slot, Index node, const Vec3& f) {
     c.computed.push_back({node, hit_base + static_cast<Index>(i), static_cast<Index>(slot), f});
     const std::int64_t key = contribution_key(pass, i, slot);
+    auto send = [&](int r) {
+      std::vector<double>& out = to[static_cast<std::size_t>(r)];
+      out.insert(out.end(),
+                 {static_cast<double>(key), static_cast<double>(node), f[0], f[1], f[2]});
+    };
+    if (split && own.replicated_node(node)) {
+      mine.push_back({key, node, f});
+      for (int r = 0; r < processes; ++r)
+        if (r != me) send(r);
+      return;
+    }
     const int r = owner(node);
     if (r == me) {
       mine.push_back({key, node, f});
       return;
     }
-    std::vector<double>& out = to[static_cast<std::size_t>(r)];
-    out.insert(out.end(), {static_cast<double>(key), static_cast<double>(node), f[0], f[1], f[2]});
+    send(r);
   };
   for (std::size_t pass = 0; pass < c.passes.size(); ++pass) {
     Pass& p = c.passes[pass];
@@ -385,6 +397,8 @@ void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds)
     const Pass& p = c.passes[static_cast<std::size_t>(f.key >> 40)];
     const auto slot = static_cast<Index>(f.key & 7);
     s.nodes.force.col(f.node) += f.force;
+    // A replicated node's force is on every process; its owner alone counts it in the sums.
+    if (!s.ownership.owned_now(f.node)) continue;
     c.applied.push_back({f.node, 0, slot, f.force});
     charge(f.node, f.force);
     // Side A (0) holds the slave nodes of a pass whose nodes are on side A.

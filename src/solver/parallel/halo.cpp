@@ -70,6 +70,7 @@ void Halo::rebuild(State& s) {
   own.computes.assign(static_cast<std::size_t>(n_elements), 0);
   auto owner = [&](Index n) { return own.owner[static_cast<std::size_t>(n)]; };
   own.moved_nodes.clear();
+  own.replicated = replicated_;
   for (Index n = 0; n < n_nodes; ++n) {
     const auto i = static_cast<std::size_t>(n);
     own.moves[i] = (owner(n) == me || replicated_[i]) ? 1 : 0;

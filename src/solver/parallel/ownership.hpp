@@ -52,6 +52,10 @@ struct Ownership {
   /// Per node: this process owns it. A sum over nodes (a rigid wall's force) takes each node on
   /// its owner only, then sums over the processes (core::ExactSum: the same bits for any count).
   std::vector<std::uint8_t> owns;
+  /// Per node: moved by every process, since a block that holds it is computed whole on each
+  /// (Block::mark_replicated: shells, beams, ITB 1 SPG parts, ...). A force another block
+  /// computes on it once (a contact hit) must reach every process.
+  std::vector<std::uint8_t> replicated;
   /// Per SPG part (State::spg), how its particles are shared (empty on one process).
   std::vector<ParticleShare> particles;
   /// Counts the changes of `owner` (particles re-owned at renewals): the halo and the contact
@@ -67,6 +71,9 @@ struct Ownership {
   }
   [[nodiscard]] bool moves_node(std::int32_t n) const {
     return moves.empty() || moves[static_cast<std::size_t>(n)] != 0;
+  }
+  [[nodiscard]] bool replicated_node(std::int32_t n) const {
+    return !replicated.empty() && replicated[static_cast<std::size_t>(n)] != 0;
   }
   [[nodiscard]] bool owns_node(std::int32_t n) const {
     return owns.empty() || owns[static_cast<std::size_t>(n)] != 0;
