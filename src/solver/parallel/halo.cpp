@@ -52,8 +52,9 @@ void element_fields(State& s, Index e, bool states, Visit&& visit) {
 
 Halo::Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicated,
            core::Communicator comm)
-    : comm_(comm), replicated_(std::move(replicated)) {
+    : comm_(comm) {
   s.ownership.comm = comm_;
+  s.ownership.replicated = std::move(replicated);
   s.ownership.owner = d.owner;
   rebuild(s);
 }
@@ -70,13 +71,12 @@ void Halo::rebuild(State& s) {
   own.computes.assign(static_cast<std::size_t>(n_elements), 0);
   auto owner = [&](Index n) { return own.owner[static_cast<std::size_t>(n)]; };
   own.moved_nodes.clear();
-  own.replicated = replicated_;
   for (Index n = 0; n < n_nodes; ++n) {
     const auto i = static_cast<std::size_t>(n);
-    own.moves[i] = (owner(n) == me || replicated_[i]) ? 1 : 0;
+    own.moves[i] = (owner(n) == me || own.replicated[i]) ? 1 : 0;
     if (own.moves[i]) own.moved_nodes.push_back(n);
     own.owns[i] = owner(n) == me ? 1 : 0;
-    if (replicated_[i])
+    if (own.replicated[i])
       ++size_.replicated_nodes;
     else if (owner(n) == me)
       ++size_.owned_nodes;
@@ -120,19 +120,17 @@ void Halo::rebuild(State& s) {
   size_.peers = motion_.peers();
   // What each process other than 0 sends to 0 at an output: the values it alone computes.
   for (Index n = 0; n < n_nodes; ++n)
-    if (!replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
+    if (!own.replicated_node(n) && owner(n) != 0)
       output_[static_cast<std::size_t>(owner(n))].nodes.push_back(n);
   for (Index e = 0; e < n_elements; ++e)
     if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
       output_[static_cast<std::size_t>(r)].elements.push_back(e);
   for (std::size_t k = 0; k < s.constraints.nodes.size(); ++k)
-    if (const Index n = s.constraints.nodes[k];
-        !replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
+    if (const Index n = s.constraints.nodes[k]; !own.replicated_node(n) && owner(n) != 0)
       output_[static_cast<std::size_t>(owner(n))].constraints.push_back(static_cast<Index>(k));
   for (std::size_t m = 0; m < s.nodal_motions.size(); ++m)
     for (std::size_t k = 0; k < s.nodal_motions[m].nodes.size(); ++k)
-      if (const Index n = s.nodal_motions[m].nodes[k];
-          !replicated_[static_cast<std::size_t>(n)] && owner(n) != 0)
+      if (const Index n = s.nodal_motions[m].nodes[k]; !own.replicated_node(n) && owner(n) != 0)
         output_[static_cast<std::size_t>(owner(n))].motions.emplace_back(static_cast<Index>(m),
                                                                          static_cast<Index>(k));
 }

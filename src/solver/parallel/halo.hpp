@@ -68,8 +68,7 @@ class Halo {
 
  private:
   core::Communicator comm_;
-  std::vector<std::uint8_t> replicated_;  ///< per node: moved by every process
-  ExchangePlan motion_;                   ///< x and v of the ghost nodes
+  ExchangePlan motion_;  ///< x and v of the ghost nodes
   /// Per process other than 0: the nodes, hexahedra, constrained nodes (index into
   /// s.constraints.nodes) and prescribed-motion nodes (motion, index) it sends to process 0.
   struct OutputShare {

@@ -145,7 +145,7 @@ void share_particles(State& s, std::size_t domain) {
     std::vector<std::uint8_t> stress_ghost(n, 0);
     for (const Index j : share.stressed.index) {
       const auto jj = static_cast<std::size_t>(j);
-      stress_ghost[jj] = share.owned.flag[jj] ? 0 : 1;
+      if (!share.owned.flag[jj]) stress_ghost[jj] = 1;
       for (Index p = d.kernel.list.offsets[jj]; p < d.kernel.list.offsets[jj + 1]; ++p) {
         const auto k =
             static_cast<std::size_t>(d.kernel.list.neighbours[static_cast<std::size_t>(p)]);

@@ -210,37 +210,37 @@ double start_value(Index i, int k) {
 // processes (issue 25): over several, each process adds the terms of its own particles under
 // the largest term of all, and the integer digits are summed over the processes.
 template <class Term>
-double order_free_sum(Index count, const parallel::ParticleShare* share,
-                      const core::Communicator& comm, Term&& term) {
-  const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
+double order_free_sum(Index count, const ParticleSubset* own, const core::Communicator& comm,
+                      Term&& term) {
   const std::size_t terms = members(own, count);
   double bound = 0.0;
   for (std::size_t k = 0; k < terms; ++k)
     bound = std::max(bound, std::abs(term(member(own, k))));
-  if (share != nullptr) bound = -comm.min(-bound);
+  if (own != nullptr) bound = -comm.min(-bound);
   core::BoundedSum sum(bound);
   for (std::size_t k = 0; k < terms; ++k)
     if (const double t = term(member(own, k)); t != 0.0) sum.add(t);
-  if (share == nullptr) return sum.value();
+  if (own == nullptr) return sum.value();
   const core::BoundedSum::Digits mine = sum.digits();
   const std::vector<std::int64_t> all =
       comm.sum(std::vector<std::int64_t>(mine.begin(), mine.end()));
   return core::BoundedSum::from_digits(bound, {all[0], all[1]}).value();
 }
 
-// The norms and products of the iteration, over the whole part or a process's own particles.
+// The norms and products of the iteration, over the whole part (`own` null) or a process's own
+// particles.
 struct OrderFree {
-  const parallel::ParticleShare* share = nullptr;
+  const ParticleSubset* own = nullptr;
   core::Communicator comm;
 
   [[nodiscard]] double norm(const Eigen::Matrix3Xd& x) const {
-    return std::sqrt(order_free_sum(static_cast<Index>(x.cols()), share, comm,
+    return std::sqrt(order_free_sum(static_cast<Index>(x.cols()), own, comm,
                                     [&](Index i) { return x.col(i).squaredNorm(); }));
   }
   // sum_i w_i x_i . y_i.
   [[nodiscard]] double weighted_dot(const std::vector<double>& w, const Eigen::Matrix3Xd& x,
                                     const Eigen::Matrix3Xd& y) const {
-    return order_free_sum(static_cast<Index>(x.cols()), share, comm, [&](Index i) {
+    return order_free_sum(static_cast<Index>(x.cols()), own, comm, [&](Index i) {
       return w[static_cast<std::size_t>(i)] * x.col(i).dot(y.col(i));
     });
   }
@@ -250,7 +250,6 @@ struct OrderFree {
   }
   // The particle where x is largest (the lowest index among equals), over every process.
   [[nodiscard]] Index largest(const Eigen::Matrix3Xd& x) const {
-    const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
     double value = -1.0;
     Index at = -1;
     for (std::size_t k = 0; k < members(own, static_cast<Index>(x.cols())); ++k) {
@@ -260,7 +259,7 @@ struct OrderFree {
         at = i;
       }
     }
-    if (share == nullptr) return at;
+    if (own == nullptr) return at;
     const double top = -comm.min(-value);
     return static_cast<Index>(
         comm.min(static_cast<std::int64_t>(value == top ? at : std::numeric_limits<Index>::max())));
@@ -307,7 +306,7 @@ FrequencyEstimate largest_frequency(State& s, Domain& d, int iterations, Eigen::
   if (n == 0) return r;
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
-  const OrderFree sums{share, s.ownership.comm};
+  const OrderFree sums{share != nullptr ? &share->owned : nullptr, s.ownership.comm};
   Eigen::Matrix3Xd& x = d.scratch.vector;
   Eigen::Matrix3Xd& ax = d.scratch.product;
   ax.resize(3, n);
