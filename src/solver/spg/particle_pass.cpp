@@ -11,6 +11,7 @@
 #include "solver/material/constitutive.hpp"
 #include "solver/spg/distribution.hpp"
 #include "solver/spg/pair_sums.hpp"
+#include "solver/spg/smallest_stretch.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver::spg {
@@ -114,9 +115,7 @@ Outcome release_or_invert(Domain& d, Index j) {
 //   eigenvalue: the stiffness length (stiffness_length.cpp), scaled every second cycle to the
 //     largest eigenvalue of the linearised equations
 double step_length(const Domain& d, Index j, const Mat3& f_hat, double isotropic_length) {
-  Eigen::SelfAdjointEigenSolver<Mat3> eig;
-  eig.computeDirect(f_hat.transpose() * f_hat, Eigen::EigenvaluesOnly);
-  const double smallest = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
+  const double smallest = smallest_stretch(f_hat);
   const auto jj = static_cast<std::size_t>(j);
   if (d.settings.step_estimate == StepEstimate::eigenvalue)
     return d.kernel.step_bound.lengths[jj] * smallest;
@@ -382,11 +381,15 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
         }
       },
       mat.model);
-  if (share)
-    agree_on_pass(s.ownership.comm, best, controlling, best_physical, controlling_physical,
-                  inverted, non_finite, released, mass_added);
-  d.diagnostics.released += released;
+  // The agreement is where a process waits for the slower one: timed as exchange, so the
+  // stress phase shows its own rows' work and an imbalance shows as waiting.
   const double exchanged_before = share ? share->exchange_seconds : 0.0;
+  if (share)
+    timed_exchange(s, domain, [&] {
+      agree_on_pass(s.ownership.comm, best, controlling, best_physical, controlling_physical,
+                    inverted, non_finite, released, mass_added);
+    });
+  d.diagnostics.released += released;
   if (mass_added) {
     grow_row_masses(d, owned);
     timed_exchange(s, domain, [&] { synchronise(s, domain, Scope::masses); });
