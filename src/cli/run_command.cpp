@@ -507,7 +507,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
              state->time, state->cycle);
   if (!output_failure.empty()) fmt::print(summary, "  {}\n", output_failure);
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
-  print_timing(summary, result, *state, comm.size(), dump.has_value());
+  print_timing(summary, result, *state, comm, dump.has_value());
   print_spg_summary(summary, *state);
   print_angular_budgets(summary, *state, budgets);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())

@@ -2,14 +2,16 @@
 /// The timing table that ends a run's summary: seconds per phase, element and particle rates.
 #include <iosfwd>
 
+#include "core/communicator.hpp"
 #include "solver/driver.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::cli {
 
-/// `processes`: of the run (the exchange row shows over several); `restarted`: the core time of
-/// the run's parts is added.
+/// `comm`: the run's processes (over several the exchange row shows, and every phase the least
+/// and the most any process took; collective); `restarted`: the core time of the run's parts is
+/// added.
 void print_timing(std::ostream& summary, const solver::RunResult& result,
-                  const solver::State& state, int processes, bool restarted);
+                  const solver::State& state, const core::Communicator& comm, bool restarted);
 
 }  // namespace mcdyna::cli

@@ -1,7 +1,8 @@
 #!/bin/bash
 # One deck on 1 process and under mpirun on 2, 3 and 4: every history (ASCII and CSV) and every
 # d3plot state must be byte for byte the same (issue 25: the same bits for any process count).
-# glstat's "time per zone cycle" line is a timing and is left out, as are d3hsp and the dumps.
+# glstat's "time per zone cycle" line is a timing and is left out, as are d3hsp and the dumps;
+# d3hsp's timing table must give each phase's range over the processes.
 #
 #   [PROCESSES="2 3"] tests/mpi/same_bits.sh MCDYNA MPIEXEC OUT_DIR DECK [run options...]
 #
@@ -29,6 +30,14 @@ for n in ${PROCESSES:-2 3 4}; do
     status=1
     continue
   }
+  # d3hsp's timing rows end with the least and the most any process took: process 0's seconds
+  # lie between them ("  name  p0 s  share %  least - most s").
+  if ! awk '/^Timing per phase/{on=1; next} on && /^  total/{exit}
+            on && / - [0-9.]+ s$/{rows++; if (!($(NF-3)+0 <= $(NF-7)+0 && $(NF-7)+0 <= $(NF-1)+0)) bad=1}
+            END{exit !(rows > 0 && !bad)}' "$out/np$n/d3hsp"; then
+    echo "$n processes: d3hsp's timing table has no range over the processes, or a wrong one"
+    status=1
+  fi
   differing_outputs "$out/np1" "$out/np$n"
   differ=$DIFFERING
   if [ -z "$differ" ]; then

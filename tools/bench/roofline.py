@@ -85,7 +85,7 @@ def parse_d3hsp(path):
     phases = {}
     block = text.split("Timing per phase", 1)[1]
     for line in block.splitlines()[1:]:
-        m = re.match(r"  (.+?)\s+([0-9.]+) s\s+([0-9.]+) %$", line)
+        m = re.match(r"  (.+?)\s+([0-9.]+) s\s+([0-9.]+) %", line)  # + range over processes
         if m:
             phases[m.group(1).strip()] = float(m.group(2))
         elif line.startswith("  total"):
