@@ -27,6 +27,12 @@ Families, methods and references (benchmarks.md, paper §4):
                 h 0.2 (8 layers, no mass scaling; ITB 1 takes about 3 hours on this 2-core
                 machine) and h 0.15 with the fast recipe (DT2MS 1e-8 s, OSU 1); the table then
                 gives the cost ratio SPG : MC-SPG of each pair (paper: 2.39 at h 0.125)
+                Time scale as a knob (issue 47): "MC-SPG recipe" (DT2MS 1e-8 s, OSU 1, eigen
+                step) at h 0.3 through the whole schedule at 20, 10, 5, 2 and 1 times the
+                paper's speeds ("h 0.3 scale S"). Every FDS record's facts name its time_scale,
+                dt2ms, added_mass (and by part), the plate's kinetic_over_internal after first
+                contact (tools/verify/fds_facts.py) and the thread_depth of its last state
+                (tools/verify/fds_unwrap.py, whose unrolled wall is NAME_wall.png)
 
 Writes OUT/study.csv (one row per run, one header row), the same as a Markdown table
 (OUT/study.md, for manual/verification.md), OUT/error_vs_time.png (log-log, one
@@ -57,6 +63,7 @@ sys.path.insert(0, os.path.join(ROOT, "tools", "verify"))
 
 import elastic_wave  # noqa: E402  (tools/verify)
 from columns import read_columns, write_columns  # noqa: E402
+import fds_facts  # noqa: E402
 import fds_force  # noqa: E402
 import taylor_bar  # noqa: E402
 
@@ -66,6 +73,9 @@ FDS_REFERENCE = os.path.join(ROOT, "decks", "fds", "reference_force_h0.15.csv")
 TAYLOR_EXPERIMENT_LENGTH, TAYLOR_EXPERIMENT_DIAMETER, TAYLOR_FE_LENGTH = 16.51, 16.7, 15.95
 QUICK_STAGE2 = 2.1  # mm of stage 2 in the quick study's FDS runs
 ITB1 = ["--spg-stabilization", "spg"]  # the original SPG stabilisation (eigenvalue step)
+TIME_SCALES = ("20", "10", "5", "2", "1")  # issue 47: the FDS schedule's speeds x these
+# What an FDS run's speeds and added mass did (tools/verify/fds_facts.py) and the thread it formed.
+FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "kinetic_over_internal", "thread_depth")
 
 
 @dataclass
@@ -129,6 +139,13 @@ def cases():
                         generate=["tools/decks/fds.py", "0.2", "{deck}", "--time-scale", "20"]))
         out.append(Case("fds", method, "h 0.15 DT2MS 1e-8", "{out}/decks/fds_h0.15_fast.k", False,
                         flags=flags, generate=["tools/decks/fds.py", "0.15", "{deck}"] + fast))
+    # Issue 47: time scale as a knob. Today's recipe (DT2MS 1e-8 s, OSU 1, eigen step) at h 0.3
+    # through the whole schedule, from 20 times the paper's speeds down to the paper's own.
+    for scale in TIME_SCALES:
+        out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale {scale}",
+                        f"{{out}}/decks/fds_h0.3_scale{scale}.k", False, flags=["--spg-step", "eigen"],
+                        generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", scale,
+                                  "--mass-scaling", "1e-8", "--osu", "1"]))
     quick_stage2 = ["--time-scale", "20", "--stage2", str(QUICK_STAGE2)]
     out.append(Case("fds", "MC-SPG", "h 0.3", "{out}/decks/fds_h0.3_quick.k", True,
                     generate=["tools/decks/fds.py", "0.3", "{deck}"] + quick_stage2))
@@ -234,10 +251,27 @@ def write_record(records, case, run_dir, facts):
         # The FDS error depends on the study's reference: measured when the table is made.
         fds_force.write_force_csv(run_dir)
         shutil.copyfile(os.path.join(run_dir, "force_vs_plunge.csv"), base + "_force.csv")
+        # What the speeds and the added mass did (issue 47), and the thread formed.
+        deck = os.path.join(ROOT, case.deck.format(out=os.path.dirname(os.path.dirname(run_dir))))
+        rec["facts"].update(fds_facts.facts(deck, run_dir))
+        rec["facts"].update(thread_facts(run_dir, base + "_wall.png"))
     with open(base + ".json", "w") as f:
         json.dump(rec, f, indent=1)
         f.write("\n")
     return rec
+
+
+def thread_facts(run_dir, png):
+    """The thread depth of the run's last state (tools/verify/fds_unwrap.py, which also draws
+    the unrolled hole wall into `png`) and the measurement's noise floor, mm."""
+    done = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "verify", "fds_unwrap.py"),
+                           run_dir, png], capture_output=True, text=True)
+    m = re.search(r"thread depth formed: ([0-9.]+) mm.*\(noise floor\): ([0-9.]+) mm",
+                  done.stdout)
+    if done.returncode != 0 or not m:
+        print(f"study: no thread depth for {run_dir}:\n{done.stdout}{done.stderr}", file=sys.stderr)
+        return {}
+    return {"thread_depth": float(m.group(1)), "thread_noise_floor": float(m.group(2))}
 
 
 def read_record(records, case):
@@ -467,7 +501,8 @@ def main():
                          cycles=facts["cycles"], threads=facts["threads"],
                          wall_s=facts["wall"], core_s=facts["core"],
                          steps_per_s=work * facts["cycles"] / facts["wall"] if facts["wall"] else 0,
-                         error=error, **figures))
+                         error=error, **figures,
+                         **{k: facts[k] for k in FDS_KNOBS if k in facts}))
     columns = []
     for r in rows:
         columns += [k for k in r if k not in columns]

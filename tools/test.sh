@@ -33,6 +33,8 @@ cmp build/study_smoke/study.csv build/study_smoke/study_from_runs.csv
 
 echo "== FDS thread measure on synthetic walls: tools/verify/fds_unwrap.py --check"
 /usr/bin/python3 tools/verify/fds_unwrap.py --check
+echo "== FDS run facts on a synthetic matsum: tools/verify/fds_facts.py --check"
+/usr/bin/python3 tools/verify/fds_facts.py --check
 
 echo "== mcdyna without MPI: the same bytes as the MPI build on one process"
 # The one-process communicator linked with the same solver objects (CMakeLists.txt: only
