@@ -143,7 +143,8 @@ def cases():
     # through the whole schedule, from 20 times the paper's speeds down to the paper's own.
     for scale in TIME_SCALES:
         out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale {scale}",
-                        f"{{out}}/decks/fds_h0.3_scale{scale}.k", False, flags=["--spg-step", "eigen"],
+                        f"{{out}}/decks/fds_h0.3_scale{scale}.k", False,
+                        flags=["--spg-step", "eigen"],
                         generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", scale,
                                   "--mass-scaling", "1e-8", "--osu", "1"]))
     quick_stage2 = ["--time-scale", "20", "--stage2", str(QUICK_STAGE2)]
@@ -264,8 +265,9 @@ def write_record(records, case, run_dir, facts):
 def thread_facts(run_dir, png):
     """The thread depth of the run's last state (tools/verify/fds_unwrap.py, which also draws
     the unrolled hole wall into `png`) and the measurement's noise floor, mm."""
-    done = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "tools", "verify", "fds_unwrap.py"),
-                           run_dir, png], capture_output=True, text=True)
+    unwrap = os.path.join(ROOT, "tools", "verify", "fds_unwrap.py")
+    done = subprocess.run(["/usr/bin/python3", unwrap, run_dir, png], capture_output=True,
+                          text=True)
     m = re.search(r"thread depth formed: ([0-9.]+) mm.*\(noise floor\): ([0-9.]+) mm",
                   done.stdout)
     if done.returncode != 0 or not m:
