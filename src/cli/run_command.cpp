@@ -30,6 +30,7 @@
 #include "core/communicator.hpp"
 #include "deck/deck.hpp"
 #include "io/checked_file.hpp"
+#include "io/inertia.hpp"
 #include "io/output_lock.hpp"
 #include "io/outputs.hpp"
 #include "solver/compile.hpp"
@@ -442,6 +443,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
     }
   };
   solver::RunHooks hooks;
+  io::InertiaRecord inertia;  // process 0: the deformable parts at every output
   if (writer) {
     hooks.output_due = [&](const solver::State& s) { return outputs->due(s); };
     hooks.state_due = [&](const solver::State& s) { return outputs->state_due(s); };
@@ -452,6 +454,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         outputs->write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);
       });
+      inertia.add(s, previous);
     };
     hooks.progress = [&](const solver::State& s) {
       progress.update(s);
@@ -509,6 +512,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
   print_timing(summary, result, *state, comm, dump.has_value());
   print_spg_summary(summary, *state);
+  inertia.print(summary);
   print_angular_budgets(summary, *state, budgets);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())
     fmt::print(summary,

@@ -565,4 +565,49 @@ TEST_CASE("beams are line cells of the d3plot series with their resultants") {
   CHECK(grid->GetCellData()->GetArray("stress") != nullptr);
 }
 
+namespace {
+
+// The numbers after `label` on d3hsp's deformable-parts line.
+double summary_value(const std::string& log, const std::string& label) {
+  const std::size_t line = log.find("  deformable parts (rigid bodies left out)");
+  REQUIRE(line != std::string::npos);
+  const std::size_t at = log.find(label, line);
+  REQUIRE(at != std::string::npos);
+  return std::stod(log.substr(at + label.size()));
+}
+
+double last_of(const io::HistoryTable& t, const std::string& name) {
+  const int k = t.find(name);
+  REQUIRE(k >= 0);
+  return t.columns[static_cast<std::size_t>(k)].back();
+}
+
+}  // namespace
+
+TEST_CASE("run summary: the deformable parts' energies and added mass, rigid bodies left out") {
+  TempDir dir;
+  // The falling cube (no rigid body): its energies at the end are glstat's, to the printed digits.
+  const std::string cube = std::string(MCDYNA_SOURCE_DIR) + "/decks/cube/cube_drop.k";
+  Run r = run_mcdyna("run " + cube + " -q --threads 1 --out " + (dir.path() / "cube").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string log = read_text(dir.path() / "cube" / "d3hsp");
+  const io::HistoryTable cube_glstat = io::read_history(dir.path() / "cube" / "glstat.csv");
+  const double ke = last_of(cube_glstat, "kinetic_energy");
+  const double ie = last_of(cube_glstat, "internal_energy");
+  CHECK(summary_value(log, "kinetic energy ") == doctest::Approx(ke).epsilon(1e-4));
+  CHECK(summary_value(log, "internal energy ") == doctest::Approx(ie).epsilon(1e-4));
+  CHECK(summary_value(log, "KE/IE ") == doctest::Approx(ke / ie).epsilon(1e-4));
+  CHECK(summary_value(log, "largest KE/IE ") >= ke / ie);
+  // FDS h 0.3 before the screw touches: the plate rests, the rigid screw spins. glstat's kinetic
+  // energy is the screw's; the deformable parts' is zero.
+  const std::string fds = std::string(MCDYNA_SOURCE_DIR) + "/decks/fds/fds_h0.3.k";
+  r = run_mcdyna("run " + fds + " -q --threads 1 --cycles 50 --out " +
+                 (dir.path() / "fds").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  log = read_text(dir.path() / "fds" / "d3hsp");
+  CHECK(last_of(io::read_history(dir.path() / "fds" / "glstat.csv"), "kinetic_energy") > 1.0);
+  CHECK(summary_value(log, "kinetic energy ") == 0.0);
+  CHECK(summary_value(log, "added mass (DT2MS) ") == 0.0);
+}
+
 }  // namespace mcdyna::test
