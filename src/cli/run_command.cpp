@@ -512,7 +512,7 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);
   print_timing(summary, result, *state, comm, dump.has_value());
   print_spg_summary(summary, *state);
-  inertia.print(summary);
+  inertia.print(summary, *state);
   print_angular_budgets(summary, *state, budgets);
   if (result.reason == solver::StopReason::interrupted && !last_dump.empty())
     fmt::print(summary,
@@ -532,6 +532,8 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
     output_failure = fmt::format("cannot write {}", (dir / "d3hsp").string());
   if (!options.quiet || result.reason != solver::StopReason::end_time || !output_failure.empty())
     out << summary.str();
+  else
+    err << inertia.warning(*state);  // quiet: the summary stays in d3hsp, the warning does not
   if (!output_failure.empty()) {
     fmt::print(err, "mcdyna: error termination: {}\n", output_failure);
     return kRunOutputFailed;

@@ -611,3 +611,49 @@ TEST_CASE("run summary: the deformable parts' energies and added mass, rigid bod
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("run summary: the driven screw's speed, the wave speed and rho v^2 / yield") {
+  TempDir dir;
+  // FDS h 0.3 (time scale 20) past its start ramp (2.3 us): the screw turns at 100,000 rpm and
+  // plunges at 40 m/s, so its nodes, at radii from the minor 2.067 mm to the major 2.5 mm, move
+  // at sqrt(v^2 + (w r)^2). The body turns about its centre of mass, which the thread's helix
+  // moves off the axis: 0.03 mm allowed (measured: an effective radius of 2.509 mm).
+  const std::string fds = std::string(MCDYNA_SOURCE_DIR) + "/decks/fds/fds_h0.3.k";
+  const Run r = run_mcdyna("run " + fds + " -q --threads 1 --cycles 400 --out " +
+                           (dir.path() / "fds").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const std::string log = read_text(dir.path() / "fds" / "d3hsp");
+  const std::size_t line = log.find("  driven nodes: fastest ");
+  REQUIRE_MESSAGE(line != std::string::npos, log);
+  const std::string text = log.substr(line, log.find('\n', line) - line);
+  MESSAGE(text);
+  const double v = std::stod(text.substr(std::string("  driven nodes: fastest ").size()));
+  const double plunge = 40'000.0, omega = 100'000.0 * 2.0 * M_PI / 60.0;  // mm/s, rad/s
+  CHECK(v >= std::hypot(plunge, omega * 2.067));
+  CHECK(v <= std::hypot(plunge, omega * (2.5 + 0.03)));
+  // The plate: JC A 324 MPa, rho 2.7e-9 t/mm^3, G 26,000 MPa, Gruneisen C 5,386,000 mm/s.
+  const double rho = 2.7e-9, wave = std::sqrt(5.386e6 * 5.386e6 + 4.0 / 3.0 * 26'000.0 / rho);
+  const std::size_t of = text.find(" of the slowest wave speed (");
+  REQUIRE(of != std::string::npos);
+  CHECK(std::stod(text.substr(of + std::string(" of the slowest wave speed (").size())) ==
+        doctest::Approx(wave).epsilon(1e-4));
+  const std::size_t number = text.find("rho v^2 / yield ");
+  REQUIRE(number != std::string::npos);
+  CHECK(std::stod(text.substr(number + std::string("rho v^2 / yield ").size())) ==
+        doctest::Approx(rho * v * v / 324.0).epsilon(1e-3));
+  CHECK(text.find("(part 1)") != std::string::npos);
+  CHECK(text.find("quasi-static by its speeds") != std::string::npos);
+  // 400 cycles are the first bite alone: the tip strikes at 40 m/s and the plate's KE/IE is
+  // 0.1 where its internal energy is largest. ρv²/yield (0.019) stays below its bound. Under -q
+  // the warning goes to the terminal too.
+  const std::size_t warning = log.find("warning: the run looks quasi-static");
+  REQUIRE_MESSAGE(warning != std::string::npos, log);
+  const std::string warned = log.substr(warning, log.find('\n', warning) - warning);
+  CHECK(warned.find("their largest KE/IE is 0.1") != std::string::npos);
+  CHECK(warned.find("rho v^2") == std::string::npos);
+  CHECK(r.output.find(warned) != std::string::npos);
+}
+
+}  // namespace mcdyna::test

@@ -84,6 +84,15 @@ struct Material {
     const auto* k = std::get_if<PlasticKinematicModel>(&model);
     return k != nullptr && k->isotropic_fraction < 1.0;
   }
+  /// The flow stress at zero plastic strain and the reference rate (MAT_003 SIGY, MAT_024's
+  /// first table point, MAT_015 A); 0 for an elastic material.
+  [[nodiscard]] double initial_yield() const {
+    if (const auto* k = std::get_if<PlasticKinematicModel>(&model)) return k->yield_stress;
+    if (const auto* p = std::get_if<PiecewiseLinearModel>(&model))
+      return p->curve_stress.empty() ? 0.0 : p->curve_stress.front();
+    if (const auto* j = std::get_if<JohnsonCookModel>(&model)) return j->a;
+    return 0.0;
+  }
   /// The temperature points start at: TR for Johnson-Cook, else 0.
   [[nodiscard]] double initial_temperature() const {
     return std::holds_alternative<JohnsonCookModel>(model) ? room_temperature : 0.0;
