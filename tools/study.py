@@ -65,6 +65,7 @@ import elastic_wave  # noqa: E402  (tools/verify)
 from columns import read_columns, write_columns  # noqa: E402
 import fds_facts  # noqa: E402
 import fds_force  # noqa: E402
+import fds_time_scale  # noqa: E402
 import taylor_bar  # noqa: E402
 
 # MCDYNA=path runs another binary (a copy, so a long study survives rebuilds of build/).
@@ -74,8 +75,15 @@ TAYLOR_EXPERIMENT_LENGTH, TAYLOR_EXPERIMENT_DIAMETER, TAYLOR_FE_LENGTH = 16.51, 
 QUICK_STAGE2 = 2.1  # mm of stage 2 in the quick study's FDS runs
 ITB1 = ["--spg-stabilization", "spg"]  # the original SPG stabilisation (eigenvalue step)
 TIME_SCALES = ("20", "10", "5", "2", "1")  # issue 47: the FDS schedule's speeds x these
+# Issue 47: what sets the formed thread, one factor off the recipe at a time (tools/decks/fds.py's
+# flags; a later flag overrides the recipe's --mass-scaling).
+THREAD_FACTORS = (("FS 0.8", ["--fs", "0.8"]), ("STRETCH 1.3", ["--stretch", "1.3"]),
+                  ("friction 0.1", ["--friction", "0.1"]), ("penalty x30", ["--penalty-scale", "30"]),
+                  ("skin 0.1", ["--skin", "0.1"]), ("KERNEL 1", ["--kernel", "1"]),
+                  ("DX 1.2", ["--dx", "1.2"]), ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]))
 # What an FDS run's speeds and added mass did (tools/verify/fds_facts.py) and the thread it formed.
-FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "kinetic_over_internal", "thread_depth")
+FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "added_mass_largest", "kinetic_over_internal",
+             "kinetic_over_internal_stage2", "thread_depth", "thread_noise_floor", "stage1_end")
 
 
 @dataclass
@@ -147,6 +155,13 @@ def cases():
                         flags=["--spg-step", "eigen"],
                         generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", scale,
                                   "--mass-scaling", "1e-8", "--osu", "1"]))
+    # What sets the thread: one factor at a time off the recipe at h 0.3, time scale 20.
+    for label, flags in THREAD_FACTORS:
+        out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale 20 {label}",
+                        f"{{out}}/decks/fds_h0.3_scale20_{label.replace(' ', '_')}.k", False,
+                        flags=["--spg-step", "eigen"],
+                        generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", "20",
+                                  "--mass-scaling", "1e-8", "--osu", "1"] + flags))
     quick_stage2 = ["--time-scale", "20", "--stage2", str(QUICK_STAGE2)]
     out.append(Case("fds", "MC-SPG", "h 0.3", "{out}/decks/fds_h0.3_quick.k", True,
                     generate=["tools/decks/fds.py", "0.3", "{deck}"] + quick_stage2))
@@ -319,6 +334,30 @@ def measure(case, rec, records, fds_reference):
                  "force_correlation": corr}
 
 
+def time_scale_figures(rows, cases, records):
+    """Each time-scale run ("MC-SPG recipe", "h H scale S") against the slowest finished run at
+    its h, and each factor run ("h H scale S FACTOR") against the recipe run at its h and scale,
+    per stage (tools/verify/fds_time_scale.py): adds h, factor and the stage figures to its row."""
+    runs = []
+    for row, case in zip(rows, cases):
+        parsed = fds_time_scale.parse_resolution(case.resolution) if case.family == "fds" else None
+        if parsed and "stage1_end" in row:
+            row["h"], _, row["factor"] = parsed
+            runs.append((row, case))
+    for row, case in runs:
+        recipe = [(r, c) for r, c in runs if r["h"] == row["h"] and not r["factor"]]
+        if row["factor"]:
+            recipe = [(r, c) for r, c in recipe if r["time_scale"] == row["time_scale"]]
+        if not recipe:
+            continue
+        ref_row, ref_case = min(recipe, key=lambda rc: rc[0]["time_scale"])
+        row["time_scale_reference"] = ref_case.resolution
+        mine = record_base(records, case) + "_force.csv"
+        row["peak_thrust"] = max(fds_force.read_force_csv(mine)[1])
+        row.update(fds_time_scale.stage_figures(
+            MCDYNA, mine, record_base(records, ref_case) + "_force.csv", ref_row["stage1_end"]))
+
+
 def resolution_key(case):
     m = re.search(r"[0-9.]+", case.resolution)
     order = {"coarse": 0, "medium": 1, "fine": 2}
@@ -414,6 +453,14 @@ def write_markdown(rows, path, ratios=()):
                     f"{work / r['core_s'] / 1e6:.2f} M | {r['error']:.4f} | {other} |\n")
         if ratios:
             f.write("\n" + "".join(f"- {line}\n" for line in ratios))
+        scales = fds_time_scale.table(rows)
+        if scales:
+            f.write("\nFDS time scale against the slowest run at the same h (per stage, "
+                    "tools/verify/fds_time_scale.py):\n\n" + "".join(f"{line}\n" for line in scales))
+        factors = fds_time_scale.factor_table(rows)
+        if factors:
+            f.write("\nFDS: what sets the thread, one factor at a time against the recipe run at "
+                    "the same h and time scale:\n\n" + "".join(f"{line}\n" for line in factors))
 
 
 # The MC-SPG run an ITB 1 run is paired with for the cost ratio, in order of preference: the same
@@ -505,6 +552,7 @@ def main():
                          steps_per_s=work * facts["cycles"] / facts["wall"] if facts["wall"] else 0,
                          error=error, **figures,
                          **{k: facts[k] for k in FDS_KNOBS if k in facts}))
+    time_scale_figures(rows, [c for c, _ in finished], records)
     columns = []
     for r in rows:
         columns += [k for k in r if k not in columns]
@@ -525,6 +573,7 @@ def main():
         print(line)
     write_markdown(rows, os.path.join(a.out, "study.md"), ratios)
     plot_error_vs_time(rows, os.path.join(a.out, "error_vs_time.png"))
+    fds_time_scale.plot(rows, os.path.join(a.out, "fds_time_scale.png"))
     history_plots(a.out, records, finished)
     print(f"wrote {os.path.join(a.out, 'study.csv')}, error_vs_time.png and the history plots")
     if missing:

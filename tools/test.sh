@@ -35,6 +35,8 @@ echo "== FDS thread measure on synthetic walls: tools/verify/fds_unwrap.py --che
 /usr/bin/python3 tools/verify/fds_unwrap.py --check
 echo "== FDS run facts on a synthetic matsum: tools/verify/fds_facts.py --check"
 /usr/bin/python3 tools/verify/fds_facts.py --check
+echo "== FDS time-scale figures per stage on curves with a known answer: tools/verify/fds_time_scale.py --check"
+/usr/bin/python3 tools/verify/fds_time_scale.py build/mcdyna --check
 
 echo "== mcdyna without MPI: the same bytes as the MPI build on one process"
 # The one-process communicator linked with the same solver objects (CMakeLists.txt: only

@@ -170,6 +170,15 @@ def main():
                     help="*DATABASE_BINARY_RUNRSF: running restart file every N cycles (0: none)")
     ap.add_argument("--osu", type=int, default=0, choices=(0, 1),
                     help="*CONTROL_ACCURACY OSU: 1 second-order objective stress update")
+    # What sets the formed thread (issue 47): the paper's values by default, one at a time.
+    ap.add_argument("--fs", type=float, default=0.4,
+                    help="*SECTION_SOLID_SPG FS: bonds fail past this plastic strain")
+    ap.add_argument("--stretch", type=float, default=1.15,
+                    help="*SECTION_SOLID_SPG STRETCH: bonds fail past this stretch")
+    ap.add_argument("--dx", type=float, default=1.5,
+                    help="*SECTION_SOLID_SPG DX = DY = DZ: support over the nodal distance")
+    ap.add_argument("--friction", type=float, default=0.3, help="contact FS = FD")
+    ap.add_argument("--skin", type=float, default=0.02, help="screw shell thickness, mm")
     a = ap.parse_args()
     h, scale = a.h, a.time_scale
     layers = max(2, round(THICKNESS / h))
@@ -203,7 +212,11 @@ def main():
     w(f"$ TIME SCALE {scale:g}: every speed x {scale:g} and every time / {scale:g} "
       f"(stage 1 ends at {t1:.4e} s, end {t_end:.4e} s).")
     w(f"$ MASS SCALING: {'DT2MS = %g s' % a.mass_scaling if a.mass_scaling > 0 else 'none'}.")
-    w(f"$ CONTACT: penalty x {a.penalty_scale:g} (SFSA = SFSB), SOFT 1, friction 0.3.")
+    w(f"$ CONTACT: penalty x {a.penalty_scale:g} (SFSA = SFSB), SOFT 1, friction {a.friction:g}.")
+    paper = (0.4, 1.15, 1.5, 0.02)
+    if (a.fs, a.stretch, a.dx, a.skin) != paper:
+        w(f"$ FACTORS: FS {a.fs:g}, STRETCH {a.stretch:g}, DX {a.dx:g}, screw skin {a.skin:g} mm "
+          f"(the paper's: FS 0.4, STRETCH 1.15, DX 1.5, skin 0.02).")
     if a.osu:
         w("$ ACCURACY: OSU 1, the second-order objective stress update (mid-step strain rates,")
         w("$   Hughes-Winget rotation) in the plate's particles and elements.")
@@ -257,15 +270,15 @@ def main():
         w("         1        47")
         w("$       DX        DY        DZ   ISPLINE    KERNEL    LSCALE    SMSTEP       MSC")
         smstep = 5 if a.kernel == 1 else 15
-        w(f"       1.5       1.5       1.5         0{a.kernel:10d}          {smstep:10d}"
-          f"{float(a.msc):10.1f}")
+        w(f"{field(a.dx) * 3}         0{a.kernel:10d}          {smstep:10d}{float(a.msc):10.1f}")
         w("$     IDAM        FS   STRETCH       ITB     MSFAC       ISC     BOXID     PDAMP")
-        w("         1       0.4      1.15         3       1.0         0         0    -0.001")
+        w(f"         1{field(a.fs)}{field(a.stretch)}         3       1.0         0         0"
+          "    -0.001")
     w("*SECTION_SOLID")
     w("         2         1")
     w("*SECTION_SHELL")
     w("         3         2")
-    w("      0.02      0.02      0.02      0.02")
+    w(field(a.skin) * 4)
     w("*HOURGLASS")
     w("         1         4       0.1")
     out.extend(jc1_cards())
@@ -314,7 +327,7 @@ def main():
     w("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID")
     w("         1screw on plate")
     w("         1         3         2         3")
-    w("       0.3       0.3")
+    w(field(a.friction) * 2)
     w("$     SFSA      SFSB")
     w(f"{a.penalty_scale:10.1f}{a.penalty_scale:10.1f}")
     w("         1       0.1")
