@@ -46,11 +46,11 @@ inline constexpr double kQuasiStaticMach = 0.05;
 /// KE/IE above which a quasi-static run's inertia is not small: the 5-10 % rule of practice for
 /// explicit quasi-static analyses, its lower end.
 inline constexpr double kKineticShare = 0.05;
-/// rho v^2 / yield above which the inertia of the material at the tool is not small: FDS h 0.3,
-/// the whole schedule (manual/verification.md, issue 47), moves its stage-2 torque by 8.7 % of
-/// its peak at 0.091 (time scale 20) and by 4.8 % at 0.023 (time scale 10), each against time
-/// scale 5.
-inline constexpr double kInertiaNumber = 0.05;
+/// rho v^2 / yield above which the inertia of the material at the tool is not small. From the
+/// FDS scene at h 0.3 over the whole schedule against the paper's own speeds
+/// (manual/verification.md, issue 47): the stage-2 torque moved by 4.5 % of its peak at 0.0057
+/// (time scale 5), by 6.2 % at 0.023 (10) and by 9.5 % at 0.092 (20); the study's bound is 5 %.
+inline constexpr double kInertiaNumber = 0.01;
 
 [[nodiscard]] InertiaVerdict judge_inertia(const InertiaFigures& f);
 
