@@ -149,12 +149,15 @@ def cases():
                         flags=flags, generate=["tools/decks/fds.py", "0.15", "{deck}"] + fast))
     # Issue 47: time scale as a knob. Today's recipe (DT2MS 1e-8 s, OSU 1, eigen step) at h 0.3
     # through the whole schedule, from 20 times the paper's speeds down to the paper's own.
-    for scale in TIME_SCALES:
-        out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale {scale}",
-                        f"{{out}}/decks/fds_h0.3_scale{scale}.k", False,
-                        flags=["--spg-step", "eigen"],
-                        generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", scale,
-                                  "--mass-scaling", "1e-8", "--osu", "1"]))
+    # At h 0.2 the scale the h 0.3 runs point to (20: force and thread) and one four times slower
+    # (5: the torque too), where DT2MS 1e-8 s starts to add mass.
+    for h, scales in (("0.3", TIME_SCALES), ("0.2", ("20", "5"))):
+        for scale in scales:
+            out.append(Case("fds", "MC-SPG recipe", f"h {h} scale {scale}",
+                            f"{{out}}/decks/fds_h{h}_scale{scale}.k", False,
+                            flags=["--spg-step", "eigen"],
+                            generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", scale,
+                                      "--mass-scaling", "1e-8", "--osu", "1"]))
     # What sets the thread: one factor at a time off the recipe at h 0.3, time scale 20.
     for label, flags in THREAD_FACTORS:
         out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale 20 {label}",

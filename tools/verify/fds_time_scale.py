@@ -98,8 +98,8 @@ def plot(rows, png):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     runs = [r for r in rows if "stage1_axial_rms" in r and not r.get("factor")]
-    if not runs:
-        return
+    if not any(r["stage1_axial_rms"] > 0 for r in runs):
+        return  # the reference alone: nothing to draw on the log axes
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.4))
     for h in sorted({r["h"] for r in runs}, reverse=True):
         mine = sorted((r for r in runs if r["h"] == h and r["stage1_axial_rms"] > 0),
