@@ -315,15 +315,9 @@ def compare_force(mine, reference_csv):
     plunge, by `mcdyna compare`: (RMS |A - B| / peak B, max |A - B| / peak B, corr)."""
     if os.path.abspath(mine) == os.path.abspath(reference_csv):
         return 0.0, 0.0, 1.0
-    done = subprocess.run([MCDYNA, "compare", mine, reference_csv, "--x", "plunge", "-c",
-                           "axial_force"], capture_output=True, text=True, check=True)
-    for line in done.stdout.splitlines():
-        f = line.split()
-        if f and f[0] == "axial_force":
-            # column max|A-B| at RMS max/peakB peakA at peakB at corr
-            peak_b = abs(float(f[7]))
-            return float(f[3]) / peak_b, float(f[4]), float(f[9])
-    raise RuntimeError(f"mcdyna compare gave no axial_force row:\n{done.stdout}")
+    rms, peak_b, corr, worst = fds_time_scale.compare_rows(MCDYNA, mine, reference_csv,
+                                                           columns=("axial_force",))["axial_force"]
+    return rms / peak_b, worst / peak_b, corr
 
 
 def measure(case, rec, records, fds_reference):

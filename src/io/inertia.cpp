@@ -96,9 +96,10 @@ InertiaFigures InertiaRecord::figures(const solver::State& s) const {
   return f;
 }
 
-std::string InertiaRecord::warning(const solver::State& s) const {
-  if (samples_.empty() || !deformable_) return {};
-  const InertiaVerdict verdict = judge_inertia(figures(s));
+namespace {
+
+/// The warning line for a verdict with reasons, empty without.
+std::string warning_text(const InertiaVerdict& verdict) {
   if (verdict.reasons.empty()) return {};
   std::string text =
       "  warning: the run looks quasi-static by its speeds but the deformable parts' inertia is "
@@ -108,6 +109,13 @@ std::string InertiaRecord::warning(const solver::State& s) const {
   return text +
          ". A time- or mass-scaled process answers to its speeds here (manual/migration.md, "
          "\"Time and mass scaling\"); an impact or a dynamic event may ignore this.\n";
+}
+
+}  // namespace
+
+std::string InertiaRecord::warning(const solver::State& s) const {
+  if (samples_.empty() || !deformable_) return {};
+  return warning_text(judge_inertia(figures(s)));
 }
 
 void InertiaRecord::print(std::ostream& out, const solver::State& s) const {
@@ -139,7 +147,7 @@ void InertiaRecord::print(std::ostream& out, const solver::State& s) const {
              : verdict.quasi_static_speeds
                  ? fmt::format("; quasi-static by its speeds (below {:g})", kQuasiStaticMach)
                  : "");
-  fmt::print(out, "{}", warning(s));
+  fmt::print(out, "{}", warning_text(verdict));
 }
 
 }  // namespace mcdyna::io

@@ -35,10 +35,11 @@ def parse_resolution(resolution):
     return (m.group(1), float(m.group(2)), (m.group(3) or "").strip()) if m else None
 
 
-def compare_rows(mcdyna, mine, reference, lo=None, hi=None):
-    """{column: (RMS |A-B|, peak |B|, corr)} of `mcdyna compare` aligned on plunge in [lo, hi]."""
+def compare_rows(mcdyna, mine, reference, lo=None, hi=None, columns=COLUMNS):
+    """{column: (RMS |A-B|, peak |B|, corr, max |A-B|)} of `mcdyna compare` aligned on plunge in
+    [lo, hi]."""
     cmd = [mcdyna, "compare", mine, reference, "--x", "plunge"]
-    for c in COLUMNS:
+    for c in columns:
         cmd += ["-c", c]
     if lo is not None:
         cmd += ["--from", repr(lo)]
@@ -48,11 +49,11 @@ def compare_rows(mcdyna, mine, reference, lo=None, hi=None):
     out = {}
     for line in done.stdout.splitlines():
         f = line.split()
-        if f and f[0] in COLUMNS:
+        if f and f[0] in columns:
             # column max|A-B| at RMS max/peakB peakA at peakB at corr
-            out[f[0]] = (float(f[3]), abs(float(f[7])), float(f[9]))
-    if set(out) != set(COLUMNS):
-        raise RuntimeError(f"mcdyna compare gave no {COLUMNS} rows:\n{done.stdout}")
+            out[f[0]] = (float(f[3]), abs(float(f[7])), float(f[9]), float(f[1]))
+    if set(out) != set(columns):
+        raise RuntimeError(f"mcdyna compare gave no {columns} rows:\n{done.stdout}")
     return out
 
 
@@ -83,7 +84,7 @@ def stage_figures(mcdyna, mine, reference, stage1_end):
         part = compare_rows(mcdyna, mine, reference, lo, hi)
         for c in COLUMNS:
             key = f"{stage}_{c.split('_')[0]}"
-            rms, _, corr = part[c]
+            rms, _, corr, _ = part[c]
             out[key + "_rms"] = rms / whole[c][1]
             out[key + "_corr"] = corr
     for c in COLUMNS:
