@@ -80,10 +80,12 @@ TIME_SCALES = ("20", "10", "5", "2", "1")  # issue 47: the FDS schedule's speeds
 THREAD_FACTORS = (("FS 0.8", ["--fs", "0.8"]), ("STRETCH 1.3", ["--stretch", "1.3"]),
                   ("friction 0.1", ["--friction", "0.1"]), ("penalty x30", ["--penalty-scale", "30"]),
                   ("skin 0.1", ["--skin", "0.1"]), ("KERNEL 1", ["--kernel", "1"]),
-                  ("DX 1.2", ["--dx", "1.2"]), ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]))
+                  ("DX 1.2", ["--dx", "1.2"]), ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]),
+                  ("feed 0.7", ["--feed", "0.7"]))
 # What an FDS run's speeds and added mass did (tools/verify/fds_facts.py) and the thread it formed.
 FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "added_mass_largest", "kinetic_over_internal",
-             "kinetic_over_internal_stage2", "thread_depth", "thread_noise_floor", "stage1_end")
+             "kinetic_over_internal_stage2", "thread_depth", "thread_noise_floor",
+             "thread_full_depth", "stage1_end")
 
 
 @dataclass
@@ -282,7 +284,8 @@ def write_record(records, case, run_dir, facts):
 
 def thread_facts(run_dir, png):
     """The thread depth of the run's last state (tools/verify/fds_unwrap.py, which also draws
-    the unrolled hole wall into `png`) and the measurement's noise floor, mm."""
+    the unrolled hole wall into `png`), the measurement's noise floor and what it gives on a full
+    thread at the run's particle spacing, mm."""
     unwrap = os.path.join(ROOT, "tools", "verify", "fds_unwrap.py")
     done = subprocess.run(["/usr/bin/python3", unwrap, run_dir, png], capture_output=True,
                           text=True)
@@ -291,7 +294,9 @@ def thread_facts(run_dir, png):
     if done.returncode != 0 or not m:
         print(f"study: no thread depth for {run_dir}:\n{done.stdout}{done.stderr}", file=sys.stderr)
         return {}
-    return {"thread_depth": float(m.group(1)), "thread_noise_floor": float(m.group(2))}
+    full = re.search(r"a full thread on the screw's profile measures ([0-9.]+) mm", done.stdout)
+    return {"thread_depth": float(m.group(1)), "thread_noise_floor": float(m.group(2)),
+            "thread_full_depth": float(full.group(1))}
 
 
 def read_record(records, case):
