@@ -29,10 +29,14 @@ Families, methods and references (benchmarks.md, paper §4):
                 gives the cost ratio SPG : MC-SPG of each pair (paper: 2.39 at h 0.125)
                 Time scale as a knob (issue 47): "MC-SPG recipe" (DT2MS 1e-8 s, OSU 1, eigen
                 step) at h 0.3 through the whole schedule at 20, 10, 5, 2 and 1 times the
-                paper's speeds ("h 0.3 scale S"). Every FDS record's facts name its time_scale,
+                paper's speeds ("h 0.3 scale S"), at h 0.2 at 20 and 5; what sets the thread:
+                one fds.py setting changed off the recipe at h 0.3 and time scale 20 ("h 0.3
+                scale 20 FACTOR", THREAD_FACTORS). Every FDS record's facts name its time_scale,
                 dt2ms, added_mass (and by part), the plate's kinetic_over_internal after first
-                contact (tools/verify/fds_facts.py) and the thread_depth of its last state
-                (tools/verify/fds_unwrap.py, whose unrolled wall is NAME_wall.png)
+                contact (tools/verify/fds_facts.py), the thread_depth of its last state and
+                what a full thread measures at its particle spacing, thread_full_depth
+                (tools/verify/fds_unwrap.py, whose unrolled wall is NAME_wall.png); records
+                older than these facts get them from tools/verify/fds_backfill.py
 
 Writes OUT/study.csv (one row per run, one header row), the same as a Markdown table
 (OUT/study.md, for manual/verification.md), OUT/error_vs_time.png (log-log, one
@@ -82,7 +86,6 @@ THREAD_FACTORS = (("FS 0.8", ["--fs", "0.8"]), ("STRETCH 1.3", ["--stretch", "1.
                   ("skin 0.1", ["--skin", "0.1"]), ("KERNEL 1", ["--kernel", "1"]),
                   ("DX 1.2", ["--dx", "1.2"]), ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]),
                   ("feed 0.7", ["--feed", "0.7"]), ("feed 0.5", ["--feed", "0.5"]))
-THREAD_FACTORS_H02 = tuple(f for f in THREAD_FACTORS if f[0] in ("feed 0.7", "FS 0.8"))
 # What an FDS run's speeds and added mass did (tools/verify/fds_facts.py) and the thread it formed.
 FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "added_mass_largest", "kinetic_over_internal",
              "kinetic_over_internal_stage2", "thread_depth", "thread_noise_floor",
@@ -161,16 +164,13 @@ def cases():
                             flags=["--spg-step", "eigen"],
                             generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", scale,
                                       "--mass-scaling", "1e-8", "--osu", "1"]))
-    # What sets the thread: one factor at a time off the recipe at h 0.3, time scale 20; at h 0.2
-    # (where a full thread measures 0.37 mm against 0.29 at h 0.3) the factors that moved the
-    # root's fill at h 0.3.
-    for h, factors in (("0.3", THREAD_FACTORS), ("0.2", THREAD_FACTORS_H02)):
-        for label, flags in factors:
-            out.append(Case("fds", "MC-SPG recipe", f"h {h} scale 20 {label}",
-                            f"{{out}}/decks/fds_h{h}_scale20_{label.replace(' ', '_')}.k", False,
-                            flags=["--spg-step", "eigen"],
-                            generate=["tools/decks/fds.py", h, "{deck}", "--time-scale", "20",
-                                      "--mass-scaling", "1e-8", "--osu", "1"] + flags))
+    # What sets the thread: one factor at a time off the recipe at h 0.3, time scale 20.
+    for label, flags in THREAD_FACTORS:
+        out.append(Case("fds", "MC-SPG recipe", f"h 0.3 scale 20 {label}",
+                        f"{{out}}/decks/fds_h0.3_scale20_{label.replace(' ', '_')}.k", False,
+                        flags=["--spg-step", "eigen"],
+                        generate=["tools/decks/fds.py", "0.3", "{deck}", "--time-scale", "20",
+                                  "--mass-scaling", "1e-8", "--osu", "1"] + flags))
     quick_stage2 = ["--time-scale", "20", "--stage2", str(QUICK_STAGE2)]
     out.append(Case("fds", "MC-SPG", "h 0.3", "{out}/decks/fds_h0.3_quick.k", True,
                     generate=["tools/decks/fds.py", "0.3", "{deck}"] + quick_stage2))
