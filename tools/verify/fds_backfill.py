@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Names the speeds and inertia in the facts of FDS study records written before issue 47
-(time_scale, dt2ms, added_mass, kinetic_over_internal: tools/verify/fds_facts.py), in place.
+(time_scale, dt2ms, added_mass, kinetic_over_internal: tools/verify/fds_facts.py), in place;
+records that have kinetic_over_internal are left alone, so it runs again as re-runs finish.
 
 - time_scale and dt2ms: from the deck the record ran, its header as tools/decks/fds.py writes
   it: a generated deck is written again with the case's arguments (tools/study.py), a shipped
@@ -90,15 +91,16 @@ def main():
         name = os.path.basename(path)[:-len(".json")]
         with open(path) as f:
             rec = json.load(f)
-        if "time_scale" in rec["facts"]:
-            continue
         facts = rec["facts"]
+        if facts.get("kinetic_over_internal") is not None:
+            continue  # complete (its own run's facts, or a re-run's)
         with tempfile.TemporaryDirectory() as tmp:
             scale, dt2ms, stage1_end = deck_knobs(rec, cases.get(name), tmp)
         facts.update(time_scale=scale, dt2ms=dt2ms)
         if stage1_end is not None:
             facts["stage1_end"] = stage1_end
         if a.rerun and os.path.exists(os.path.join(a.rerun, name + ".json")):
+            facts.pop("inertia_note", None)
             facts.update(rerun_facts(name, a.records, a.rerun, a.mcdyna))
         elif name in documented:
             mass, source = documented[name]
