@@ -59,6 +59,8 @@ void InertiaRecord::add(const solver::State& s, const Eigen::Matrix3Xd& previous
   if (samples_.empty()) {
     // A restart's first sample is not the start: only cycle 0 tells an initial velocity.
     moving_at_start_ = s.cycle == 0 && sample.kinetic > 0.0;
+    restarted_ = s.cycle != 0;
+    first_time_ = s.time;
     deformable_mass_ = 0.0;
     for (solver::Index n = 0; n < s.nodes.count(); ++n)
       if (s.nodes.rigid_body[static_cast<std::size_t>(n)] < 0)
@@ -121,6 +123,11 @@ std::string InertiaRecord::warning(const solver::State& s) const {
 void InertiaRecord::print(std::ostream& out, const solver::State& s) const {
   if (samples_.empty() || !deformable_) return;
   const Sample& end = samples_.back();
+  if (restarted_)
+    fmt::print(out,
+               "  a restarted run: the figures below are over its outputs from t = {:.4e} on "
+               "(matsum and glstat hold the whole run)\n",
+               first_time_);
   fmt::print(out,
              "  deformable parts (rigid bodies left out), at the end: kinetic energy {:.4e}, "
              "internal energy {:.4e}",

@@ -79,6 +79,10 @@ class InertiaRecord {
   bool deformable_ = false;
   bool moving_at_start_ = false;
   double deformable_mass_ = 0.0;
+  /// The first sample came after a restart (at first_time_): the record holds the continuation
+  /// only (the dump does not carry it), and the summary says so.
+  bool restarted_ = false;
+  double first_time_ = 0.0;
 };
 
 }  // namespace mcdyna::io

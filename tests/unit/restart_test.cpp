@@ -211,6 +211,16 @@ TEST_CASE(
   const Run resumed = run_mcdyna(run_args(deck, b, "--restart " + (b / "d3dump01").string()));
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.output);
   check_same_outputs(a, b);
+  // The run summary's inertia figures cover the continuation only, and say from when.
+  const std::string log = read_text(b / "d3hsp");
+  const std::size_t restart = log.rfind("Restart from");
+  REQUIRE(restart != std::string::npos);
+  const std::string said = "a restarted run: the figures below are over its outputs from t = ";
+  const std::size_t at = log.find(said, restart);
+  REQUIRE_MESSAGE(at != std::string::npos, log.substr(restart));
+  // Its first output after the dump (cycle 5): no earlier than the dump's time.
+  CHECK(std::stod(log.substr(at + said.size())) >= first.time * (1.0 - 1e-4));
+  CHECK(read_text(a / "d3hsp").find("a restarted run") == std::string::npos);
 }
 
 TEST_CASE(
