@@ -63,12 +63,12 @@ def rerun_facts(name, records, rerun, mcdyna):
     with open(os.path.join(rerun, name + ".json")) as f:
         again = json.load(f)
     facts = {k: again["facts"][k] for k in INERTIA if k in again["facts"]}
-    axial = fds_time_scale.compare_rows(mcdyna, os.path.join(rerun, name + "_force.csv"),
+    diff = fds_time_scale.compare_rows(mcdyna, os.path.join(rerun, name + "_force.csv"),
                                         os.path.join(records, name + "_force.csv"))
     facts["inertia_rerun"] = {
         "checkout": again["checkout"], "cycles": again["facts"]["cycles"],
-        "axial_rms_over_peak": axial["axial_force"][0] / axial["axial_force"][1],
-        "torque_rms_over_peak": axial["torque"][0] / axial["torque"][1],
+        "axial_rms_over_peak": diff["axial_force"][0] / diff["axial_force"][1],
+        "torque_rms_over_peak": diff["torque"][0] / diff["torque"][1],
         "note": "added mass and kinetic/internal energy from this re-run of the case; the "
                 "record's force and cost are its own run's"}
     return facts

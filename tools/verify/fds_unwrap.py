@@ -131,8 +131,9 @@ def contact_by_phase(r, theta, z, profile, sense, crest_phase, spacing, z_range)
     point nearest the screw's profile in each 10° × `spacing` cell, and how many cells."""
     rel = from_crest(theta, z, sense, crest_phase)
     gap = r - profile(rel)
-    key = (np.minimum((theta / (2 * np.pi) * 36).astype(int), 35)
-           + 36 * ((z - z_range[0]) / spacing).astype(int))
+    nt = int(round(360.0 / CELL_DEGREES))  # the wall grid's sectors, cells `spacing` tall
+    key = (np.minimum((theta / (2 * np.pi) * nt).astype(int), nt - 1)
+           + nt * ((z - z_range[0]) / spacing).astype(int))
     order = np.lexsort((gap, key))
     first = np.r_[True, key[order][1:] != key[order][:-1]]
     g, p = gap[order][first], rel[order][first]
