@@ -5,7 +5,7 @@
 /// which is the order the physics needs: internal forces before body loads and contact, the SPG
 /// parts' velocities before the rigid bodies sum their nodes' forces, the constraints before the
 /// SPG parts take up what the constraints changed. A block does nothing in the phases it has no
-/// part in. Blocks are made from the compiled state by block_registry.cpp.
+/// part in. Blocks are made from the compiled state by the registry (formulations.cpp).
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -81,13 +81,13 @@ class Block {
 
 using Blocks = std::vector<std::unique_ptr<Block>>;
 
-/// The blocks of a compiled state, in the loop's order (block_registry.cpp).
+/// The blocks of a compiled state, in the loop's order (formulations.cpp).
 Blocks make_blocks(State& s);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
-void add_hexahedra_blocks(State& s, Blocks& blocks);         // fe/hexahedra_block.cpp
-void add_shell_blocks(State& s, Blocks& blocks);             // fe/shell_block.cpp
-void add_beam_blocks(State& s, Blocks& blocks);              // fe/beam_block.cpp
+void add_hexahedra_blocks(State& s, Blocks& blocks);         // solids/hexahedra_block.cpp
+void add_shell_blocks(State& s, Blocks& blocks);             // shells/shell_block.cpp
+void add_beam_blocks(State& s, Blocks& blocks);              // beams/beam_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
 void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp

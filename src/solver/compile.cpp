@@ -1,12 +1,12 @@
-// compile(): nodes, parts, deformable solid blocks and their materials; then the rigid bodies,
-// constraints, motions, initial velocities and walls (compile_*.cpp).
+// compile(): nodes and parts, then each formulation's compile pass (compile_*.cpp in its folder)
+// in the registry's order (formulations.cpp); then the time controls.
 #include "solver/compile.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/fe/hex_geometry.hpp"
-#include "solver/fe/shell_elements.hpp"  // poisson_ratio
+#include "solver/formulations.hpp"
+#include "solver/shells/shell_elements.hpp"  // poisson_ratio
 
 namespace mcdyna::solver {
 
@@ -97,38 +97,7 @@ Index curve_index(const model::ModelDatabase& m, model::Id id) {
   return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
 }
 
-namespace {
-
-// Number of distinct nodes of a connectivity: 8 for a hexahedron, 6 for a pentahedron (wedge)
-// and 4 for a tetrahedron written as degenerate hexahedra with repeated nodes.
-int distinct_nodes(const std::array<Index, 8>& conn) {
-  std::array<Index, 8> sorted = conn;
-  std::sort(sorted.begin(), sorted.end());
-  return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
-}
-
-void allocate_solid_state(State& s, Index points, bool back_stress) {
-  Solids& so = s.solids;
-  const auto n = static_cast<std::size_t>(so.count());
-  so.volume = so.initial_volume;
-  so.internal_energy.assign(n, 0.0);
-  so.hourglass_energy.assign(n, 0.0);
-  so.hourglass_force.assign(12 * n, 0.0);
-  so.viscosity.assign(n, 0.0);
-  so.time_step.assign(n, 0.0);
-  so.added_mass.assign(n, 0.0);
-  so.eroded.assign(n, 0);
-  so.corner_force.assign(24 * n, 0.0);
-  so.pressure.assign(n, 0.0);
-  so.points.deviator.setZero(6, points);
-  if (back_stress) so.points.back_stress.setZero(6, points);
-  so.points.plastic_strain.assign(static_cast<std::size_t>(points), 0.0);
-  so.points.damage.assign(static_cast<std::size_t>(points), 0.0);
-}
-
-}  // namespace
-
-void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_nodes_and_parts(const model::ModelDatabase& m, State& s) {
   Nodes& nd = s.nodes;
   const auto nn = static_cast<Index>(m.nodes.size());
   nd.initial.resize(3, nn);
@@ -145,92 +114,9 @@ void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Dia
   nd.added_mass.assign(static_cast<std::size_t>(nn), 0.0);
   nd.rigid_body.assign(static_cast<std::size_t>(nn), -1);
 
-  // Parts in deck order; solids grouped per deformable part into blocks.
-  std::vector<std::vector<std::size_t>> by_part(m.parts.size());
-  for (std::size_t e = 0; e < m.solids.size(); ++e) {
-    const auto p = m.index.parts.find(m.solids[e].part);
-    if (p != model::IdIndex::kNone) by_part[static_cast<std::size_t>(p)].push_back(e);
-  }
-  Solids& so = s.solids;
-  Index points = 0;
-  bool back = false;
-  for (std::size_t p = 0; p < m.parts.size(); ++p) {
-    const model::Part& part = m.parts[p];
-    PartInfo info{part.id, part.heading, -1, -1, part.material};
-    const model::Material* mat = m.material(part.material);
-    const model::Section* sec = m.section(part.section);
-    const bool rigid = mat != nullptr && mat->kind == model::MaterialKind::rigid;
-    // SPG parts become particles (compile_spg.cpp), not elements.
-    if (!rigid && !by_part[p].empty() && sec != nullptr &&
-        sec->kind != model::SectionKind::solid_spg) {
-      SolidBlock b;
-      b.part = static_cast<Index>(p);
-      b.formulation = sec->element_formulation == 2 ? SolidFormulation::selective_reduced
-                                                    : SolidFormulation::one_point;
-      b.points_per_element = b.formulation == SolidFormulation::one_point ? 1 : 8;
-      b.hourglass = hourglass_of(m, part, b.bulk_viscosity);
-      b.objective = objective_update(m, part);
-      b.material = static_cast<Index>(s.materials.size());
-      s.materials.push_back(compile_material(m, part, d));
-      info.material = b.material;
-      b.begin = so.count();
-      b.point_begin = points;
-      const Material& cm = s.materials.back();
-      std::array<int, 3> degenerate{};  // tetrahedra, pentahedra, other
-      for (const std::size_t e : by_part[p]) {
-        const model::SolidElement& el = m.solids[e];
-        std::array<Index, 8> conn{};
-        hex::Corners x{};
-        for (int c = 0; c < 8; ++c) {
-          conn[static_cast<std::size_t>(c)] =
-              static_cast<Index>(m.index.nodes.find(el.nodes[static_cast<std::size_t>(c)]));
-          for (int k = 0; k < 3; ++k)
-            x[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] =
-                nd.initial(k, conn[static_cast<std::size_t>(c)]);
-        }
-        // The volume the formulation measures (so the relative volume starts at exactly 1);
-        // the mass from the exact volume: for a distorted or degenerate element the one-point
-        // volume differs from it (a tetrahedron's by ~40 %), and mass must not.
-        const double exact = hex::exact_volume(x);
-        const double v0 =
-            b.formulation == SolidFormulation::one_point ? hex::centre_volume(x) : exact;
-        const double mass = cm.density * exact;
-        const int distinct = distinct_nodes(conn);
-        if (distinct < 8) ++degenerate[distinct == 4 ? 0 : (distinct == 6 ? 1 : 2)];
-        if (!(v0 > 0.0)) {
-          d.error(el.loc,
-                  "solid element {} of part {} has non-positive volume {:.4g} "
-                  "(node order inverted or element collapsed)",
-                  el.id, part.id, v0);
-        }
-        so.ids.push_back(el.id);
-        so.nodes.push_back(conn);
-        so.part.push_back(static_cast<Index>(p));
-        so.initial_volume.push_back(v0);
-        so.mass.push_back(mass);
-        so.eos_energy.push_back(cm.eos.initial_energy);
-        so.temperature.push_back(cm.initial_temperature());
-        for (const Index v : conn)
-          nd.mass[static_cast<std::size_t>(v)] += mass / 8.0;
-      }
-      if (degenerate[0] + degenerate[1] + degenerate[2] > 0) {
-        d.warning(part.loc,
-                  "part {}: degenerate hexahedra (repeated nodes): {} tetrahedra, {} pentahedra, "
-                  "{} other; they run as ELFORM {} hexahedra with their exact mass, stiffer and "
-                  "less accurate than true tetrahedron/pentahedron elements",
-                  part.id, degenerate[0], degenerate[1], degenerate[2],
-                  sec->element_formulation == 2 ? 2 : 1);
-      }
-      b.end = so.count();
-      points += (b.end - b.begin) * b.points_per_element;
-      back = back || cm.has_back_stress();
-      so.blocks.push_back(b);
-    }
-    s.parts.push_back(info);
-  }
-  allocate_solid_state(s, points, back);
-  build_node_corners(
-      nd.count(), s.solids.nodes, [](std::size_t) { return 8; }, nd.corner_offsets, nd.corners);
+  // Parts in deck order; each formulation's compile pass fills in its parts' material.
+  for (const model::Part& part : m.parts)
+    s.parts.push_back(PartInfo{part.id, part.heading, -1, -1, part.material});
 }
 
 // Elements whose every corner is free sideways breathe in a mode above their L / c step
@@ -300,21 +186,12 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   for (const model::Curve& c : m.curves)
     s->curves.emplace_back(c);
   detail::check_accuracy_control(m, diags);
-  detail::compile_nodes_and_solids(m, *s, diags);
-  detail::compile_shells(m, *s, diags);
-  detail::compile_beams(m, *s, diags);
-  detail::compile_rigid_bodies(m, *s, diags);
-  // The conditions below read the elements' and rigid bodies' arrays whole: stop at a broken one.
-  if (diags.error_count() > errors) return nullptr;
-  detail::compile_joints(m, *s, diags);
-  detail::compile_joint_stiffnesses(m, *s, diags);
-  detail::compile_constraints(m, *s, diags);
-  detail::compile_motions(m, *s, diags);
-  detail::compile_loads(m, *s, diags);
-  detail::compile_spg_parts(m, *s, diags);  // after constraints/motions: they pin particles
-  detail::compile_initial_velocities(m, *s, diags);
-  detail::compile_rigid_walls(m, *s, diags);  // after SPG: walls track nodes that have mass
-  detail::compile_contacts(m, *s, diags);     // after SPG: particles are slave nodes
+  detail::compile_nodes_and_parts(m, *s);
+  const std::vector<Formulation>& lines = formulations();
+  for (const std::size_t k : compile_order(lines)) {
+    if (lines[k].compile != nullptr) lines[k].compile(m, *s, diags);
+    if (lines[k].stop_on_errors && diags.error_count() > errors) return nullptr;
+  }
 
   TimeControl& tc = s->time_control;
   if (m.controls.termination) {

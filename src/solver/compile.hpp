@@ -53,24 +53,29 @@ std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabas
   return by_part;
 }
 
-// The pieces of compile(), in the order it runs them (compile_*.cpp).
-void compile_nodes_and_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+// The formulations' compile passes (compile_*.cpp in their folders; formulations.cpp orders
+// them).
+/// The nodes (positions, zero velocities and masses) and one PartInfo per part, in deck order.
+void compile_nodes_and_parts(const model::ModelDatabase& m, State& s);
+void compile_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_beams(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// Adds `inertia` (per node) to the nodes' rotary inertia, giving the nodes rotations (angular
 /// velocity, moment) the first time.
 void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia);
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-/// *CONSTRAINED_JOINT_*: after the rigid bodies (a joint node's mass may be a body's).
+/// *CONSTRAINED_JOINT_* and *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: after the rigid bodies (a
+/// joint node's mass may be a body's).
 void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// The rigid body of part `id` (merged parts share their lead's) or of the nodal rigid body
 /// `id`; -1 for neither.
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_body_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// *LOAD_NODE, *LOAD_RIGID_BODY, *LOAD_SEGMENT (after the rigid bodies and shells).
-void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);

@@ -5,8 +5,8 @@
 #include <array>
 #include <cmath>
 
-#include "solver/fe/beam_elements.hpp"
-#include "solver/fe/shell_elements.hpp"
+#include "solver/beams/beam_elements.hpp"
+#include "solver/shells/shell_elements.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

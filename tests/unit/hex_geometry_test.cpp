@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "solver/fe/hex_geometry.hpp"
+#include "solver/solids/hex_geometry.hpp"
 #include "solver_support.hpp"
 
 namespace mcdyna::test {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "solver/compile.hpp"
-#include "solver/fe/shell_c0_triangle.hpp"
+#include "solver/shells/shell_c0_triangle.hpp"
 
 namespace mcdyna::solver::detail {
 

@@ -1,8 +1,8 @@
 // The deformable beams as one block of the time loop: the element pass and the gather of the
 // end forces and moments.
+#include "solver/beams/beam_elements.hpp"
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
-#include "solver/fe/beam_elements.hpp"
 
 namespace mcdyna::solver {
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/contact_sides.hpp"
-#include "solver/fe/hex_geometry.hpp"
+#include "solver/contact/contact_sides.hpp"
 #include "solver/material/constitutive.hpp"
+#include "solver/solids/hex_geometry.hpp"
 
 namespace mcdyna::solver::detail {
 

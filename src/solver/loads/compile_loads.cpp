@@ -1,10 +1,19 @@
-// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure
-// loads loads/applied_loads.cpp applies; *DAMPING_GLOBAL -> loads/global_damping.cpp.
+// *LOAD_BODY_X/Y/Z -> the body loads of loads/condition_blocks.cpp; *LOAD_NODE_POINT / _SET,
+// *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure loads loads/applied_loads.cpp
+// applies; *DAMPING_GLOBAL -> loads/global_damping.cpp.
 #include "solver/compile.hpp"
 
 namespace mcdyna::solver::detail {
 
-void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_body_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& /*d*/) {
+  for (const model::BodyLoad& b : m.body_loads) {
+    const Index curve = curve_index(m, b.curve);
+    if (curve < 0) continue;  // reported by the reference checks
+    s.body_loads.push_back(BodyLoadState{b.axis, curve, b.scale});
+  }
+}
+
+void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& /*d*/) {
   if (m.controls.damping) {
     const model::GlobalDamping& g = *m.controls.damping;
     GlobalDampingState ds;
@@ -13,6 +22,9 @@ void compile_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d
     ds.scale = g.scale;
     if (g.curve == 0 || ds.curve >= 0) s.damping.push_back(ds);
   }
+}
+
+void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (const model::PointLoad& p : m.point_loads) {
     PointLoadState l;
     l.curve = curve_index(m, p.curve);

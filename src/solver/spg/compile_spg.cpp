@@ -6,7 +6,7 @@
 #include <map>
 
 #include "solver/compile.hpp"
-#include "solver/fe/hex_geometry.hpp"
+#include "solver/solids/hex_geometry.hpp"
 #include "solver/spg/particles.hpp"
 
 namespace mcdyna::solver::detail {

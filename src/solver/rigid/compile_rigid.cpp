@@ -6,7 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "solver/compile.hpp"
-#include "solver/fe/hex_geometry.hpp"
+#include "solver/solids/hex_geometry.hpp"
 
 namespace mcdyna::solver::detail {
 

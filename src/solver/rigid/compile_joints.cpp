@@ -1,5 +1,6 @@
 // *CONSTRAINED_JOINT_* -> joints: node indices and the reduced mass that sizes their penalty
-// springs (rigid/joints.cpp applies them).
+// springs, and the generalized stiffness joints' frames and curves (rigid/joints.cpp applies
+// both).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,7 +10,10 @@
 
 namespace mcdyna::solver::detail {
 
-void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+namespace {
+
+// *CONSTRAINED_JOINT_SPHERICAL / REVOLUTE / ...: the penalty springs on the node pairs.
+void compile_joint_pairs(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (std::size_t k = 0; k < m.joints.size(); ++k) {
     const model::Joint& j = m.joints[k];
     JointState js;
@@ -73,8 +77,6 @@ void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& 
   }
 }
 
-namespace {
-
 // The axes of a *DEFINE_COORDINATE_NODE system at the initial positions (columns x y z).
 Mat3 coordinate_axes(const model::ModelDatabase& m, const State& s, model::Id cid) {
   for (const model::CoordinateSystem& c : m.coordinate_systems) {
@@ -93,8 +95,7 @@ Mat3 coordinate_axes(const model::ModelDatabase& m, const State& s, model::Id ci
   return Mat3::Identity();
 }
 
-}  // namespace
-
+// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between two rigid bodies.
 void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (const model::JointStiffness& j : m.joint_stiffnesses) {
     JointStiffnessState js;
@@ -122,6 +123,13 @@ void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Di
     }
     s.joint_stiffnesses.push_back(js);
   }
+}
+
+}  // namespace
+
+void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+  compile_joint_pairs(m, s, d);
+  compile_joint_stiffnesses(m, s, d);
 }
 
 }  // namespace mcdyna::solver::detail

@@ -9,8 +9,8 @@
 
 #include "solver/compile.hpp"
 #include "solver/contact/contact.hpp"
+#include "solver/contact/contact_sides.hpp"
 #include "solver/contact/ties.hpp"
-#include "solver/contact_sides.hpp"
 
 namespace mcdyna::solver::detail {
 

@@ -5,7 +5,7 @@
 /// transverse shear of Bathe and Dvorkin (1985, MITC4): the covariant shear strains are sampled
 /// at the edge midpoints and interpolated, which keeps a thin element from locking in shear.
 /// Every in-plane point has its own layers (points 4 x NIP per element).
-#include "solver/fe/shell_kernel.hpp"
+#include "solver/shells/shell_kernel.hpp"
 
 namespace mcdyna::solver::shell_kernel {
 

@@ -2,7 +2,7 @@
 // corner forces and moments into the nodes.
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
-#include "solver/fe/shell_elements.hpp"
+#include "solver/shells/shell_elements.hpp"
 
 namespace mcdyna::solver {
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/fe/shell_elements.hpp"
 #include "solver/material/plane_stress.hpp"
+#include "solver/shells/shell_elements.hpp"
 
 namespace mcdyna::solver::shell_kernel {
 

@@ -1,7 +1,7 @@
 // Element pass for the beams (beam_elements.hpp). Local axes r s t; "s" quantities are about or
 // along s. Rates per unit length; generalized forces from the rates by virtual power, so the work
 // the forces do is exactly the work charged to the element.
-#include "solver/fe/beam_elements.hpp"
+#include "solver/beams/beam_elements.hpp"
 
 #include <Eigen/Geometry>
 
@@ -11,8 +11,8 @@
 #include <variant>
 
 #include "solver/fe/element_loop.hpp"
-#include "solver/fe/shell_elements.hpp"  // youngs_modulus
 #include "solver/material/plane_stress.hpp"
+#include "solver/shells/shell_elements.hpp"  // youngs_modulus
 
 namespace mcdyna::solver {
 

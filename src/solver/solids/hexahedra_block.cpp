@@ -5,7 +5,7 @@
 
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
-#include "solver/fe/solid_elements.hpp"
+#include "solver/solids/solid_elements.hpp"
 
 namespace mcdyna::solver {
 

@@ -2,7 +2,7 @@
 // (1984) and the LS-DYNA Theory Manual: hats are the element's corotational frame (e3 the
 // normal of the diagonals, e1 along the first side), B1 and B2 the centre derivatives of the
 // bilinear shape functions, theta the nodal angular velocities.
-#include "solver/fe/shell_elements.hpp"
+#include "solver/shells/shell_elements.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <variant>
 
 #include "solver/fe/element_loop.hpp"
-#include "solver/fe/shell_c0_triangle.hpp"
-#include "solver/fe/shell_fully_integrated.hpp"
-#include "solver/fe/shell_kernel.hpp"
+#include "solver/shells/shell_c0_triangle.hpp"
+#include "solver/shells/shell_fully_integrated.hpp"
+#include "solver/shells/shell_kernel.hpp"
 
 namespace mcdyna::solver {
 

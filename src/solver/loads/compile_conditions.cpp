@@ -180,11 +180,6 @@ void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnost
 }
 
 void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
-  for (const model::BodyLoad& b : m.body_loads) {
-    const Index curve = curve_index(m, b.curve);
-    if (curve < 0) continue;  // reported by the reference checks
-    s.body_loads.push_back(BodyLoadState{b.axis, curve, b.scale});
-  }
   for (const model::PrescribedMotion& pm : m.prescribed_motions) {
     const int dof = pm.dof;
     if (pm.kind < 0 || pm.kind > 2) {

@@ -1,6 +1,6 @@
 // Element pass for 8-node solids, ELFORM 1 (one point + Flanagan-Belytschko hourglass control)
 // and ELFORM 2 (selectively reduced: eight deviatoric points, one mean volumetric strain rate).
-#include "solver/fe/solid_elements.hpp"
+#include "solver/solids/solid_elements.hpp"
 
 #include <omp.h>
 
@@ -10,9 +10,9 @@
 #include <variant>
 
 #include "solver/fe/element_loop.hpp"
-#include "solver/fe/hex_geometry.hpp"
 #include "solver/material/constitutive.hpp"
 #include "solver/material/point_kinematics.hpp"
+#include "solver/solids/hex_geometry.hpp"
 
 namespace mcdyna::solver {
 

@@ -9,7 +9,7 @@
 /// plane-stress return, its linear part is resisted elastically with kappa G t (for an elastic
 /// shell: the MITC3 shear energy integrated exactly, A/3 sum over the midpoints). Internal to
 /// the shell element pass (shell_elements.cpp).
-#include "solver/fe/shell_kernel.hpp"
+#include "solver/shells/shell_kernel.hpp"
 
 namespace mcdyna::solver::shell_kernel {
 

@@ -1,0 +1,85 @@
+// The formulations the time loop runs, one line each, in the loop's order (formulations.hpp):
+// internal forces (hexahedra, shells, beams, SPG parts) before body loads and contact; the SPG
+// parts' velocities before the rigid bodies sum their nodes' forces; constraints, then motions,
+// then walls; the ties last, as they pass every force on a slave node to its segment.
+#include "solver/formulations.hpp"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "solver/compile.hpp"
+
+namespace mcdyna::solver {
+
+const std::vector<Formulation>& formulations() {
+  using namespace detail;
+  static const std::vector<Formulation> kLines = {
+      {"solids", compile_solids, add_hexahedra_blocks, {}},
+      // Materials are numbered in part order within each element kind: solids, shells, beams,
+      // SPG parts.
+      {"shells", compile_shells, add_shell_blocks, {"solids"}},
+      {"beams", compile_beams, add_beam_blocks, {"shells"}},
+      {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},
+      {"joints", compile_joints, add_joint_blocks, {"rigid bodies"}},
+      {"rigid bodies",
+       compile_rigid_bodies,
+       add_rigid_body_blocks,
+       {"solids", "shells", "beams"},
+       true},
+      {"constraints", compile_constraints, add_nodal_constraint_blocks, {"rigid bodies"}},
+      {"motions", compile_motions, add_nodal_motion_blocks, {"rigid bodies"}},
+      // Nodes given a velocity move with it, rigid bodies with the fit of theirs; particles
+      // take it once they exist.
+      {"initial velocities", compile_initial_velocities, nullptr, {"spg", "rigid bodies"}},
+      // Walls track the nodes that have mass, particles included.
+      {"rigid walls", compile_rigid_walls, add_rigid_wall_blocks, {"spg"}},
+      {"body loads", compile_body_loads, add_body_load_blocks, {}},
+      {"applied loads", compile_applied_loads, add_applied_load_blocks, {"rigid bodies", "shells"}},
+      {"global damping", compile_global_damping, add_global_damping_blocks, {}},
+      // Particles are slave nodes.
+      {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies"}},
+      {"ties", nullptr, add_tie_blocks, {"contact"}},
+  };
+  return kLines;
+}
+
+std::vector<std::size_t> compile_order(const std::vector<Formulation>& lines) {
+  const std::size_t n = lines.size();
+  std::vector<std::vector<std::size_t>> needs(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const char* name : lines[i].after) {
+      std::size_t k = 0;
+      while (k < n && std::strcmp(lines[k].name, name) != 0)
+        ++k;
+      if (k == n)
+        throw std::logic_error(std::string("formulation '") + lines[i].name + "' follows '" + name +
+                               "', which is not in the registry");
+      needs[i].push_back(k);
+    }
+  std::vector<std::size_t> order;
+  std::vector<bool> done(n, false);
+  while (order.size() < n) {
+    std::size_t next = n;
+    for (std::size_t i = 0; i < n && next == n; ++i) {
+      if (done[i]) continue;
+      bool ready = true;
+      for (const std::size_t k : needs[i])
+        ready = ready && done[k];
+      if (ready) next = i;
+    }
+    if (next == n) throw std::logic_error("the formulations' compile passes wait on each other");
+    done[next] = true;
+    order.push_back(next);
+  }
+  return order;
+}
+
+Blocks make_blocks(State& s) {
+  Blocks blocks;
+  for (const Formulation& f : formulations())
+    if (f.add_blocks != nullptr) f.add_blocks(s, blocks);
+  return blocks;
+}
+
+}  // namespace mcdyna::solver

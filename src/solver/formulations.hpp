@@ -1,0 +1,38 @@
+#pragma once
+/// The formulations, one line each in the time loop's order (design.md §7): the compile pass that
+/// turns its keywords into its part of the State, and the blocks it runs as. make_blocks() makes
+/// the blocks in exactly this order; compile() runs the passes in it too, but moves a pass after
+/// the lines whose compiled data it reads (`after`: an SPG part's particles pinned by the
+/// constraints and motions, a joint's reduced mass from the rigid bodies).
+#include <cstddef>
+#include <vector>
+
+#include "core/diagnostics.hpp"
+#include "model/model_database.hpp"
+#include "solver/block.hpp"
+
+namespace mcdyna::solver {
+
+using CompilePass = void (*)(const model::ModelDatabase&, State&, core::Diagnostics&);
+using AddBlocks = void (*)(State&, Blocks&);
+
+struct Formulation {
+  const char* name = "";
+  /// nullptr: compiled by the pass of the line it names in `after` (the same keywords)
+  CompilePass compile = nullptr;
+  AddBlocks add_blocks = nullptr;  ///< nullptr: no block of its own (initial conditions)
+  std::vector<const char*> after;  ///< lines whose compiled data its pass reads
+  /// The passes after it read the elements' and rigid bodies' arrays whole: compile() stops at
+  /// the errors reported so far.
+  bool stop_on_errors = false;
+};
+
+/// The registry (formulations.cpp).
+const std::vector<Formulation>& formulations();
+
+/// The order compile() runs the passes in: the registry's, each line moved just late enough to
+/// follow the lines it names (of the lines ready, the first in the registry runs first). Throws
+/// std::logic_error for a name not in the registry or a cycle.
+std::vector<std::size_t> compile_order(const std::vector<Formulation>& lines);
+
+}  // namespace mcdyna::solver
