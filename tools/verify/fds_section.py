@@ -13,7 +13,7 @@ import argparse
 import numpy as np
 from vtk.util.numpy_support import vtk_to_numpy
 
-from d3plot import read_state, states
+from d3plot import read_state, run_title, states
 
 SCREW_PART = 3  # tools/decks/fds.py: plate parts 1 (SPG) and 2 (FE ring), screw 3
 
@@ -87,7 +87,7 @@ def main():
     ax.set_aspect("equal")
     ax.set_xlabel("x, mm (section y = 0 through the screw axis)")
     ax.set_ylabel("z, mm")
-    ax.set_title(a.title or f"{a.run}: t = {time * 1e3:.3f} ms")
+    ax.set_title(a.title or f"{run_title(a.run)}: t = {time * 1e3:.3f} ms")
     ax.legend(loc="lower right", fontsize=8)
     fig.tight_layout()
     fig.savefig(a.png, dpi=130)

@@ -16,7 +16,7 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
 
-from d3plot import read_state, states
+from d3plot import read_state, run_title, states
 
 
 def cells_where(grid, array, lo, hi, invert=False):
@@ -207,7 +207,7 @@ def main():
         prop.ShadowOff()
     renderer.AddViewProp(bar)
     text = vtk.vtkTextActor()
-    text.SetInput(a.title or f"{a.run}: t = {t * 1e3:.4g} ms")
+    text.SetInput(a.title or f"{run_title(a.run)}: t = {t * 1e3:.4g} ms")
     text.GetTextProperty().SetColor(0.0, 0.0, 0.0)
     text.GetTextProperty().SetFontSize(font)
     text.SetPosition(10, a.size[1] - 10 - font)
