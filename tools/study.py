@@ -84,7 +84,8 @@ TIME_SCALES = ("20", "10", "5", "2", "1")  # issue 47: the FDS schedule's speeds
 THREAD_FACTORS = (("FS 0.8", ["--fs", "0.8"]), ("STRETCH 1.3", ["--stretch", "1.3"]),
                   ("friction 0.1", ["--friction", "0.1"]), ("penalty x30", ["--penalty-scale", "30"]),
                   ("skin 0.1", ["--skin", "0.1"]), ("KERNEL 1", ["--kernel", "1"]),
-                  ("DX 1.2", ["--dx", "1.2"]), ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]),
+                  ("DX 1.2", ["--dx", "1.2"]), ("DX 1.6", ["--dx", "1.6"]),
+                  ("DT2MS 3e-8", ["--mass-scaling", "3e-8"]),
                   ("feed 0.7", ["--feed", "0.7"]), ("feed 0.5", ["--feed", "0.5"]))
 # What an FDS run's speeds and added mass did (tools/verify/fds_facts.py) and the thread it formed.
 FDS_KNOBS = ("time_scale", "dt2ms", "added_mass", "added_mass_largest", "kinetic_over_internal",
