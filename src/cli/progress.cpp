@@ -39,12 +39,7 @@ void Progress::update(const solver::State& s) {
   const bool milestone = fraction >= next_fraction_;
   const bool refresh = terminal_ && now - last_print_ > std::chrono::milliseconds(200);
   if (!milestone && !refresh) return;
-  const double elapsed = seconds(start_, now);
-  const double done = fraction - start_fraction_;
-  const double eta = done > 0.0 ? elapsed * (1.0 - fraction) / done : 0.0;
-  const std::string line =
-      fmt::format("cycle {:>9}  t = {:.5e}  dt = {:.4e}  {:5.1f} %  elapsed {:.1f} s  ETA {:.1f} s",
-                  s.cycle, s.time, s.step, 100.0 * fraction, elapsed, eta);
+  const std::string line = this->line(s, now);
   if (milestone) {
     fmt::print(log_, "{}\n", line);
     log_.flush();  // a user tailing d3hsp (or a batch log) sees the run advance
@@ -61,6 +56,27 @@ void Progress::update(const solver::State& s) {
     fmt::print(out_, "{}\n", line);
     out_.flush();
   }
+}
+
+std::string Progress::line(const solver::State& s, Clock::time_point now) const {
+  const double end = s.time_control.end_time;
+  const double fraction = end > 0.0 ? std::min(1.0, s.time / end) : 0.0;
+  const double elapsed = seconds(start_, now);
+  const double done = fraction - start_fraction_;
+  const double eta = done > 0.0 ? elapsed * (1.0 - fraction) / done : 0.0;
+  return fmt::format(
+      "cycle {:>9}  t = {:.5e}  dt = {:.4e}  {:5.1f} %  elapsed {:.1f} s  ETA {:.1f} s", s.cycle,
+      s.time, s.step, 100.0 * fraction, elapsed, eta);
+}
+
+void Progress::status(const solver::State& s) {
+  const std::string text = "sw2: " + line(s, Clock::now());
+  if (terminal_ && printed_length_ > 0) out_ << refreshed("", printed_length_) << '\r';
+  fmt::print(out_, "{}\n", text);
+  out_.flush();
+  fmt::print(log_, "{}\n", text);
+  log_.flush();
+  printed_length_ = 0;
 }
 
 void Progress::finish() {

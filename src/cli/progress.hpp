@@ -15,6 +15,8 @@ class Progress {
   /// `start_fraction`: the share of ENDTIM done before this run started (a restart).
   Progress(std::ostream& out, std::ostream& log, bool terminal, bool quiet, double start_fraction);
   void update(const solver::State& s);
+  /// Sense switch sw2: the progress line now, on a line of its own (also when quiet).
+  void status(const solver::State& s);
   /// Ends the refreshed line on a terminal.
   void finish();
   /// A refreshed line shorter than the one before it, padded to cover all of that one.
@@ -22,6 +24,7 @@ class Progress {
 
  private:
   using Clock = std::chrono::steady_clock;
+  [[nodiscard]] std::string line(const solver::State& s, Clock::time_point now) const;
   std::ostream& out_;
   std::ostream& log_;
   bool terminal_, quiet_;

@@ -180,11 +180,11 @@ DumpSchedule::DumpSchedule(const model::OutputRequests& requests, std::filesyste
       next_d3dump_ = k + 1;
 }
 
-bool DumpSchedule::due(long cycle, bool interrupted) {
+bool DumpSchedule::due(long cycle, bool interrupted, bool requested) {
   pending_.clear();
-  if (d3dump_cycles_ > 0 && cycle % d3dump_cycles_ == 0)
+  if ((d3dump_cycles_ > 0 && cycle % d3dump_cycles_ == 0) || requested)
     pending_.push_back(dir_ / fmt::format("d3dump{:02d}", next_d3dump_++));
-  if ((runrsf_cycles_ > 0 && cycle % runrsf_cycles_ == 0) || interrupted) {
+  if ((runrsf_cycles_ > 0 && cycle % runrsf_cycles_ == 0) || (interrupted && !requested)) {
     const int k = runrsf_written_++ % runrsf_files_ + 1;
     pending_.push_back(
         dir_ / (runrsf_files_ == 1 ? std::string("runrsf") : fmt::format("runrsf{:02d}", k)));

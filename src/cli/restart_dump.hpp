@@ -46,8 +46,10 @@ namespace mcdyna::cli {
 class DumpSchedule {
  public:
   DumpSchedule(const model::OutputRequests& requests, std::filesystem::path dir);
-  /// Is a dump due at this cycle? Remembers which files, for take().
-  bool due(long cycle, bool interrupted);
+  /// Is a dump due at this cycle? Remembers which files, for take(). `interrupted` (a signal)
+  /// writes the running restart file; `requested` (sense switch sw1 or sw3) the next d3dumpNN,
+  /// as LS-DYNA does.
+  bool due(long cycle, bool interrupted, bool requested = false);
   /// The files due at the last due() that returned true.
   std::vector<std::filesystem::path> take();
 

@@ -24,6 +24,7 @@
 #include "cli/report.hpp"
 #include "cli/restart_dump.hpp"
 #include "cli/run_timing.hpp"
+#include "cli/sense_switch.hpp"
 #include "cli/spg_summary.hpp"
 #include "cli/step_log.hpp"
 #include "cli/wait_policy.hpp"
@@ -425,7 +426,10 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   log.flush();  // the model summary is there to read while the run goes on
 
   const double end_time = state->time_control.end_time;
-  Progress progress(out, log, isatty(STDOUT_FILENO) != 0, options.quiet,
+  // Open MPI gives every process a pseudo-terminal, whatever mpirun's own output goes to: over
+  // several processes the progress takes the log's form, a line every 5 %.
+  const bool terminal = isatty(STDOUT_FILENO) != 0 && launched_processes().size == 1;
+  Progress progress(out, log, terminal, options.quiet,
                     end_time > 0.0 ? std::min(1.0, state->time / end_time) : 0.0);
   const auto start = std::chrono::steady_clock::now();
   long zone_cycles = 0;
@@ -476,9 +480,19 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
     };
   }
   hooks.stop_requested = [&] { return g_stop_signal != 0 || !output_failure.empty(); };
-  hooks.dump_due = [&](const solver::State& s, bool interrupted) {
+  SenseSwitchFile switches(dir, comm.rank() == 0, out);
+  hooks.sense_switches = [&] { return switches.poll(); };
+  hooks.status = [&](const solver::State& s) {
+    if (writer) progress.status(s);
+  };
+  hooks.request_state = [&] {
+    if (writer && !outputs->request_state())
+      fmt::print(out, "sw4: the deck asks for no d3plot states (*DATABASE_BINARY_D3PLOT)\n");
+  };
+  hooks.dump_due = [&](const solver::State& s, bool interrupted, bool requested) {
     // A fixed-step probe leaves no dump: continuing it would not repeat the deck's run.
-    return output_failure.empty() && options.fixed_step <= 0.0 && dumps.due(s.cycle, interrupted);
+    return output_failure.empty() && options.fixed_step <= 0.0 &&
+           dumps.due(s.cycle, interrupted, requested);
   };
   std::filesystem::path last_dump;
   hooks.dump = [&](const solver::State& s, const solver::ResumePoint& point) {
@@ -504,9 +518,12 @@ int run_processes(const RunOptions& options, const core::Communicator& comm, std
   if (step_log) checked([&] { step_log->flush(); });
 
   std::ostringstream summary;
+  const bool switched_off =
+      result.reason == solver::StopReason::interrupted && switches.stop_requested();
   fmt::print(summary, "\n{} at t = {:.6e}, cycle {}\n",
-             output_failure.empty() ? reason_text(result.reason)
-                                    : "error termination: an output could not be written",
+             !output_failure.empty() ? "error termination: an output could not be written"
+             : switched_off          ? "stopped by sense switch sw1 (d3kil)"
+                                     : reason_text(result.reason),
              state->time, state->cycle);
   if (!output_failure.empty()) fmt::print(summary, "  {}\n", output_failure);
   if (!result.message.empty()) fmt::print(summary, "  {}\n", result.message);

@@ -117,13 +117,13 @@ OutputsResume Outputs::resume_point() const {
 }
 
 bool Outputs::due(const solver::State& s) const {
-  if (d3plot_ && d3plot_schedule_.due(s.time)) return true;
+  if (d3plot_ && (d3plot_schedule_.due(s.time) || state_requested_)) return true;
   return std::any_of(history_schedules_.begin(), history_schedules_.end(),
                      [&](const Schedule& h) { return h.due(s.time); });
 }
 
 bool Outputs::state_due(const solver::State& s) const {
-  return d3plot_ && d3plot_schedule_.due(s.time);
+  return d3plot_ && (d3plot_schedule_.due(s.time) || state_requested_);
 }
 
 void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bool final,
@@ -136,7 +136,11 @@ void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bo
   if (d3plot_ && wanted(d3plot_schedule_)) {
     d3plot_->write(s, velocity);
     d3plot_schedule_.advance(s.time);
+  } else if (d3plot_ && state_requested_) {
+    d3plot_->write(s, velocity);  // sw4: a state between the scheduled ones
+    d3plot_schedule_.last_written = s.time;
   }
+  state_requested_ = false;
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     if (!wanted(history_schedules_[k])) continue;
     histories_[k]->write(c);

@@ -60,6 +60,12 @@ class Outputs {
   /// `previous`: v^{n-1/2}; the state holds v^{n+1/2}.
   void write(const solver::State& state, const Eigen::Matrix3Xd& previous, bool final,
              double nanoseconds_per_zone_cycle);
+  /// Sense switch sw4: the next write() writes a d3plot state whatever the schedule says (and
+  /// leaves the schedule as it was). False when the deck asks for no d3plot states.
+  bool request_state() {
+    state_requested_ = d3plot_ != nullptr;
+    return state_requested_;
+  }
   /// Files created so far (for the end-of-run report).
   [[nodiscard]] std::vector<std::string> files() const;
   [[nodiscard]] std::size_t states_written() const { return d3plot_ ? d3plot_->states() : 0; }
@@ -83,6 +89,7 @@ class Outputs {
                            double interval, model::Id curve);
   std::unique_ptr<VtkSeries> d3plot_;
   Schedule d3plot_schedule_;
+  bool state_requested_ = false;
   std::vector<std::unique_ptr<HistoryFile>> histories_;
   std::vector<Schedule> history_schedules_;
 };

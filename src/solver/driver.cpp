@@ -289,10 +289,12 @@ class Loop {
   bool cycle() {
     const bool at_end = reached_end();
     bool interrupted = hooks_.stop_requested && hooks_.stop_requested();
+    SenseSwitches sw = hooks_.sense_switches ? hooks_.sense_switches() : SenseSwitches{};
     bool output_due = hooks_.output_due && hooks_.output_due(s_);
     state_due_ = output_due && hooks_.state_due && hooks_.state_due(s_);
-    if (halo_) agree(interrupted, output_due, state_due_);
-    dump_if_due(at_end, interrupted);
+    if (halo_) agree(interrupted, output_due, state_due_, sw);
+    act_on(sw, interrupted, output_due);
+    dump_if_due(at_end, interrupted, sw.stop || sw.dump);
     const StepTimes t = next_step(at_end || interrupted);
     const bool stop = at_end || interrupted || result_.reason == StopReason::step_collapse;
     const bool write = stop || output_due;
@@ -360,12 +362,29 @@ class Loop {
 
   // Every process stops and writes when any one is asked to (a signal reaches the processes
   // of an mpirun at different cycles); process 0 alone knows when an output is due.
-  void agree(bool& interrupted, bool& output_due, bool& state_due) {
+  // What any process saw: a signal, an output due, the sense switches (one process reads the
+  // d3kil file), in one collective per cycle.
+  void agree(bool& interrupted, bool& output_due, bool& state_due, SenseSwitches& sw) {
     const unsigned flags =
-        comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U) | (state_due ? 4U : 0U));
+        comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U) | (state_due ? 4U : 0U) |
+                         (sw.stop ? 8U : 0U) | (sw.status ? 16U : 0U) | (sw.dump ? 32U : 0U) |
+                         (sw.state ? 64U : 0U));
     interrupted = (flags & 1U) != 0;
     output_due = (flags & 2U) != 0;
     state_due = (flags & 4U) != 0;
+    sw = SenseSwitches{(flags & 8U) != 0, (flags & 16U) != 0, (flags & 32U) != 0,
+                       (flags & 64U) != 0};
+  }
+
+  // sw1 stops the run (its restart dump follows), sw2 reports where it stands, sw4 makes this
+  // cycle's output a d3plot state.
+  void act_on(const SenseSwitches& sw, bool& interrupted, bool& output_due) {
+    if (sw.stop) interrupted = true;
+    if (sw.status && hooks_.status) hooks_.status(s_);
+    if (sw.state && hooks_.request_state) {
+      hooks_.request_state();
+      output_due = state_due_ = true;
+    }
   }
 
   // The lowest node with a non-finite velocity on any process.
@@ -386,9 +405,10 @@ class Loop {
 
   // A restart dump at the top of the cycle: everything the cycle starts from is in the state
   // and in pass_, so a run continued from here repeats this cycle bit for bit.
-  void dump_if_due(bool at_end, bool interrupted) {
-    if (!hooks_.dump || !hooks_.dump_due || at_end || (s_.cycle == first_cycle_ && !interrupted) ||
-        !hooks_.dump_due(s_, interrupted))
+  void dump_if_due(bool at_end, bool interrupted, bool requested) {
+    if (!hooks_.dump || !hooks_.dump_due || at_end ||
+        (s_.cycle == first_cycle_ && !interrupted && !requested) ||
+        !hooks_.dump_due(s_, interrupted, requested))
       return;
     phases_.charge(PhaseTimes::other);
     if (halo_) synchronise_blocks(Block::Gather::dump);

@@ -72,6 +72,17 @@ struct ResumePoint {
   long element_cycles = 0, particle_cycles = 0;
 };
 
+/// LS-DYNA's sense switches: what a user asks of a running job by a file d3kil in its directory
+/// (cli/sense_switch.hpp reads it). Over several processes one process reads the file and every
+/// process acts on the same cycle.
+struct SenseSwitches {
+  bool stop = false;    ///< sw1: a restart dump, then stop
+  bool status = false;  ///< sw2: print where the run stands and its time estimate
+  bool dump = false;    ///< sw3: a restart dump, and go on
+  bool state = false;   ///< sw4: a d3plot state, and go on
+  [[nodiscard]] bool any() const { return stop || status || dump || state; }
+};
+
 struct RunHooks {
   /// Asked at t^n before the velocities advance: is an output state due now?
   std::function<bool(const State&)> output_due;
@@ -89,11 +100,20 @@ struct RunHooks {
   std::function<void(const std::string&)> decomposed;
   /// Polled every cycle (signals).
   std::function<bool()> stop_requested;
+  /// Polled every cycle: the sense switches the user set since the last poll.
+  std::function<SenseSwitches()> sense_switches;
+  /// sw2, on every process at the same cycle: where the run stands.
+  std::function<void(const State&)> status;
+  /// sw4, on every process at the same cycle before the outputs are asked what is due: the next
+  /// output is to write a d3plot state whatever its schedule says.
+  std::function<void()> request_state;
   /// Called every cycle after the step (progress display decides how often to print).
   std::function<void(const State&)> progress;
-  /// Asked at the top of every cycle but the first of this run (and when a stop signal came):
-  /// is a restart dump due now? `dump` then writes the state and the loop's resume point.
-  std::function<bool(const State&, bool interrupted)> dump_due;
+  /// Asked at the top of every cycle but the first of this run (and when a stop signal or a
+  /// sense switch came): is a restart dump due now? `interrupted`: the run stops here (a signal,
+  /// sw1); `requested`: the user asked for one (sw1, sw3). `dump` then writes the state and the
+  /// loop's resume point.
+  std::function<bool(const State&, bool interrupted, bool requested)> dump_due;
   std::function<void(const State&, const ResumePoint&)> dump;
 };
 

@@ -410,3 +410,47 @@ TEST_CASE("restart: LS-DYNA's i= r= continues in the working directory") {
 }
 
 }  // namespace mcdyna::test
+
+namespace mcdyna::test {
+
+TEST_CASE("sense switches in the time loop: each acts at the cycle it is read") {
+  // The loop polls the switches at the top of every cycle; here sw2, sw4, sw3 and sw1 come at
+  // cycles 3, 7, 11 and 15 of the eroding bar (28 cycles), and the hooks record what the loop
+  // did.
+  TempDir dir;
+  Simulation sim = prepare(dir, eroding_bar("*CONTROL_TERMINATION\n1.0\n"));
+  solver::RunHooks hooks;
+  std::vector<long> status_at, state_at, written_at, dumps_at, requested_at;
+  hooks.sense_switches = [&] {
+    solver::SenseSwitches sw;
+    const long c = sim.state->cycle;
+    sw.status = c == 3;
+    sw.state = c == 7;
+    sw.dump = c == 11;
+    sw.stop = c == 15;
+    return sw;
+  };
+  hooks.status = [&](const solver::State& s) { status_at.push_back(s.cycle); };
+  hooks.request_state = [&] { state_at.push_back(sim.state->cycle); };
+  hooks.output_due = [](const solver::State&) { return false; };  // no scheduled outputs
+  hooks.write = [&](const solver::State& s, const Eigen::Matrix3Xd&, bool) {
+    written_at.push_back(s.cycle);
+  };
+  hooks.dump_due = [&](const solver::State& s, bool interrupted, bool requested) {
+    if (requested) requested_at.push_back(s.cycle);
+    return requested || interrupted;
+  };
+  hooks.dump = [&](const solver::State& s, const solver::ResumePoint&) {
+    dumps_at.push_back(s.cycle);
+  };
+  run(sim, hooks);
+  CHECK(sim.result.reason == solver::StopReason::interrupted);
+  CHECK(sim.state->cycle == 15);
+  CHECK(status_at == std::vector<long>{3});
+  CHECK(state_at == std::vector<long>{7});
+  CHECK(written_at == std::vector<long>{7, 15});  // sw4's state, then the final one at sw1
+  CHECK(requested_at == std::vector<long>{11, 15});
+  CHECK(dumps_at == std::vector<long>{11, 15});
+}
+
+}  // namespace mcdyna::test

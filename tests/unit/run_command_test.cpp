@@ -5,11 +5,13 @@
 #include <vtkPointData.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli/sense_switch.hpp"
 #include "core/communicator.hpp"
 #include "io/history_table.hpp"
 #include "output_support.hpp"
@@ -324,6 +326,54 @@ TEST_CASE("SIGINT stops the run with exit 5, a final state and whole files") {
   for (const char* f : {"glstat.csv", "matsum.csv", "rwforc.csv"})
     check_csv_whole(dir.path() / "out" / f);
   CHECK(read_text(dir.path() / "out" / "d3hsp").find("interrupted by signal") != std::string::npos);
+}
+
+TEST_CASE("sense switches: d3kil's text names sw1-sw4, an empty file stops, others are no switch") {
+  using cli::SenseSwitchFile;
+  solver::SenseSwitches sw;
+  CHECK(SenseSwitchFile::parse("", sw));
+  CHECK(sw.stop);
+  CHECK(SenseSwitchFile::parse(" SW2\n", sw));
+  CHECK((sw.status && !sw.stop && !sw.dump && !sw.state));
+  CHECK(SenseSwitchFile::parse("sw3", sw));
+  CHECK((sw.dump && !sw.stop));
+  CHECK(SenseSwitchFile::parse("sw4 please", sw));
+  CHECK(sw.state);
+  CHECK_FALSE(SenseSwitchFile::parse("stop", sw));
+  CHECK_FALSE(sw.any());
+}
+
+TEST_CASE("a d3kil present when the run starts: read, deleted, sw3 dumps, sw1 dumps and stops") {
+  // The file is read at the first cycle (the reader looks at once, then every 0.2 s), so each
+  // switch acts at cycle 0 whatever the machine's speed.
+  TempDir dir;
+  const std::string deck = std::string(MCDYNA_SOURCE_DIR) + "/decks/taylor_bar/taylor_coarse.k";
+  auto run_with = [&](const char* name, const char* text) {
+    const std::filesystem::path out = dir.path() / name;
+    std::filesystem::create_directories(out);
+    std::ofstream(out / "d3kil") << text;
+    const Run r = run_mcdyna("run " + deck + " --out " + out.string() + " --cycles 50 --threads 1");
+    CHECK_FALSE(std::filesystem::exists(out / "d3kil"));  // read and deleted, as LS-DYNA does
+    return r;
+  };
+  const Run state = run_with("sw4", "sw4\n");
+  CHECK_MESSAGE(state.exit_code == 0, state.output);
+  // (At cycle 0 the schedule writes a state anyway: restart_test.cpp's time-loop test shows sw4
+  // adding one between scheduled outputs.)
+  CHECK(state.output.find("d3kil read: sense switch sw4") != std::string::npos);
+  const Run dump = run_with("sw3", "sw3");
+  CHECK_MESSAGE(dump.exit_code == 0, dump.output);
+  CHECK(std::filesystem::exists(dir.path() / "sw3" / "d3dump01"));
+  const Run status = run_with("sw2", "sw2");
+  CHECK(status.output.find("sw2: cycle         0") != std::string::npos);
+  const Run stop = run_with("sw1", "");
+  CHECK_MESSAGE(stop.exit_code == 5, stop.output);
+  CHECK(stop.output.find("stopped by sense switch sw1 (d3kil) at t = 0.000000e+00, cycle 0") !=
+        std::string::npos);
+  CHECK(std::filesystem::exists(dir.path() / "sw1" / "d3dump01"));
+  const Run other = run_with("other", "halt");
+  CHECK_MESSAGE(other.exit_code == 0, other.output);
+  CHECK(other.output.find("d3kil: \"halt\" is no sense switch") != std::string::npos);
 }
 
 TEST_CASE("history files: nodout, bndout, spcforc and matsum carry the motion they describe") {
