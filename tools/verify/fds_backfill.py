@@ -108,6 +108,8 @@ def main():
                          inertia_note=f"added mass at the end as reported in {source}; the "
                                       f"plate's kinetic/internal energy was not kept and a "
                                       f"re-run costs {facts['core']:,.0f} core-s")
+        elif "as reported in" in facts.get("inertia_note", ""):
+            pass  # documented by an earlier pass: kept (a later pass without --documented)
         elif dt2ms == 0.0:
             # No mass scaling: nothing is added. The energies went with the run directory.
             facts.update(added_mass=0.0, kinetic_over_internal=None,
