@@ -9,13 +9,16 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "io/checked_file.hpp"
-#include "solver/results.hpp"
+#include "solver/block.hpp"
 
 namespace mcdyna::io {
 
@@ -36,8 +39,8 @@ vtkNew<vtkFloatArray> vector_array(const char* name, const Eigen::Matrix3Xd& v) 
   return a;
 }
 
-// Cell fields in cell order: deformable solids and shells (not eroded), SPG particles
-// (vertices), rigid solids, rigid shells.
+// The fields every cell carries, in cell order (the blocks' order: deformable solids, shells and
+// beams not eroded, SPG particles as vertices, rigid solids and shells).
 struct CellFields {
   vtkNew<vtkFloatArray> stress, von_mises, plastic_strain, temperature, damage, pressure;
   vtkNew<vtkFloatArray> bond_damage;  ///< SPG: share of the particle's bonds broken (0 for FE)
@@ -92,69 +95,84 @@ struct CellFields {
   }
 };
 
-// The beams' own field, written when the model has deformable beams: the resultants in the
-// beam's local axes r s t (LS-DYNA's elout order: axial force, shear s, shear t, torsion,
-// moment s, moment t); zero on the other cells.
-struct BeamFields {
-  vtkNew<vtkFloatArray> resultants;
-  BeamFields() {
-    resultants->SetName("beam_resultants");
-    resultants->SetNumberOfComponents(6);
-    const char* comps[6] = {"N", "Vs", "Vt", "T", "Ms", "Mt"};
-    for (int k = 0; k < 6; ++k)
-      resultants->SetComponentName(k, comps[k]);
-  }
-  void add(const float (&r)[6]) { resultants->InsertNextTypedTuple(r); }
-  void add(const solver::State& s, const solver::BeamBlock& block, solver::Index e) {
-    const std::array<double, 6> v = solver::beam_resultants(s, block, e);
-    const float r[6] = {static_cast<float>(v[0]), static_cast<float>(v[1]),
-                        static_cast<float>(v[2]), static_cast<float>(v[3]),
-                        static_cast<float>(v[4]), static_cast<float>(v[5])};
-    add(r);
-  }
-  void pad_to(vtkIdType cells) {
-    const float zero[6] = {};
-    while (resultants->GetNumberOfTuples() < cells)
-      add(zero);
-  }
-  void attach(vtkUnstructuredGrid* g) { g->GetCellData()->AddArray(resultants); }
-};
+// The cells of a state as the blocks show them (solver/state_sink.hpp): the common fields in
+// CellFields, and each block's own fields (a shell's layer stresses and thickness, a beam's
+// resultants) after them in the order declared, zero on the cells that do not carry them.
+class VtkCells final : public solver::StateSink {
+ public:
+  explicit VtkCells(vtkUnstructuredGrid* grid) : grid_(grid) {}
 
-// The shells' own fields, written when the model has deformable shells: the stress of the top
-// and bottom layers (global axes; `stress` holds the mean of the layers) and the thickness;
-// zero on the other cells.
-struct ShellFields {
-  vtkNew<vtkFloatArray> top, bottom, thickness;
-  ShellFields() {
-    const char* comps[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
-    for (vtkFloatArray* a : {top.Get(), bottom.Get()}) {
-      a->SetNumberOfComponents(6);
-      for (int k = 0; k < 6; ++k)
-        a->SetComponentName(k, comps[k]);
-    }
-    top->SetName("stress_top");
-    bottom->SetName("stress_bottom");
-    thickness->SetName("thickness");
+  void declare(std::string_view name, std::initializer_list<const char*> components) override {
+    if (find(name) != nullptr) return;
+    vtkNew<vtkFloatArray> a;
+    a->SetName(std::string(name).c_str());
+    a->SetNumberOfComponents(components.size() == 0 ? 1 : static_cast<int>(components.size()));
+    int k = 0;
+    for (const char* c : components)
+      a->SetComponentName(k++, c);
+    pad(a, grid_->GetNumberOfCells());
+    own_.emplace_back(a.Get());
   }
-  static void put(vtkFloatArray* a, const std::array<double, 6>& s) {
-    const float t[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
-                        static_cast<float>(s[2]), static_cast<float>(s[3]),
-                        static_cast<float>(s[4]), static_cast<float>(s[5])};
+
+  void cell(solver::CellShape shape, const Index* nodes, const solver::CellValues& v) override {
+    const int n = solver::cell_nodes(shape);
+    vtkIdType ids[8];
+    for (int c = 0; c < n; ++c)
+      ids[c] = nodes[c];
+    grid_->InsertNextCell(vtk_type(shape), n, ids);
+    fields_.add(v.result, v.pressure, v.temperature, static_cast<int>(v.part), v.bond_damage,
+                v.particle_state, v.step);
+  }
+
+  void value(std::string_view name, const double* values) override {
+    vtkFloatArray* a = find(name);
+    if (a == nullptr)
+      throw std::logic_error("a block's field was not declared: " + std::string(name));
+    pad(a, grid_->GetNumberOfCells() - 1);
+    float t[16];
+    for (int k = 0; k < a->GetNumberOfComponents(); ++k)
+      t[k] = static_cast<float>(values[k]);
     a->InsertNextTypedTuple(t);
   }
-  void add(const solver::ElementResult& t, const solver::ElementResult& b, double h) {
-    put(top, t.stress);
-    put(bottom, b.stress);
-    thickness->InsertNextValue(static_cast<float>(h));
+
+  // The arrays onto the grid, once every block has shown its cells.
+  void attach() {
+    fields_.attach(grid_);
+    for (const vtkSmartPointer<vtkFloatArray>& a : own_) {
+      pad(a, grid_->GetNumberOfCells());
+      grid_->GetCellData()->AddArray(a);
+    }
   }
-  void pad_to(vtkIdType cells) {
-    while (thickness->GetNumberOfTuples() < cells)
-      add({}, {}, 0.0);
+
+ private:
+  static int vtk_type(solver::CellShape shape) {
+    switch (shape) {
+      case solver::CellShape::hexahedron:
+        return VTK_HEXAHEDRON;
+      case solver::CellShape::quadrilateral:
+        return VTK_QUAD;
+      case solver::CellShape::triangle:
+        return VTK_TRIANGLE;
+      case solver::CellShape::line:
+        return VTK_LINE;
+      case solver::CellShape::vertex:
+        return VTK_VERTEX;
+    }
+    return VTK_EMPTY_CELL;
   }
-  void attach(vtkUnstructuredGrid* g) {
-    for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{top, bottom, thickness})
-      g->GetCellData()->AddArray(a);
+  static void pad(vtkFloatArray* a, vtkIdType cells) {
+    const float zero[16] = {};
+    while (a->GetNumberOfTuples() < cells)
+      a->InsertNextTypedTuple(zero);
   }
+  vtkFloatArray* find(std::string_view name) const {
+    for (const vtkSmartPointer<vtkFloatArray>& a : own_)
+      if (name == a->GetName()) return a;
+    return nullptr;
+  }
+  vtkUnstructuredGrid* grid_;
+  CellFields fields_;
+  std::vector<vtkSmartPointer<vtkFloatArray>> own_;
 };
 
 }  // namespace
@@ -200,102 +218,10 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
   grid->GetPointData()->AddArray(mass);
   grid->GetPointData()->AddArray(added);
 
-  CellFields fields;
-  vtkIdType hex[8];
-  const solver::Solids& so = s.solids;
-  for (const solver::SolidBlock& block : so.blocks) {
-    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
-    for (Index e = block.begin; e < block.end; ++e) {
-      const auto i = static_cast<std::size_t>(e);
-      if (so.eroded[i]) continue;
-      for (int c = 0; c < 8; ++c)
-        hex[c] = so.nodes[i][static_cast<std::size_t>(c)];
-      grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-      fields.add(solver::element_result(s, block, e), so.pressure[i], so.temperature[i], part_id);
-    }
-  }
-  // Deformable shells (quadrilaterals, triangles) with their layer fields.
-  const solver::Shells& sh = s.shells;
-  const bool shells = sh.count() > 0;
-  ShellFields shell_fields;
-  if (shells) shell_fields.pad_to(grid->GetNumberOfCells());
-  for (const solver::ShellBlock& block : sh.blocks) {
-    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
-    for (Index e = block.begin; e < block.end; ++e) {
-      const auto i = static_cast<std::size_t>(e);
-      if (sh.eroded[i]) continue;
-      const auto& q = sh.nodes[i];
-      vtkIdType quad[4] = {q[0], q[1], q[2], q[3]};
-      grid->InsertNextCell(q[3] == q[2] ? VTK_TRIANGLE : VTK_QUAD, q[3] == q[2] ? 3 : 4, quad);
-      const solver::ElementResult mid =
-          solver::shell_result(s, block, e, solver::ShellSurface::all);
-      fields.add(mid, -(mid.stress[0] + mid.stress[1] + mid.stress[2]) / 3.0, sh.temperature[i],
-                 part_id);
-      shell_fields.add(solver::shell_result(s, block, e, solver::ShellSurface::top),
-                       solver::shell_result(s, block, e, solver::ShellSurface::bottom),
-                       sh.thickness[i]);
-    }
-  }
-  // Deformable beams (lines) with their resultants.
-  const solver::Beams& bm = s.beams;
-  const bool beams = bm.count() > 0;
-  BeamFields beam_fields;
-  if (beams) beam_fields.pad_to(grid->GetNumberOfCells());
-  for (const solver::BeamBlock& block : bm.blocks) {
-    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(block.part)].id);
-    for (Index e = block.begin; e < block.end; ++e) {
-      const auto i = static_cast<std::size_t>(e);
-      if (bm.eroded[i]) continue;
-      const vtkIdType line[2] = {bm.nodes[i][0], bm.nodes[i][1]};
-      grid->InsertNextCell(VTK_LINE, 2, line);
-      const solver::ElementResult r = solver::beam_result(s, block, e);
-      fields.add(r, -(r.stress[0] + r.stress[1] + r.stress[2]) / 3.0, bm.temperature[i], part_id);
-      beam_fields.add(s, block, e);
-    }
-  }
-  // SPG particles: one vertex cell each, with the fields of their integration point.
-  for (const solver::spg::Domain& d : s.spg) {
-    const int part_id = static_cast<int>(s.parts[static_cast<std::size_t>(d.part)].id);
-    for (Index i = 0; i < d.count(); ++i) {
-      const vtkIdType vertex = d.particles.nodes[static_cast<std::size_t>(i)];
-      grid->InsertNextCell(VTK_VERTEX, 1, &vertex);
-      const auto ii = static_cast<std::size_t>(i);
-      const int state = d.fields.debris[ii]     ? 3
-                        : d.kernel.isolated[ii] ? 2
-                        : d.kernel.pinned[ii]   ? 1
-                                                : 0;
-      fields.add(solver::particle_result(d, i), d.fields.pressure[ii], d.fields.temperature[ii],
-                 part_id, d.kernel.bonds.damage(i), state, d.fields.step[ii]);
-    }
-  }
-  const solver::DisplayCells& rc = s.rigid_cells;
-  const solver::ElementResult none;
-  for (std::size_t k = 0; k < rc.solids.size(); ++k) {
-    for (int c = 0; c < 8; ++c)
-      hex[c] = rc.solids[k][static_cast<std::size_t>(c)];
-    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-    fields.add(none, 0.0, 0.0,
-               static_cast<int>(s.parts[static_cast<std::size_t>(rc.solid_parts[k])].id));
-  }
-  for (std::size_t k = 0; k < rc.shells.size(); ++k) {
-    const auto& q = rc.shells[k];
-    vtkIdType quad[4] = {q[0], q[1], q[2], q[3]};
-    if (q[3] == q[2])
-      grid->InsertNextCell(VTK_TRIANGLE, 3, quad);
-    else
-      grid->InsertNextCell(VTK_QUAD, 4, quad);
-    fields.add(none, 0.0, 0.0,
-               static_cast<int>(s.parts[static_cast<std::size_t>(rc.shell_parts[k])].id));
-  }
-  fields.attach(grid);
-  if (shells) {
-    shell_fields.pad_to(grid->GetNumberOfCells());
-    shell_fields.attach(grid);
-  }
-  if (beams) {
-    beam_fields.pad_to(grid->GetNumberOfCells());
-    beam_fields.attach(grid);
-  }
+  VtkCells cells(grid);
+  for (const std::unique_ptr<solver::Block>& b : s.blocks)
+    b->write_state(s, cells);
+  cells.attach();
 
   // VTK writes into memory and the file is written here, every write checked: VTK's own file
   // writer on a full disk corrupted its heap on its error path (SEGV in

@@ -17,6 +17,7 @@
 #include "solver/element_ref.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
+#include "solver/state_sink.hpp"
 
 namespace mcdyna::solver {
 
@@ -74,12 +75,12 @@ class Block {
   /// entities from their owners, to process 0 what the output reads or to every process all of
   /// them. Collective.
   virtual void synchronise(State& /*s*/, Gather /*what*/) {}
+  /// What it shows in a d3plot state (state_sink.hpp): its cells, in the blocks' order.
+  virtual void write_state(const State& /*s*/, StateSink& /*sink*/) const {}
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}
 };
-
-using Blocks = std::vector<std::unique_ptr<Block>>;
 
 /// The blocks of a compiled state, in the loop's order (formulations.cpp).
 Blocks make_blocks(State& s);

@@ -218,6 +218,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
   detail::warn_free_corner_elements(m, *s, diags);
   if (diags.error_count() > errors) return nullptr;
+  s->blocks = make_blocks(*s);
   return s;
 }
 

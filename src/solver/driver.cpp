@@ -238,7 +238,7 @@ class Loop {
         hooks_(hooks),
         result_(result),
         start_(Clock::now()),
-        blocks_(make_blocks(s)),
+        blocks_(s.blocks),
         phases_(blocks_, result.phases),
         threads_(omp_get_max_threads()),
         comm_(core::Communicator::world()) {
@@ -480,7 +480,7 @@ class Loop {
   const RunHooks& hooks_;
   RunResult& result_;
   Clock::time_point start_;
-  Blocks blocks_;
+  Blocks& blocks_;
   Phases phases_;
   int threads_;
   core::Communicator comm_;

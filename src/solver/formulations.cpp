@@ -75,6 +75,11 @@ std::vector<std::size_t> compile_order(const std::vector<Formulation>& lines) {
   return order;
 }
 
+State::State() = default;
+State::~State() = default;
+State::State(State&&) noexcept = default;
+State& State::operator=(State&&) noexcept = default;
+
 Blocks make_blocks(State& s) {
   Blocks blocks;
   for (const Formulation& f : formulations())

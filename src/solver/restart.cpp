@@ -41,7 +41,7 @@ constexpr std::array<std::size_t, 27> kDumpedSizes = {sizeof(Nodes),
 
 #if defined(__x86_64__) && defined(__GLIBCXX__) && !defined(_GLIBCXX_DEBUG)
 static_assert(kDumpedSizes == std::array<std::size_t, 27>{416, 512, 72,  80,  488, 256,  80,
-                                                          584, 72,  112, 128, 240, 3048, 1984,
+                                                          584, 72,  112, 128, 240, 3072, 1984,
                                                           96,  112, 456, 352, 144, 192,  136,
                                                           56,  64,  304, 624, 432, 120},
               "a struct of kDumpedSizes changed (same order): list its new member in fields() "
@@ -295,8 +295,8 @@ void fields(Ar& ar, Interface& c) {
 }  // namespace contact
 
 // Left out, as deck data compiled again on restart: title, parts, materials, rigid_cells, ties,
-// curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed
-// by
+// blocks, curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both
+// changed by
 // --fixed-step). Each section of kStateSections is checksummed on its own in the dump, so a damaged
 // one is named.
 template <class Ar>

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -424,7 +425,17 @@ struct TimeControl {
   double fixed_step = 0.0;
 };
 
+class Block;  // block.hpp
+using Blocks = std::vector<std::unique_ptr<Block>>;
+
 struct State {
+  State();
+  ~State();  // formulations.cpp, where a Block is complete
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
+  State(State&&) noexcept;
+  State& operator=(State&&) noexcept;
+
   std::string title;
   Nodes nodes;
   Solids solids;
@@ -467,6 +478,9 @@ struct State {
   /// Over several processes: what this one advances and computes (not dumped: rebuilt from the
   /// deck and the process count when a run starts or restarts).
   parallel::Ownership ownership;
+  /// The formulations as the time loop runs them, in the registry's order (formulations.cpp),
+  /// made by compile().
+  Blocks blocks;
 };
 
 }  // namespace mcdyna::solver

@@ -3,6 +3,7 @@
 #include "solver/beams/beam_elements.hpp"
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/results.hpp"
 
 namespace mcdyna::solver {
 
@@ -37,6 +38,25 @@ class BeamsBlock final : public Block {
       r.fail("zero length in " + element_name(s, offset + e.inverted), true);
     else if (e.non_finite >= 0)
       r.fail("non-finite stress or step in " + element_name(s, offset + e.non_finite), false);
+  }
+
+  // The beams not eroded (lines): the mean of the fibres, and of their own the resultants in the
+  // local axes r s t (LS-DYNA's elout order: axial force, shear s, shear t, torsion, moment s,
+  // moment t).
+  void write_state(const State& s, StateSink& sink) const override {
+    sink.declare("beam_resultants", {"N", "Vs", "Vt", "T", "Ms", "Mt"});
+    const Beams& bm = s.beams;
+    for (const BeamBlock& block : bm.blocks) {
+      const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
+      for (Index e = block.begin; e < block.end; ++e) {
+        const auto i = static_cast<std::size_t>(e);
+        if (bm.eroded[i]) continue;
+        const ElementResult r = beam_result(s, block, e);
+        sink.cell(CellShape::line, bm.nodes[i].data(),
+                  {r, -(r.stress[0] + r.stress[1] + r.stress[2]) / 3.0, bm.temperature[i], part});
+        sink.value("beam_resultants", beam_resultants(s, block, e).data());
+      }
+    }
   }
 
  private:

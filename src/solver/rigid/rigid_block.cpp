@@ -20,6 +20,23 @@ class RigidBodiesBlock final : public Block {
     return bad;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
+
+  // The rigid parts' elements, drawn: solids, then shells, with no stress.
+  void write_state(const State& s, StateSink& sink) const override {
+    const DisplayCells& rc = s.rigid_cells;
+    auto part = [&](Index p) { return s.parts[static_cast<std::size_t>(p)].id; };
+    for (std::size_t k = 0; k < rc.solids.size(); ++k) {
+      CellValues v;
+      v.part = part(rc.solid_parts[k]);
+      sink.cell(CellShape::hexahedron, rc.solids[k].data(), v);
+    }
+    for (std::size_t k = 0; k < rc.shells.size(); ++k) {
+      const auto& q = rc.shells[k];
+      CellValues v;
+      v.part = part(rc.shell_parts[k]);
+      sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(), v);
+    }
+  }
 };
 
 }  // namespace

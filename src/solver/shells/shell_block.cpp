@@ -2,6 +2,7 @@
 // corner forces and moments into the nodes.
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/results.hpp"
 #include "solver/shells/shell_elements.hpp"
 
 namespace mcdyna::solver {
@@ -44,6 +45,30 @@ class ShellsBlock final : public Block {
 
  private:
   long count_;
+
+  // The shells not eroded (quadrilaterals, triangles): the mean of the layers, and of their own
+  // the stress of the top and bottom layers (global axes) and the thickness.
+  void write_state(const State& s, StateSink& sink) const override {
+    sink.declare("stress_top", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+    sink.declare("stress_bottom", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+    sink.declare("thickness", {});
+    const Shells& sh = s.shells;
+    for (const ShellBlock& block : sh.blocks) {
+      const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
+      for (Index e = block.begin; e < block.end; ++e) {
+        const auto i = static_cast<std::size_t>(e);
+        if (sh.eroded[i]) continue;
+        const auto& q = sh.nodes[i];
+        const ElementResult mid = shell_result(s, block, e, ShellSurface::all);
+        sink.cell(
+            q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(),
+            {mid, -(mid.stress[0] + mid.stress[1] + mid.stress[2]) / 3.0, sh.temperature[i], part});
+        sink.value("stress_top", shell_result(s, block, e, ShellSurface::top).stress.data());
+        sink.value("stress_bottom", shell_result(s, block, e, ShellSurface::bottom).stress.data());
+        sink.value("thickness", &sh.thickness[i]);
+      }
+    }
+  }
 };
 
 }  // namespace

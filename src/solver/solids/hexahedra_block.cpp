@@ -5,6 +5,7 @@
 
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/results.hpp"
 #include "solver/solids/solid_elements.hpp"
 
 namespace mcdyna::solver {
@@ -32,6 +33,20 @@ class HexahedraBlock final : public Block {
       r.fail("non-finite stress or wave speed in " + element_name(s, e.non_finite), false);
     else if (e.runaway >= 0)
       r.fail(runaway_message(s, e.runaway, "volume"), false);
+  }
+
+  // The solids not eroded, with their mean stress, pressure and temperature.
+  void write_state(const State& s, StateSink& sink) const override {
+    const Solids& so = s.solids;
+    for (const SolidBlock& block : so.blocks) {
+      const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
+      for (Index e = block.begin; e < block.end; ++e) {
+        const auto i = static_cast<std::size_t>(e);
+        if (so.eroded[i]) continue;
+        sink.cell(CellShape::hexahedron, so.nodes[i].data(),
+                  {element_result(s, block, e), so.pressure[i], so.temperature[i], part});
+      }
+    }
   }
 
  private:

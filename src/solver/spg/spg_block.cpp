@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
+#include "solver/results.hpp"
 #include "solver/spg/distribution.hpp"
 #include "solver/spg/spg_solver.hpp"
 
@@ -85,6 +86,23 @@ class SpgBlock final : public Block {
     if (const parallel::ParticleShare* share = s.ownership.split_part(domain_)) {
       phases.seconds[PhaseTimes::exchange] += share->exchange_seconds;
       phases.seconds[PhaseTimes::elements] -= share->exchange_seconds;
+    }
+  }
+
+  // The particles, a vertex each, with the fields of their integration point, the share of
+  // their bonds broken, how they are integrated now and their stable step.
+  void write_state(const State& s, StateSink& sink) const override {
+    const spg::Domain& d = s.spg[domain_];
+    const model::Id part = s.parts[static_cast<std::size_t>(d.part)].id;
+    for (Index i = 0; i < d.count(); ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      const int state = d.fields.debris[ii]     ? 3
+                        : d.kernel.isolated[ii] ? 2
+                        : d.kernel.pinned[ii]   ? 1
+                                                : 0;
+      sink.cell(CellShape::vertex, &d.particles.nodes[ii],
+                {particle_result(d, i), d.fields.pressure[ii], d.fields.temperature[ii], part,
+                 d.kernel.bonds.damage(i), state, d.fields.step[ii]});
     }
   }
 
