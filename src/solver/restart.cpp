@@ -1,8 +1,8 @@
 // The member lists of everything a restart dump holds. A member missing here is a restart that
 // silently differs from the run it continues, so the sizes of the structs are pinned below on the
 // platform CI builds on: adding a member to one of them stops the build until it is listed here
-// (or, if it is deck data, said to be left out). tests/unit/restart_test.cpp checks that a run
-// continued from a dump writes the same bits as one that never stopped.
+// (or, if it is deck data, said to be left out). tests/unit/solver/restart_test.cpp checks that a
+// run continued from a dump writes the same bits as one that never stopped.
 #include "solver/restart.hpp"
 
 #include <array>

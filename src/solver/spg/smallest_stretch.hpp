@@ -15,7 +15,7 @@
 /// [0, sqrt 2] (at r = 1 it meets the middle root, t = -1 - sqrt(2/3) u + ..., which is why u and
 /// not r is the variable). A degree-13 polynomial in u, interpolated at Chebyshev nodes, gives t
 /// within 4.9e-13 over the whole interval, so lambda_min within 4.9e-13 p plus round-off:
-/// tests/unit/spg_stretch_test.cpp holds it against Eigen's iterative solver.
+/// tests/unit/solver/spg/spg_stretch_test.cpp holds it against Eigen's iterative solver.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
