@@ -75,6 +75,11 @@ class Block {
   /// entities from their owners, to process 0 what the output reads or to every process all of
   /// them. Collective.
   virtual void synchronise(State& /*s*/, Gather /*what*/) {}
+  /// The elements it numbers (finite-element blocks): elements are numbered block by block in
+  /// the blocks' order (solids, shells, beams), as ForceReport::controlling_element and the
+  /// outputs name them; element(s, k) names its k-th.
+  [[nodiscard]] virtual Index numbered_elements() const { return 0; }
+  [[nodiscard]] virtual ElementRef element(const State& /*s*/, Index /*k*/) const { return {}; }
   /// What it shows in a d3plot state (state_sink.hpp): its cells, in the blocks' order.
   virtual void write_state(const State& /*s*/, StateSink& /*sink*/) const {}
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out

@@ -1,6 +1,7 @@
 #pragma once
-/// Which element an element index names. Elements are numbered solids first, then shells, then
-/// beams (ForceReport::controlling_element, State::controlling_element).
+/// Which element an element index names. The blocks number their elements in the blocks' order:
+/// solids first, then shells, then beams (Block::numbered_elements;
+/// ForceReport::controlling_element, State::controlling_element).
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -11,6 +12,6 @@ struct ElementRef {
   model::Id id = 0;
   model::Id part = 0;
 };
-ElementRef element_ref(const State& s, Index element);  // fe/element_names.cpp
+ElementRef element_ref(const State& s, Index element);  // fe/element_names.cpp, over s.blocks
 
 }  // namespace mcdyna::solver

@@ -14,6 +14,11 @@ class BeamsBlock final : public Block {
   explicit BeamsBlock(long count) : count_(count) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }
+  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] ElementRef element(const State& s, Index k) const override {
+    const auto i = static_cast<std::size_t>(k);
+    return {"beam", s.beams.ids[i], s.parts[static_cast<std::size_t>(s.beams.part[i])].id};
+  }
 
   // Every process computes the beams whole, as the shells (shell_block.cpp).
   void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {

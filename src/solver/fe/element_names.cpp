@@ -1,4 +1,5 @@
-// What an element index names: solids first, then shells, then beams (block.hpp).
+// What an element index names: the blocks number their elements in the blocks' order (solids,
+// shells, beams; block.hpp).
 #include <fmt/format.h>
 
 #include "solver/block.hpp"
@@ -7,16 +8,12 @@
 namespace mcdyna::solver {
 
 ElementRef element_ref(const State& s, Index e) {
-  if (e < s.solids.count()) {
-    const auto i = static_cast<std::size_t>(e);
-    return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
+  for (const std::unique_ptr<Block>& b : s.blocks) {
+    const Index n = b->numbered_elements();
+    if (e < n) return b->element(s, e);
+    e -= n;
   }
-  if (e >= s.solids.count() + s.shells.count()) {
-    const auto i = static_cast<std::size_t>(e - s.solids.count() - s.shells.count());
-    return {"beam", s.beams.ids[i], s.parts[static_cast<std::size_t>(s.beams.part[i])].id};
-  }
-  const auto i = static_cast<std::size_t>(e - s.solids.count());
-  return {"shell", s.shells.ids[i], s.parts[static_cast<std::size_t>(s.shells.part[i])].id};
+  return {"element", 0, 0};  // past the numbered elements: not reached by the solver's indices
 }
 
 std::string element_name(const State& s, Index e) {

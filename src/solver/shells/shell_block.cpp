@@ -14,6 +14,11 @@ class ShellsBlock final : public Block {
   explicit ShellsBlock(long count) : count_(count) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }
+  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] ElementRef element(const State& s, Index k) const override {
+    const auto i = static_cast<std::size_t>(k);
+    return {"shell", s.shells.ids[i], s.parts[static_cast<std::size_t>(s.shells.part[i])].id};
+  }
 
   // Every process computes the shells whole (and so moves their nodes itself): the same bits
   // for any process count, without a share of the work.

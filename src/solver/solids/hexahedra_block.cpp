@@ -17,6 +17,11 @@ class HexahedraBlock final : public Block {
   explicit HexahedraBlock(long count) : count_(count) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }
+  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] ElementRef element(const State& s, Index k) const override {
+    const auto i = static_cast<std::size_t>(k);
+    return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
+  }
 
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = solid_element_pass(
