@@ -25,10 +25,13 @@ STATE_PARAM = re.compile(r"(?<![\w:])(?:const\s+)?(?:solver::)?State\s*&")
 
 def functions(root, folder):
     """Every function definition under ROOT/FOLDER with its lines and signature (Universal Ctags)."""
-    out = subprocess.run(
-        ["ctags", "-R", "--languages=C++", "--c++-kinds=f", "--fields=+neS",
-         "--output-format=json", "-o", "-", folder],
-        cwd=root, check=True, capture_output=True, text=True).stdout
+    try:
+        out = subprocess.run(
+            ["ctags", "-R", "--languages=C++", "--c++-kinds=f", "--fields=+neS",
+             "--output-format=json", "-o", "-", folder],
+            cwd=root, check=True, capture_output=True, text=True).stdout
+    except FileNotFoundError:
+        sys.exit("code_shape.py needs Universal Ctags: apt-get install universal-ctags")
     for line in out.splitlines():
         tag = json.loads(line)
         if tag.get("kind") != "function" or "end" not in tag:
