@@ -104,6 +104,9 @@ class VtkCells final : public solver::StateSink {
 
   void declare(std::string_view name, std::initializer_list<const char*> components) override {
     if (find(name) != nullptr) return;
+    if (components.size() > kMaxComponents)
+      throw std::logic_error("a block's field has more components than a tuple holds: " +
+                             std::string(name));
     vtkNew<vtkFloatArray> a;
     a->SetName(std::string(name).c_str());
     a->SetNumberOfComponents(components.size() == 0 ? 1 : static_cast<int>(components.size()));
@@ -129,7 +132,7 @@ class VtkCells final : public solver::StateSink {
     if (a == nullptr)
       throw std::logic_error("a block's field was not declared: " + std::string(name));
     pad(a, grid_->GetNumberOfCells() - 1);
-    float t[16];
+    float t[kMaxComponents];
     for (int k = 0; k < a->GetNumberOfComponents(); ++k)
       t[k] = static_cast<float>(values[k]);
     a->InsertNextTypedTuple(t);
@@ -145,6 +148,7 @@ class VtkCells final : public solver::StateSink {
   }
 
  private:
+  static constexpr std::size_t kMaxComponents = 16;  ///< the tuples value() and pad() fill
   static int vtk_type(solver::CellShape shape) {
     switch (shape) {
       case solver::CellShape::hexahedron:
@@ -161,7 +165,7 @@ class VtkCells final : public solver::StateSink {
     return VTK_EMPTY_CELL;
   }
   static void pad(vtkFloatArray* a, vtkIdType cells) {
-    const float zero[16] = {};
+    const float zero[kMaxComponents] = {};
     while (a->GetNumberOfTuples() < cells)
       a->InsertNextTypedTuple(zero);
   }

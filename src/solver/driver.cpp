@@ -361,9 +361,8 @@ class Loop {
   }
 
   // Every process stops and writes when any one is asked to (a signal reaches the processes
-  // of an mpirun at different cycles); process 0 alone knows when an output is due.
-  // What any process saw: a signal, an output due, the sense switches (one process reads the
-  // d3kil file), in one collective per cycle.
+  // of an mpirun at different cycles); process 0 alone knows when an output is due and reads
+  // the d3kil file. One collective per cycle carries all of it.
   void agree(bool& interrupted, bool& output_due, bool& state_due, SenseSwitches& sw) {
     const unsigned flags =
         comm_.bitwise_or((interrupted ? 1U : 0U) | (output_due ? 2U : 0U) | (state_due ? 4U : 0U) |

@@ -18,6 +18,11 @@ struct ElementResult {
   double damage = 0.0;
 };
 
+/// The pressure of a result's stress (compression positive): minus the mean normal stress.
+inline double pressure_of(const ElementResult& r) {
+  return -(r.stress[0] + r.stress[1] + r.stress[2]) / 3.0;
+}
+
 /// Stress of a deviator and pressure as a result (Cauchy stress, von Mises).
 inline void set_stress(ElementResult& r, const std::array<double, 6>& dev, double pressure) {
   r.stress = dev;

@@ -52,9 +52,10 @@ def shape(root, top):
 
     whole_state = []
     lengths = {"src/cli": [], "src/solver": []}
-    total = 0
+    total = solver_fns = 0
     for tag in functions(root, "src"):
         total += 1
+        solver_fns += tag["path"].startswith("src/solver/")
         if STATE_PARAM.search(tag.get("signature", "")):
             whole_state.append(tag)
         for folder, rows in lengths.items():
@@ -63,7 +64,6 @@ def shape(root, top):
                 if name.startswith("__anon"):
                     name = "lambda in " + tag.get("scope", "?").split("::")[-1]
                 rows.append((tag["end"] - tag["line"] + 1, f"{tag['path']}:{tag['line']} {name}"))
-    solver_fns = sum(1 for t in functions(root, "src/solver"))
     solver_state = sum(1 for t in whole_state if t["path"].startswith("src/solver/"))
     print(f"functions taking the whole State: {len(whole_state)} of {total} in src/ "
           f"({solver_state} of the solver's {solver_fns})")

@@ -58,7 +58,7 @@ class BeamsBlock final : public Block {
         if (bm.eroded[i]) continue;
         const ElementResult r = beam_result(s, block, e);
         sink.cell(CellShape::line, bm.nodes[i].data(),
-                  {r, -(r.stress[0] + r.stress[1] + r.stress[2]) / 3.0, bm.temperature[i], part});
+                  {r, pressure_of(r), bm.temperature[i], part});
         sink.value("beam_resultants", beam_resultants(s, block, e).data());
       }
     }

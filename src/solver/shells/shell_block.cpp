@@ -65,9 +65,8 @@ class ShellsBlock final : public Block {
         if (sh.eroded[i]) continue;
         const auto& q = sh.nodes[i];
         const ElementResult mid = shell_result(s, block, e, ShellSurface::all);
-        sink.cell(
-            q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(),
-            {mid, -(mid.stress[0] + mid.stress[1] + mid.stress[2]) / 3.0, sh.temperature[i], part});
+        sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(),
+                  {mid, pressure_of(mid), sh.temperature[i], part});
         sink.value("stress_top", shell_result(s, block, e, ShellSurface::top).stress.data());
         sink.value("stress_bottom", shell_result(s, block, e, ShellSurface::bottom).stress.data());
         sink.value("thickness", &sh.thickness[i]);
