@@ -94,14 +94,15 @@ void write_dump(const std::filesystem::path& path, const std::string& fingerprin
   core::OutArchive prologue(file);
   prologue(version);
   put_section(file, kHeader, [&](core::OutArchive& ar) {
-    std::string layout = solver::dump_layout(), print = fingerprint;
+    std::string layout = solver::dump_layout(state), print = fingerprint;
     double time = state.time;
     long cycle = state.cycle;
     ar(layout, print, time, cycle);
   });
   put_section(file, kResume, [&](core::OutArchive& ar) { solver::save_resume_point(ar, point); });
-  for (std::size_t k = 0; k < solver::kStateSections.size(); ++k)
-    put_section(file, solver::kStateSections[k],
+  const std::vector<std::string> sections = solver::state_sections(state);
+  for (std::size_t k = 0; k < sections.size(); ++k)
+    put_section(file, sections[k],
                 [&](core::OutArchive& ar) { solver::save_state_section(ar, state, k); });
   put_section(file, kOutputs, [&](core::OutArchive& ar) {
     ar(const_cast<io::OutputsResume&>(outputs));  // one member list for both directions
@@ -140,7 +141,7 @@ LoadedDump read_dump(const std::filesystem::path& path, const std::string& finge
       double time = 0.0;
       long cycle = 0;
       h(layout);
-      if (layout != solver::dump_layout())
+      if (layout != solver::dump_layout(state))
         throw core::ArchiveError(
             "written by an mcdyna build whose solver state differs from this one's (restart "
             "with the binary that wrote it)");
@@ -152,8 +153,9 @@ LoadedDump read_dump(const std::filesystem::path& path, const std::string& finge
     });
     get_section(ar, whole, kResume,
                 [&](core::InArchive& r) { solver::load_resume_point(r, d.point); });
-    for (std::size_t k = 0; k < solver::kStateSections.size(); ++k)
-      get_section(ar, whole, solver::kStateSections[k],
+    const std::vector<std::string> sections = solver::state_sections(state);
+    for (std::size_t k = 0; k < sections.size(); ++k)
+      get_section(ar, whole, sections[k],
                   [&](core::InArchive& r) { solver::load_state_section(r, state, k); });
     get_section(ar, whole, kOutputs, [&](core::InArchive& r) { r(d.outputs); });
     get_section(ar, whole, kEnd, [](core::InArchive&) {});

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/binary_archive.hpp"
 #include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
@@ -85,6 +86,29 @@ class Block {
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}
+  /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
+  /// empty when nothing of it changes during a run.
+  [[nodiscard]] virtual std::string dump_name() const { return {}; }
+  /// The sizes of the structs it dumps (dump.hpp), written into the dump's layout line.
+  [[nodiscard]] virtual std::string dump_layout() const { return {}; }
+  /// What of it changes during a run, bit for bit (a block with a dump_name derives from
+  /// DumpedBlock, which gives both from one member list).
+  virtual void save(core::OutArchive& /*ar*/, const State& /*s*/) const {}
+  virtual void load(core::InArchive& /*ar*/, State& /*s*/) {}
+};
+
+/// A block whose dump is one member list for both directions: Derived has
+///   template <class Ar> void dumped(Ar& ar, State& s) const { ar(s.beams); }
+/// (nothing is written to the state or the block when saving).
+template <class Derived>
+class DumpedBlock : public Block {
+ public:
+  void save(core::OutArchive& ar, const State& s) const override {
+    static_cast<const Derived*>(this)->dumped(ar, const_cast<State&>(s));
+  }
+  void load(core::InArchive& ar, State& s) override {
+    static_cast<const Derived*>(this)->dumped(ar, s);
+  }
 };
 
 /// The blocks of a compiled state, in the loop's order (formulations.cpp).

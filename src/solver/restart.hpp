@@ -4,9 +4,12 @@
 /// stopped. What only the deck defines (curves, materials, parts, time controls, body loads) is
 /// not dumped: a restart compiles the same deck again and reads the dump over it (the dump
 /// carries the deck's fingerprint, cli/restart_dump.cpp).
-#include <array>
+///
+/// The dump is made of sections, each checksummed on its own so that a damaged dump says which
+/// part is damaged: the nodes, then one per block that has something changing (Block::save, in
+/// the blocks' order, named by the block), then the clock and the energies.
 #include <string>
-#include <string_view>
+#include <vector>
 
 #include "core/binary_archive.hpp"
 #include "solver/driver.hpp"
@@ -14,19 +17,17 @@
 
 namespace mcdyna::solver {
 
-/// The sections the state's changing part is dumped in, in order (each checksummed on its own,
-/// so a damaged dump says which part is damaged).
-inline constexpr std::array<std::string_view, 8> kStateSections = {
-    "nodes",       "solids",   "SPG domains",      "rigid bodies", "constraints and motions",
-    "rigid walls", "contacts", "time and energies"};
+/// The names of the state's dump sections, in order.
+std::vector<std::string> state_sections(const State& state);
 
-/// Writes / reads section `section` (an index into kStateSections) of the state's changing part.
+/// Writes / reads section `section` (an index into state_sections()) of the state's changing
+/// part.
 void save_state_section(core::OutArchive& ar, const State& state, std::size_t section);
 void load_state_section(core::InArchive& ar, State& state, std::size_t section);
 
 /// The sizes of the dumped structs, as text: a dump written by a build whose structs differ
 /// (a member added or removed) is refused instead of being misread.
-std::string dump_layout();
+std::string dump_layout(const State& state);
 
 /// The time loop's own values at the top of a cycle (driver.hpp ResumePoint).
 void save_resume_point(core::OutArchive& ar, const ResumePoint& point);

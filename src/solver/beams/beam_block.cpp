@@ -1,6 +1,7 @@
 // The deformable beams as one block of the time loop: the element pass and the gather of the
 // end forces and moments.
 #include "solver/beams/beam_elements.hpp"
+#include "solver/beams/beams_dump.hpp"
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
 #include "solver/results.hpp"
@@ -9,8 +10,14 @@ namespace mcdyna::solver {
 
 namespace {
 
-class BeamsBlock final : public Block {
+class BeamsBlock final : public DumpedBlock<BeamsBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "beams"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kBeamsDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.beams);
+  }
   explicit BeamsBlock(long count) : count_(count) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 
+#include <fmt/format.h>
+
 #include "solver/block.hpp"
 #include "solver/contact/contact.hpp"
+#include "solver/contact/interface_dump.hpp"
 #include "solver/parallel/exchange_plan.hpp"
 #include "solver/parallel/owned_gather.hpp"
 
@@ -22,10 +25,31 @@ void unpack_motion(State& s, Index n, const double* in) {
   std::copy_n(in + 3, 3, s.nodes.velocity.col(n).data());
 }
 
-class ContactBlock final : public Block {
+// An interface's block: its dump section holds the interface (contact::Interface), named by its
+// place among the deck's contacts.
+template <class Derived>
+class InterfaceBlock : public DumpedBlock<Derived> {
  public:
-  explicit ContactBlock(std::size_t interface) : interface_(interface) {}
+  explicit InterfaceBlock(std::size_t interface) : interface_(interface) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
+  [[nodiscard]] std::string dump_name() const override {
+    return fmt::format("contact interface {}", interface_ + 1);
+  }
+  [[nodiscard]] std::string dump_layout() const override {
+    return sizes_text(contact::kInterfaceDumpedSizes);
+  }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.contacts[interface_]);
+  }
+
+ protected:
+  std::size_t interface_;
+};
+
+class ContactBlock final : public InterfaceBlock<ContactBlock> {
+ public:
+  using InterfaceBlock::InterfaceBlock;
   void forces(State& s, ForceReport& /*report*/) override {
     contact::Interface& c = s.contacts[interface_];
     if (s.ownership.comm.size() == 1) {
@@ -207,7 +231,6 @@ class ContactBlock final : public Block {
     p.near = std::move(near);
   }
 
-  std::size_t interface_;
   std::vector<Index> segment_nodes_;  ///< deformable, ascending
   std::vector<int> owner_;            ///< the node owners the lists were made for
   parallel::ExchangePlan segment_ghosts_;
@@ -216,10 +239,9 @@ class ContactBlock final : public Block {
 };
 
 // A force transducer: applies nothing, reads the hits the contact blocks before it computed.
-class TransducerBlock final : public Block {
+class TransducerBlock final : public InterfaceBlock<TransducerBlock> {
  public:
-  explicit TransducerBlock(std::size_t interface) : interface_(interface) {}
-  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
+  using InterfaceBlock::InterfaceBlock;
   void forces(State& s, ForceReport& /*report*/) override {
     contact::transducer_pass(s, s.contacts[interface_], exchange_seconds_);
   }
@@ -229,7 +251,6 @@ class TransducerBlock final : public Block {
   }
 
  private:
-  std::size_t interface_;
   double exchange_seconds_ = 0.0;
 };
 

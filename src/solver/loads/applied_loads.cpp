@@ -7,6 +7,7 @@
 // Every process applies every load; over several processes the loaded nodes are moved by every
 // process (mark_replicated), and a rigid body sums its nodes on their owners.
 #include "solver/block.hpp"
+#include "solver/loads/loads_dump.hpp"
 
 namespace mcdyna::solver {
 
@@ -63,8 +64,14 @@ void apply_pressure_loads(State& s) {
   }
 }
 
-class AppliedLoadsBlock final : public Block {
+class AppliedLoadsBlock final : public DumpedBlock<AppliedLoadsBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "applied loads"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kLoadDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.point_loads, s.pressure_loads, s.load_work);
+  }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
   void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
     for (const PointLoadState& l : s.point_loads)

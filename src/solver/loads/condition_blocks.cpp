@@ -2,21 +2,31 @@
 // body loads as blocks of the time loop (loads.hpp).
 #include "solver/block.hpp"
 #include "solver/loads/loads.hpp"
+#include "solver/loads/loads_dump.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
-// A condition applied by one of loads.hpp's functions in the constraint phase.
-class ConditionBlock final : public Block {
+// A condition applied by one of loads.hpp's functions in the constraint phase; its state is
+// the member `Held` of State (its reactions, forces and work).
+template <void (*Apply)(State&, const StepTimes&), auto Held>
+class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held>> {
  public:
-  using Apply = void (*)(State&, const StepTimes&);
-  explicit ConditionBlock(Apply apply) : apply_(apply) {}
+  explicit ConditionBlock(std::string name) : name_(std::move(name)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
-  void constrain(State& s, const StepTimes& t) override { apply_(s, t); }
+  void constrain(State& s, const StepTimes& t) override { Apply(s, t); }
+  [[nodiscard]] std::string dump_name() const override { return name_; }
+  [[nodiscard]] std::string dump_layout() const override {
+    return sizes_text(kConditionDumpedSizes);
+  }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.*Held);
+  }
 
  private:
-  Apply apply_;
+  std::string name_;
 };
 
 class BodyLoadsBlock final : public Block {
@@ -29,16 +39,22 @@ class BodyLoadsBlock final : public Block {
 
 void add_nodal_constraint_blocks(State& s, Blocks& blocks) {
   if (!s.constraints.nodes.empty())
-    blocks.push_back(std::make_unique<ConditionBlock>(apply_nodal_constraints));
+    blocks.push_back(
+        std::make_unique<ConditionBlock<apply_nodal_constraints, &State::constraints>>(
+            "nodal constraints"));
 }
 
 void add_nodal_motion_blocks(State& s, Blocks& blocks) {
   if (!s.nodal_motions.empty())
-    blocks.push_back(std::make_unique<ConditionBlock>(apply_nodal_motions));
+    blocks.push_back(
+        std::make_unique<ConditionBlock<apply_nodal_motions, &State::nodal_motions>>(
+            "prescribed nodal motions"));
 }
 
 void add_rigid_wall_blocks(State& s, Blocks& blocks) {
-  if (!s.rigid_walls.empty()) blocks.push_back(std::make_unique<ConditionBlock>(apply_rigid_walls));
+  if (!s.rigid_walls.empty())
+    blocks.push_back(std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls>>(
+        "rigid walls"));
 }
 
 void add_body_load_blocks(State& s, Blocks& blocks) {

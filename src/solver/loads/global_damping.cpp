@@ -5,6 +5,7 @@
 // out of the structure, is glstat's damping energy.
 #include "core/exact_sum.hpp"
 #include "solver/block.hpp"
+#include "solver/dump.hpp"
 
 namespace mcdyna::solver {
 
@@ -49,8 +50,14 @@ void apply_global_damping(State& s, const GlobalDampingState& g) {
   s.damping_work += s.ownership.comm.sum(std::vector<core::ExactSum>{taken})[0];
 }
 
-class GlobalDampingBlock final : public Block {
+class GlobalDampingBlock final : public DumpedBlock<GlobalDampingBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "global damping"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(std::array<std::size_t, 0>{}); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.damping_work);
+  }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
   void forces(State& s, ForceReport& /*report*/) override {
     for (const GlobalDampingState& g : s.damping)

@@ -18,6 +18,7 @@
 #include "model/conditions.hpp"
 #include "solver/block.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
+#include "solver/rigid/rigid_dump.hpp"
 
 namespace mcdyna::solver {
 
@@ -136,8 +137,14 @@ void joint_stiffness(State& s, JointStiffnessState& j) {
   a.load_moment -= global;
 }
 
-class JointsBlock final : public Block {
+class JointsBlock final : public DumpedBlock<JointsBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "joints"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kJointsDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.joints, s.joint_stiffnesses);
+  }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
   void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
     for (const JointState& j : s.joints)

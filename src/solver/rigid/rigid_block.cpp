@@ -5,14 +5,21 @@
 // of its owned nodes' forces over the processes, and places all of the body's nodes.
 #include "solver/block.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
+#include "solver/rigid/rigid_dump.hpp"
 #include "solver/rigid/welds.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
-class RigidBodiesBlock final : public Block {
+class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "rigid bodies"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kRigidDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.rigid_bodies, s.welds);
+  }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
   Index advance_velocities(State& s, const StepTimes& t) override {
     const Index bad = advance_rigid_bodies(s, t);

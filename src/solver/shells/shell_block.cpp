@@ -4,13 +4,20 @@
 #include "solver/fe/added_mass.hpp"
 #include "solver/results.hpp"
 #include "solver/shells/shell_elements.hpp"
+#include "solver/shells/shells_dump.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
-class ShellsBlock final : public Block {
+class ShellsBlock final : public DumpedBlock<ShellsBlock> {
  public:
+  [[nodiscard]] std::string dump_name() const override { return "shells"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kShellsDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.shells);
+  }
   explicit ShellsBlock(long count) : count_(count) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }

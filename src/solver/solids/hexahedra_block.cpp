@@ -7,14 +7,21 @@
 #include "solver/fe/added_mass.hpp"
 #include "solver/results.hpp"
 #include "solver/solids/solid_elements.hpp"
+#include "solver/solids/solids_dump.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
-class HexahedraBlock final : public Block {
+class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
  public:
   explicit HexahedraBlock(long count) : count_(count) {}
+  [[nodiscard]] std::string dump_name() const override { return "hexahedra"; }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kSolidsDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.solids);
+  }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long elements() const override { return count_; }
   [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }

@@ -6,6 +6,7 @@
 #include "solver/block.hpp"
 #include "solver/results.hpp"
 #include "solver/spg/distribution.hpp"
+#include "solver/spg/domain_dump.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver {
@@ -20,9 +21,16 @@ std::string particle_name(const State& s, std::size_t domain, Index particle) {
 
 namespace {
 
-class SpgBlock final : public Block {
+class SpgBlock final : public DumpedBlock<SpgBlock> {
  public:
-  SpgBlock(std::size_t domain, long count) : domain_(domain), count_(count) {}
+  SpgBlock(std::size_t domain, long count, model::Id part)
+      : domain_(domain), count_(count), part_(part) {}
+  [[nodiscard]] std::string dump_name() const override { return fmt::format("SPG part {}", part_); }
+  [[nodiscard]] std::string dump_layout() const override { return sizes_text(spg::kDomainDumpedSizes); }
+  template <class Ar>
+  void dumped(Ar& ar, State& s) const {
+    ar(s.spg[domain_]);
+  }
   // Charged to "elements" as a whole; split_times moves its finer phases out at the end.
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
   [[nodiscard]] long particles() const override { return count_; }
@@ -109,13 +117,15 @@ class SpgBlock final : public Block {
  private:
   std::size_t domain_;
   long count_;
+  model::Id part_;
 };
 
 }  // namespace
 
 void add_spg_blocks(State& s, Blocks& blocks) {
   for (std::size_t k = 0; k < s.spg.size(); ++k)
-    blocks.push_back(std::make_unique<SpgBlock>(k, s.spg[k].count()));
+    blocks.push_back(std::make_unique<SpgBlock>(
+        k, s.spg[k].count(), s.parts[static_cast<std::size_t>(s.spg[k].part)].id));
 }
 
 }  // namespace mcdyna::solver

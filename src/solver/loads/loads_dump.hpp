@@ -1,0 +1,45 @@
+#pragma once
+/// The conditions' and loads' restart dumps: the member lists of what changes during a run
+/// (dump.hpp).
+#include "solver/dump.hpp"
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+template <class Ar>
+void fields(Ar& ar, NodalConstraints& c) {
+  ar(c.nodes, c.masks, c.birth, c.death, c.reaction);
+}
+
+template <class Ar>
+void fields(Ar& ar, NodalMotion& m) {
+  ar(m.id, m.nodes, m.axis, m.kind, m.curve, m.scale, m.birth, m.death, m.node_force, m.node_work);
+}
+
+template <class Ar>
+void fields(Ar& ar, RigidWallState& w) {
+  ar(w.id, w.point, w.normal, w.finite, w.edge_l, w.edge_m, w.length_l, w.length_m, w.friction,
+     w.birth, w.death, w.moving, w.mass, w.velocity, w.displacement, w.nodes, w.force, w.energy);
+}
+
+template <class Ar>
+void fields(Ar& ar, PointLoadState& p) {
+  ar(p.nodes, p.body, p.axis, p.moment, p.curve, p.scale, p.last);
+}
+
+template <class Ar>
+void fields(Ar& ar, PressureLoadState& p) {
+  ar(p.segments, p.curve, p.scale, p.arrival, p.last);
+}
+
+inline constexpr auto kConditionDumpedSizes =
+    sizes_of<NodalConstraints, NodalMotion, RigidWallState>();
+static_assert(!kSizesPinned ||
+                  kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 128, 240},
+              "NodalConstraints, NodalMotion or RigidWallState changed: list the new member in "
+              "fields() above");
+inline constexpr auto kLoadDumpedSizes = sizes_of<PointLoadState, PressureLoadState>();
+static_assert(!kSizesPinned || kLoadDumpedSizes == decltype(kLoadDumpedSizes){56, 64},
+              "PointLoadState or PressureLoadState changed: list the new member in fields() above");
+
+}  // namespace mcdyna::solver

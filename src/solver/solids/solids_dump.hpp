@@ -1,0 +1,24 @@
+#pragma once
+/// The hexahedra's restart dump: the member lists of what changes during a run (dump.hpp).
+#include "solver/fe/fe_dump.hpp"
+
+namespace mcdyna::solver {
+
+template <class Ar>
+void fields(Ar& ar, SolidBlock& b) {
+  ar(b.part, b.begin, b.end, b.point_begin, b.points_per_element, b.formulation, b.material,
+     b.hourglass, b.bulk_viscosity, b.objective);
+}
+
+template <class Ar>
+void fields(Ar& ar, Solids& s) {
+  ar(s.ids, s.nodes, s.part, s.initial_volume, s.volume, s.mass, s.pressure, s.eos_energy,
+     s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force, s.viscosity,
+     s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
+}
+
+inline constexpr auto kSolidsDumpedSizes = sizes_of<Solids, SolidBlock>();
+static_assert(!kSizesPinned || kSolidsDumpedSizes == decltype(kSolidsDumpedSizes){512, 72},
+              "Solids or SolidBlock changed: list the new member in fields() above");
+
+}  // namespace mcdyna::solver
