@@ -16,6 +16,7 @@
 #include "core/binary_archive.hpp"
 #include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
+#include "solver/energy.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 #include "solver/state_sink.hpp"
@@ -86,6 +87,16 @@ class Block {
   /// At the end of a run: moves the seconds of its finer phases (SPG neighbour search, ...) out
   /// of the phase it was charged to.
   virtual void split_times(const State& /*s*/, PhaseTimes& /*phases*/) const {}
+  /// What it adds to the global energies, momentum and mass at t^n (glstat, energy.hpp), from
+  /// `previous` = v^{n-1/2} and the state's v^{n+1/2}. The blocks add in their order, each term
+  /// a plain sum; the nodes' own kinetic energy and mass come after.
+  virtual void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
+                            EnergySummary& /*e*/) const {}
+  /// What it adds to its parts' energies and momenta (matsum; `parts` in deck order).
+  virtual void add_part_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
+                                 std::vector<PartSummary>& /*parts*/) const {}
+  /// Adds to `added` the mass DT2MS mass scaling gave it beyond the nodes' (SPG particles).
+  virtual void add_added_mass(const State& /*s*/, double& /*added*/) const {}
   /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
   /// empty when nothing of it changes during a run.
   [[nodiscard]] virtual std::string dump_name() const { return {}; }

@@ -34,6 +34,33 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
         nodes[static_cast<std::size_t>(n)] = 1;
   }
 
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    const Beams& bm = s.beams;
+    for (std::size_t i = 0; i < bm.ids.size(); ++i)
+      (bm.eroded[i] ? e.eroded_internal : e.internal) += bm.internal_energy[i];
+  }
+
+  // Kinetic energy and momentum from each element's lumped mass and end inertia.
+  void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
+                         std::vector<PartSummary>& parts) const override {
+    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+    const Beams& bm = s.beams;
+    const Nodes& nd = s.nodes;
+    for (std::size_t e = 0; e < bm.ids.size(); ++e) {
+      PartSummary& ps = parts[static_cast<std::size_t>(bm.part[e])];
+      (bm.eroded[e] ? ps.eroded_internal : ps.internal) += bm.internal_energy[e];
+      ps.added_mass += bm.added_mass[e];
+      const double m = 0.5 * bm.mass[e], inertia = bm.end_inertia[e];
+      for (const Index n : bm.nodes[e]) {
+        ps.kinetic +=
+            0.5 * m * previous.col(n).dot(velocity.col(n)) +
+            0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
+        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+      }
+    }
+  }
+
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = beam_element_pass(
         s, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt, s.time});

@@ -42,6 +42,10 @@ class InterfaceBlock : public DumpedBlock<Derived> {
   void dumped(Ar& ar, State& s) const {
     ar(s.contacts[interface_]);
   }
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    e.sliding += s.contacts[interface_].energy;
+  }
 
  protected:
   std::size_t interface_;

@@ -82,6 +82,10 @@ class AppliedLoadsBlock final : public DumpedBlock<AppliedLoadsBlock> {
         for (const Index n : seg)
           nodes[static_cast<std::size_t>(n)] = 1;
   }
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    e.external_work += s.load_work;
+  }
   void forces(State& s, ForceReport& /*report*/) override {
     apply_point_loads(s);
     apply_pressure_loads(s);

@@ -8,14 +8,30 @@ namespace mcdyna::solver {
 
 namespace {
 
+using AddEnergies = void (*)(const State&, EnergySummary&);
+
+void motions_work(const State& s, EnergySummary& e) {
+  for (const NodalMotion& m : s.nodal_motions)
+    e.external_work += m.work();
+}
+
+void walls_energy(const State& s, EnergySummary& e) {
+  for (const RigidWallState& w : s.rigid_walls)
+    e.stonewall += w.energy;
+}
+
 // A condition applied by one of loads.hpp's functions in the constraint phase; its state is
-// the member `Held` of State (its reactions, forces and work).
-template <void (*Apply)(State&, const StepTimes&), auto Held>
-class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held>> {
+// the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
+template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr>
+class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo>> {
  public:
   explicit ConditionBlock(std::string name) : name_(std::move(name)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
   void constrain(State& s, const StepTimes& t) override { Apply(s, t); }
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    if constexpr (AddTo != nullptr) AddTo(s, e);
+  }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {
     return sizes_text(kConditionDumpedSizes);
@@ -39,22 +55,22 @@ class BodyLoadsBlock final : public Block {
 
 void add_nodal_constraint_blocks(State& s, Blocks& blocks) {
   if (!s.constraints.nodes.empty())
-    blocks.push_back(
-        std::make_unique<ConditionBlock<apply_nodal_constraints, &State::constraints>>(
-            "nodal constraints"));
+    blocks.push_back(std::make_unique<ConditionBlock<apply_nodal_constraints, &State::constraints>>(
+        "nodal constraints"));
 }
 
 void add_nodal_motion_blocks(State& s, Blocks& blocks) {
   if (!s.nodal_motions.empty())
     blocks.push_back(
-        std::make_unique<ConditionBlock<apply_nodal_motions, &State::nodal_motions>>(
+        std::make_unique<ConditionBlock<apply_nodal_motions, &State::nodal_motions, motions_work>>(
             "prescribed nodal motions"));
 }
 
 void add_rigid_wall_blocks(State& s, Blocks& blocks) {
   if (!s.rigid_walls.empty())
-    blocks.push_back(std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls>>(
-        "rigid walls"));
+    blocks.push_back(
+        std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls, walls_energy>>(
+            "rigid walls"));
 }
 
 void add_body_load_blocks(State& s, Blocks& blocks) {

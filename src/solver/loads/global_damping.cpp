@@ -53,12 +53,18 @@ void apply_global_damping(State& s, const GlobalDampingState& g) {
 class GlobalDampingBlock final : public DumpedBlock<GlobalDampingBlock> {
  public:
   [[nodiscard]] std::string dump_name() const override { return "global damping"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(std::array<std::size_t, 0>{}); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return sizes_text(std::array<std::size_t, 0>{});
+  }
   template <class Ar>
   void dumped(Ar& ar, State& s) const {
     ar(s.damping_work);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    e.damping += s.damping_work;
+  }
   void forces(State& s, ForceReport& /*report*/) override {
     for (const GlobalDampingState& g : s.damping)
       apply_global_damping(s, g);

@@ -151,6 +151,13 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
       for (int k = 0; k < 2 * j.pairs; ++k)
         nodes[static_cast<std::size_t>(j.nodes[static_cast<std::size_t>(k)])] = 1;
   }
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    for (const JointState& j : s.joints)
+      e.internal += j.energy;
+    for (const JointStiffnessState& j : s.joint_stiffnesses)
+      e.internal += j.work;
+  }
   void forces(State& s, ForceReport& /*report*/) override {
     for (JointState& j : s.joints)
       joint_forces(s, j);

@@ -12,6 +12,11 @@ namespace mcdyna::solver {
 
 namespace {
 
+double rigid_kinetic(const RigidBody& b) {
+  return 0.5 * b.mass * b.previous_velocity.dot(b.velocity) +
+         0.5 * b.previous_omega.dot(b.inertia() * b.omega);
+}
+
 class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
  public:
   [[nodiscard]] std::string dump_name() const override { return "rigid bodies"; }
@@ -27,6 +32,30 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
     return bad;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
+
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    for (const RigidBody& b : s.rigid_bodies) {
+      if (b.released) continue;  // a failed weld: its nodes count as nodes
+      e.kinetic += rigid_kinetic(b);
+      e.external_work += b.constraint_work;
+      e.momentum += b.mass * 0.5 * (b.velocity + b.previous_velocity);
+      e.mass += b.mass;
+    }
+  }
+
+  void add_part_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                         std::vector<PartSummary>& parts) const override {
+    for (std::size_t p = 0; p < s.parts.size(); ++p) {
+      const Index b = s.parts[p].rigid_body;
+      if (b < 0) continue;
+      const RigidBody& body = s.rigid_bodies[static_cast<std::size_t>(b)];
+      const Vec3 v = 0.5 * (body.velocity + body.previous_velocity);
+      parts[p].kinetic = rigid_kinetic(body);
+      parts[p].momentum = body.mass * v;
+      parts[p].rigid_velocity = v;
+    }
+  }
 
   // The rigid parts' elements, drawn: solids, then shells, with no stress.
   void write_state(const State& s, StateSink& sink) const override {

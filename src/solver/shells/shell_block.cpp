@@ -35,6 +35,40 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
         nodes[static_cast<std::size_t>(n)] = 1;
   }
 
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    const Shells& sh = s.shells;
+    for (std::size_t i = 0; i < sh.ids.size(); ++i) {
+      (sh.eroded[i] ? e.eroded_internal : e.internal) += sh.internal_energy[i];
+      (sh.eroded[i] ? e.eroded_hourglass : e.hourglass) += sh.hourglass_energy[i];
+    }
+  }
+
+  // Kinetic energy and momentum from each element's lumped mass and corner inertia, so shared
+  // nodes split between parts.
+  void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
+                         std::vector<PartSummary>& parts) const override {
+    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+    const Shells& sh = s.shells;
+    const Nodes& nd = s.nodes;
+    for (std::size_t e = 0; e < sh.ids.size(); ++e) {
+      PartSummary& ps = parts[static_cast<std::size_t>(sh.part[e])];
+      (sh.eroded[e] ? ps.eroded_internal : ps.internal) += sh.internal_energy[e];
+      ps.hourglass += sh.hourglass_energy[e];
+      ps.added_mass += sh.added_mass[e];
+      const bool triangle = sh.nodes[e][3] == sh.nodes[e][2];
+      const double m = sh.mass[e] / (triangle ? 3.0 : 4.0);
+      const double inertia = sh.corner_inertia[e];
+      for (int c = 0; c < (triangle ? 3 : 4); ++c) {
+        const Index n = sh.nodes[e][static_cast<std::size_t>(c)];
+        ps.kinetic +=
+            0.5 * m * previous.col(n).dot(velocity.col(n)) +
+            0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
+        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+      }
+    }
+  }
+
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = shell_element_pass(
         s, ShellPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});

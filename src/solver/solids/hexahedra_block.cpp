@@ -30,6 +30,34 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
     return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
   }
 
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    const Solids& so = s.solids;
+    for (std::size_t i = 0; i < so.ids.size(); ++i) {
+      (so.eroded[i] ? e.eroded_internal : e.internal) += so.internal_energy[i];
+      (so.eroded[i] ? e.eroded_hourglass : e.hourglass) += so.hourglass_energy[i];
+    }
+  }
+
+  // Kinetic energy and momentum from each element's lumped mass (1/8 per corner), so shared
+  // nodes split between parts.
+  void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
+                         std::vector<PartSummary>& parts) const override {
+    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+    const Solids& so = s.solids;
+    for (std::size_t e = 0; e < so.ids.size(); ++e) {
+      PartSummary& ps = parts[static_cast<std::size_t>(so.part[e])];
+      (so.eroded[e] ? ps.eroded_internal : ps.internal) += so.internal_energy[e];
+      ps.hourglass += so.hourglass_energy[e];
+      ps.added_mass += so.added_mass[e];
+      const double m = so.mass[e] / 8.0;
+      for (const Index n : so.nodes[e]) {
+        ps.kinetic += 0.5 * m * previous.col(n).dot(velocity.col(n));
+        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
+      }
+    }
+  }
+
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = solid_element_pass(
         s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});

@@ -26,7 +26,9 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
   SpgBlock(std::size_t domain, long count, model::Id part)
       : domain_(domain), count_(count), part_(part) {}
   [[nodiscard]] std::string dump_name() const override { return fmt::format("SPG part {}", part_); }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(spg::kDomainDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return sizes_text(spg::kDomainDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& s) const {
     ar(s.spg[domain_]);
@@ -38,6 +40,47 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
   void initialise(State& s) override {
     spg::Domain& d = s.spg[domain_];
     if (d.diagnostics.renewals == 0) spg::initialise(s, d);
+  }
+
+  // MC-SPG particles count with their unsmoothed velocity and mass (Eq. 13).
+  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+                    EnergySummary& e) const override {
+    const spg::Domain& d = s.spg[domain_];
+    for (std::size_t i = 0; i < d.fields.internal_energy.size(); ++i)
+      e.internal += d.fields.internal_energy[i];
+    e.damping += d.fields.damping_energy;
+    for (const double w : d.fields.mode_energy)
+      e.hourglass += w;
+    const spg::SmoothedKinetic k = spg::smoothed_kinetic(s, d);
+    e.kinetic += k.kinetic;
+    e.momentum += k.momentum;
+    e.mass += k.mass;
+  }
+
+  void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
+                         std::vector<PartSummary>& parts) const override {
+    const spg::Domain& d = s.spg[domain_];
+    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
+    PartSummary& ps = parts[static_cast<std::size_t>(d.part)];
+    for (Index i = 0; i < d.count(); ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      ps.internal += d.fields.internal_energy[ii];
+      ps.added_mass += d.particles.added_mass[ii];
+      const Index n = d.particles.nodes[ii];
+      const bool mc = s.nodes.smoothed[static_cast<std::size_t>(n)] == 1;
+      const Vec3 before = mc ? Vec3(d.fields.unsmoothed_previous.col(i)) : Vec3(previous.col(n));
+      const Vec3 after = mc ? Vec3(d.fields.unsmoothed.col(i)) : Vec3(velocity.col(n));
+      ps.kinetic += 0.5 * d.particles.mass[ii] * before.dot(after);
+      ps.momentum += 0.5 * d.particles.mass[ii] * (before + after);
+    }
+    ps.internal += d.fields.damping_energy;
+    for (const double w : d.fields.mode_energy)
+      ps.hourglass += w;
+  }
+
+  void add_added_mass(const State& s, double& added) const override {
+    for (const double a : s.spg[domain_].particles.added_mass)
+      added += a;
   }
 
   void forces(State& s, ForceReport& r) override {
