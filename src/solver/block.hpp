@@ -109,21 +109,20 @@ class Block {
 };
 
 /// A block whose dump is one member list for both directions: Derived has
-///   template <class Ar> void dumped(Ar& ar, State& s) const { ar(s.beams); }
-/// (nothing is written to the state or the block when saving).
+///   template <class Ar> void dumped(Ar& ar, State& s) { ar(s.beams, my_state_); }
+/// (an OutArchive writes nothing to the state or the block).
 template <class Derived>
 class DumpedBlock : public Block {
  public:
   void save(core::OutArchive& ar, const State& s) const override {
-    static_cast<const Derived*>(this)->dumped(ar, const_cast<State&>(s));
+    const_cast<Derived*>(static_cast<const Derived*>(this))->dumped(ar, const_cast<State&>(s));
   }
-  void load(core::InArchive& ar, State& s) override {
-    static_cast<const Derived*>(this)->dumped(ar, s);
-  }
+  void load(core::InArchive& ar, State& s) override { static_cast<Derived*>(this)->dumped(ar, s); }
 };
 
-/// The blocks of a compiled state, in the loop's order (formulations.cpp).
-Blocks make_blocks(State& s);
+/// The blocks of a compiled state, in the loop's order (formulations.cpp): for each registry line,
+/// the blocks its compile pass made (`compiled`, by line), then those add_blocks makes.
+Blocks make_blocks(State& s, std::vector<Blocks> compiled);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
 void add_hexahedra_blocks(State& s, Blocks& blocks);         // solids/hexahedra_block.cpp
@@ -140,6 +139,9 @@ void add_applied_load_blocks(State& s, Blocks& blocks);      // loads/applied_lo
 void add_global_damping_blocks(State& s, Blocks& blocks);    // loads/global_damping.cpp
 void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
 void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
+
+/// The number of block `b`'s first element: the elements the blocks before it number.
+Index first_element(const State& s, const Block& b);  // fe/element_names.cpp
 
 /// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
 std::string element_name(const State& s, Index element);

@@ -188,8 +188,10 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::check_accuracy_control(m, diags);
   detail::compile_nodes_and_parts(m, *s);
   const std::vector<Formulation>& lines = formulations();
+  std::vector<Blocks> compiled(lines.size());
   for (const std::size_t k : compile_order(lines)) {
     if (lines[k].compile != nullptr) lines[k].compile(m, *s, diags);
+    if (lines[k].compile_blocks != nullptr) lines[k].compile_blocks(m, *s, compiled[k], diags);
     if (lines[k].stop_on_errors && diags.error_count() > errors) return nullptr;
   }
 
@@ -218,7 +220,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
   detail::warn_free_corner_elements(m, *s, diags);
   if (diags.error_count() > errors) return nullptr;
-  s->blocks = make_blocks(*s);
+  s->blocks = make_blocks(*s, std::move(compiled));
   return s;
 }
 

@@ -80,10 +80,15 @@ State::~State() = default;
 State::State(State&&) noexcept = default;
 State& State::operator=(State&&) noexcept = default;
 
-Blocks make_blocks(State& s) {
+Blocks make_blocks(State& s, std::vector<Blocks> compiled) {
+  const std::vector<Formulation>& lines = formulations();
+  compiled.resize(lines.size());
   Blocks blocks;
-  for (const Formulation& f : formulations())
-    if (f.add_blocks != nullptr) f.add_blocks(s, blocks);
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    for (auto& b : compiled[k])
+      blocks.push_back(std::move(b));
+    if (lines[k].add_blocks != nullptr) lines[k].add_blocks(s, blocks);
+  }
   return blocks;
 }
 

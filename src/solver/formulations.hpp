@@ -15,16 +15,21 @@ namespace mcdyna::solver {
 
 using CompilePass = void (*)(const model::ModelDatabase&, State&, core::Diagnostics&);
 using AddBlocks = void (*)(State&, Blocks&);
+/// A pass that makes blocks owning their data (design.md §7), into the line's own list.
+using CompileBlocks = void (*)(const model::ModelDatabase&, State&, Blocks&, core::Diagnostics&);
 
 struct Formulation {
   const char* name = "";
-  /// nullptr: compiled by the pass of the line it names in `after` (the same keywords)
+  /// nullptr: compiled by the pass of the line it names in `after` (the same keywords), or by
+  /// compile_blocks
   CompilePass compile = nullptr;
   AddBlocks add_blocks = nullptr;  ///< nullptr: no block of its own (initial conditions)
   std::vector<const char*> after;  ///< lines whose compiled data its pass reads
   /// The passes after it read the elements' and rigid bodies' arrays whole: compile() stops at
   /// the errors reported so far.
   bool stop_on_errors = false;
+  /// A formulation whose blocks own their data: its pass makes them (add_blocks nullptr).
+  CompileBlocks compile_blocks = nullptr;
 };
 
 /// The registry (formulations.cpp).

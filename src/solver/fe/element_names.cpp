@@ -16,6 +16,15 @@ ElementRef element_ref(const State& s, Index e) {
   return {"element", 0, 0};  // past the numbered elements: not reached by the solver's indices
 }
 
+Index first_element(const State& s, const Block& b) {
+  Index first = 0;
+  for (const std::unique_ptr<Block>& other : s.blocks) {
+    if (other.get() == &b) break;
+    first += other->numbered_elements();
+  }
+  return first;
+}
+
 std::string element_name(const State& s, Index e) {
   const ElementRef r = element_ref(s, e);
   return fmt::format("{} element {} (part {})", r.kind, r.id, r.part);
