@@ -26,6 +26,12 @@ const char* material_name(model::MaterialKind k) {
       return "NULL";
     case model::MaterialKind::spotweld:
       return "SPOTWELD";
+    case model::MaterialKind::spring_elastic:
+      return "SPRING_ELASTIC";
+    case model::MaterialKind::damper_viscous:
+      return "DAMPER_VISCOUS";
+    case model::MaterialKind::spring_nonlinear_elastic:
+      return "SPRING_NONLINEAR_ELASTIC";
   }
   return "?";
 }
@@ -83,6 +89,8 @@ std::string section_label(const model::ModelDatabase& m, model::Id id) {
       return fmt::format("{} shell ELFORM {}", id, s->element_formulation);
     case model::SectionKind::beam:
       return fmt::format("{} beam ELFORM {}", id, s->element_formulation);
+    case model::SectionKind::discrete:
+      return fmt::format("{} discrete", id);
   }
   return "?";
 }
@@ -136,6 +144,10 @@ ModelCounts count_model(const model::ModelDatabase& m) {
     const auto p = m.index.parts.find(e.part);
     if (p != model::IdIndex::kNone) ++c.elements_per_part[static_cast<std::size_t>(p)];
   }
+  for (const model::DiscreteElement& e : m.discretes) {
+    const auto p = m.index.parts.find(e.part);
+    if (p != model::IdIndex::kNone) ++c.elements_per_part[static_cast<std::size_t>(p)];
+  }
   return c;
 }
 
@@ -149,6 +161,7 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
   fmt::print(out, "  solid elements   {}\n", m.solids.size());
   fmt::print(out, "  shell elements   {}\n", m.shells.size());
   if (!m.beams.empty()) fmt::print(out, "  beam elements    {}\n", m.beams.size());
+  if (!m.discretes.empty()) fmt::print(out, "  discrete elements {}\n", m.discretes.size());
   fmt::print(out, "  SPG particles    {}\n", counts.spg_particles);
   fmt::print(out, "  parameters       {}\n", deck.parameters.size());
   if (!m.parts.empty()) {

@@ -78,6 +78,12 @@ void check_parts(const ModelDatabase& m, core::Diagnostics& diags) {
       need(ix.curves, mat.piecewise_linear.strain_rate_curve, mat.loc, "curve (LCSR)",
            fmt::format("material {}", mat.id), diags, true);
     }
+    if (mat.kind == MaterialKind::spring_nonlinear_elastic) {
+      need(ix.curves, mat.discrete.force_curve, mat.discrete.force_curve_loc, "curve (LCD)",
+           fmt::format("material {}", mat.id), diags);
+      need(ix.curves, mat.discrete.rate_curve, mat.discrete.rate_curve_loc, "curve (LCR)",
+           fmt::format("material {}", mat.id), diags, true);
+    }
     if (mat.kind == MaterialKind::rigid && std::abs(mat.rigid.constraint_option) == 2) {
       need(ix.nodes, mat.rigid.constraint_node, mat.loc, "node (SPCNID)",
            fmt::format("material {}", mat.id), diags, true);
@@ -401,6 +407,7 @@ void check_references(const ModelDatabase& m, core::Diagnostics& diags) {
   if (!m.solids.empty()) check_elements(m.solids, m, "solid element", diags);
   if (!m.shells.empty()) check_elements(m.shells, m, "shell element", diags);
   if (!m.beams.empty()) check_beams(m, diags);
+  if (!m.discretes.empty()) check_elements(m.discretes, m, "discrete element", diags);
   check_sets(m, diags);
   check_conditions(m, diags);
   check_joins(m, diags);

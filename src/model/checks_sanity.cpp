@@ -11,7 +11,7 @@ namespace mcdyna::model::detail {
 namespace {
 
 struct PartUse {
-  std::size_t solids = 0, shells = 0, beams = 0;
+  std::size_t solids = 0, shells = 0, beams = 0, discretes = 0;
 };
 
 // Output intervals far below ENDTIM ask for more outputs than any run can use; they are written
@@ -158,14 +158,46 @@ void check_deformable_beam(const Part& p, const Section& s, const Material& mat,
     diags.error(b.formulation_loc, "part {}: NSM < 0 in section {}", p.id, s.id);
 }
 
+bool is_discrete_material(MaterialKind k) {
+  return k == MaterialKind::spring_elastic || k == MaterialKind::damper_viscous ||
+         k == MaterialKind::spring_nonlinear_elastic;
+}
+
+// Discrete elements take a discrete section and a spring or damper material, and nothing else
+// does. Returns false when the part is a discrete one (the other checks are not for it).
+bool check_discrete_part(const Part& p, const PartUse& use, const Section& s, const Material& mat,
+                         core::Diagnostics& diags) {
+  const bool section = s.kind == SectionKind::discrete, material = is_discrete_material(mat.kind);
+  const std::size_t others = use.solids + use.shells + use.beams;
+  if (use.discretes > 0 && !section)
+    diags.error(p.section_loc,
+                "part {} has discrete elements but section {} is not a *SECTION_DISCRETE", p.id,
+                s.id);
+  if (others > 0 && section)
+    diags.error(p.section_loc,
+                "part {} has solid, shell or beam elements but section {} is a *SECTION_DISCRETE",
+                p.id, s.id);
+  if (use.discretes > 0 && !material)
+    diags.error(p.material_loc,
+                "part {} has discrete elements: its material {} must be a spring or damper "
+                "(*MAT_SPRING_ELASTIC, *MAT_DAMPER_VISCOUS, *MAT_SPRING_NONLINEAR_ELASTIC)",
+                p.id, mat.id);
+  if (others > 0 && material)
+    diags.error(p.material_loc,
+                "part {}: material {} is for discrete elements (springs and dampers) only", p.id,
+                mat.id);
+  return !(section || material || use.discretes > 0);
+}
+
 void check_part(const ModelDatabase& m, const Part& p, const PartUse& use,
                 core::Diagnostics& diags) {
   const Section* s = m.section(p.section);
   const Material* mat = m.material(p.material);
-  if (use.solids == 0 && use.shells == 0 && use.beams == 0) {
+  if (use.solids == 0 && use.shells == 0 && use.beams == 0 && use.discretes == 0) {
     diags.warning(p.loc, "part {} has no elements", p.id);
   }
   if (s == nullptr || mat == nullptr) return;  // reported as dangling references
+  if (!check_discrete_part(p, use, *s, *mat, diags)) return;
   const bool rigid = mat->kind == MaterialKind::rigid;
   if (p.inertia && !rigid) {
     diags.error(p.inertia->loc,
@@ -365,6 +397,10 @@ void check_sanity(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const BeamElement& e : m.beams) {
     const auto i = m.index.parts.find(e.part);
     if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].beams;
+  }
+  for (const DiscreteElement& e : m.discretes) {
+    const auto i = m.index.parts.find(e.part);
+    if (i != IdIndex::kNone) ++use[static_cast<std::size_t>(i)].discretes;
   }
   for (std::size_t i = 0; i < m.parts.size(); ++i)
     check_part(m, m.parts[i], use[i], diags);

@@ -54,6 +54,16 @@ struct BeamElement {
   core::SourceLoc loc;
 };
 
+/// *ELEMENT_DISCRETE: a spring or damper between two nodes, acting along N1 -> N2.
+struct DiscreteElement {
+  Id id = 0;
+  Id part = 0;
+  std::array<Id, 2> nodes{};
+  double scale = 1.0;   ///< S, on the force
+  double offset = 0.0;  ///< OFFSET, added to the change of length (length)
+  core::SourceLoc loc;
+};
+
 /// *PART_INERTIA: a rigid part's mass properties and initial velocity, given.
 struct PartInertia {
   Vec3 centre{};                        ///< XC YC ZC
@@ -77,7 +87,7 @@ struct Part {
   core::SourceLoc section_loc, material_loc, eos_loc, hourglass_loc;
 };
 
-enum class SectionKind { solid, solid_spg, shell, beam };
+enum class SectionKind { solid, solid_spg, shell, beam, discrete };
 
 /// *SECTION_SOLID_SPG cards 2 and 3 (keywords.md §2.6).
 struct SpgSettings {
@@ -214,7 +224,19 @@ enum class MaterialKind {
   rigid,
   piecewise_linear,
   null_material,
-  spotweld
+  spotweld,
+  spring_elastic,            ///< *MAT_SPRING_ELASTIC (discrete elements)
+  damper_viscous,            ///< *MAT_DAMPER_VISCOUS
+  spring_nonlinear_elastic,  ///< *MAT_SPRING_NONLINEAR_ELASTIC
+};
+
+/// The discrete elements' materials: one of a stiffness, a damping constant or a force curve.
+struct DiscreteMaterial {
+  double stiffness = 0.0;  ///< K, force per length
+  double damping = 0.0;    ///< DC, force per velocity
+  Id force_curve = 0;      ///< LCD: force against change of length
+  Id rate_curve = 0;       ///< LCR: scale on the force against rate of change of length (0: none)
+  core::SourceLoc force_curve_loc, rate_curve_loc;
 };
 
 struct Material {
@@ -229,6 +251,7 @@ struct Material {
   PiecewiseLinearPlasticityMaterial piecewise_linear;
   NullMaterial null_material;
   SpotweldMaterial spotweld;
+  DiscreteMaterial discrete;
   core::SourceLoc loc;
 };
 

@@ -19,6 +19,7 @@ struct ModelDatabase {
   std::vector<SolidElement> solids;
   std::vector<ShellElement> shells;
   std::vector<BeamElement> beams;
+  std::vector<DiscreteElement> discretes;
   std::vector<Part> parts;
   std::vector<Section> sections;
   std::vector<Material> materials;

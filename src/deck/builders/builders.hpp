@@ -78,6 +78,10 @@ void constrained_rigid_bodies(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_spotweld(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_nodal_rigid_body(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_joint(KeywordRecord& r, model::ModelDatabase& m);
+// discrete.cpp
+void element_discrete(KeywordRecord& r, model::ModelDatabase& m);
+void section_discrete(KeywordRecord& r, model::ModelDatabase& m);
+void mat_spring(KeywordRecord& r, model::ModelDatabase& m);
 void joint_stiffness_generalized(KeywordRecord& r, model::ModelDatabase& m);
 void define_coordinate_node(KeywordRecord& r, model::ModelDatabase& m);
 // define_sets.cpp

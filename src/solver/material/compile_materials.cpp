@@ -186,6 +186,10 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
     }
     case model::MaterialKind::rigid:
       break;  // rigid parts become rigid bodies, never elements
+    case model::MaterialKind::spring_elastic:
+    case model::MaterialKind::damper_viscous:
+    case model::MaterialKind::spring_nonlinear_elastic:
+      break;  // discrete elements' (discrete/), never reached: their parts have no solids
   }
   if (part.eos != 0) {
     const auto e = m.index.equations_of_state.find(part.eos);
