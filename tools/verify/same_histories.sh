@@ -28,7 +28,18 @@ compare() { # name deck [options...]
     [ $b = new ] && bin=$NEW && launch=${NEW_LAUNCH:-}
     rm -rf "$OUT/$name.$b"
     $launch "$bin" run "$deck" --out "$OUT/$name.$b" -q "$@" >"$OUT/$name.$b.log" 2>&1
+    eval "local rc_$b=$?"
   done
+  # Both runs must end as they did (the same exit code) and write the same set of files.
+  if [ "$rc_old" != "$rc_new" ] || [ ! -d "$OUT/$name.old" ] || [ ! -d "$OUT/$name.new" ]; then
+    echo "$name: DIFFERENT (exit $rc_old with the old binary, $rc_new with the new; see $OUT/$name.*.log)"
+    status=1
+    return 0
+  fi
+  if [ "$(cd "$OUT/$name.old" && find . -type f | sort)" != "$(cd "$OUT/$name.new" && find . -type f | sort)" ]; then
+    echo "  $name: the two runs wrote different sets of files"
+    status=1
+  fi
   local same=1
   # Every file, also in the case folders of a deck with *CASE.
   for f in $(cd "$OUT/$name.old" && find . -type f | grep -v "d3hsp\|lock\|runrsf\|d3dump"); do
