@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <ostream>
 
+#include "solver/block.hpp"
+
 namespace mcdyna::cli {
 
 // Over several processes a failure one of them meets alone before the time loop: the others
@@ -41,9 +43,9 @@ std::string process_problem(const solver::State& s, const core::Communicator& co
   if (!s.ties.empty() && comm.size() > 1)
     return "tied contacts (*CONTACT_TIED_...) run on one process only; run without mpirun "
            "(--threads N uses the cores of one machine)";
-  long entities = s.solids.count() + s.shells.count() + s.beams.count();
-  for (const solver::spg::Domain& d : s.spg)
-    entities += d.count();
+  long entities = 0;
+  for (const auto& b : s.blocks)
+    entities += b->elements() + b->particles();
   if (comm.size() <= std::max(entities, 1L)) return {};
   return fmt::format(
       "{} processes for {} deformable element(s) and SPG particle(s): each process needs at "

@@ -117,9 +117,10 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
              s.nodes.count(), s.solids.count(), s.solids.blocks.size(), s.rigid_bodies.size());
   for (const auto& b : s.solids.blocks) {
     const auto& part = s.parts[static_cast<std::size_t>(b.part)];
-    fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, IHQ {} QM {}, Q1 {} Q2 {}, {}\n",
-               part.id, b.end - b.begin, b.points_per_element == 1 ? 1 : 2, b.hourglass.type,
-               b.hourglass.coefficient, b.bulk_viscosity.quadratic, b.bulk_viscosity.linear,
+    fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, {} hourglass QM {}, Q1 {} Q2 {}, {}\n",
+               part.id, b.end - b.begin, b.points_per_element == 1 ? 1 : 2,
+               b.hourglass.stiffness() ? "stiffness" : "viscous", b.hourglass.coefficient,
+               b.bulk_viscosity.quadratic, b.bulk_viscosity.linear,
                stress_update_name(b.objective));
   }
   for (const auto& b : s.rigid_bodies) {

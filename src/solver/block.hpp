@@ -95,6 +95,9 @@ class Block {
   /// What it adds to its parts' energies and momenta (matsum; `parts` in deck order).
   virtual void add_part_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                                  std::vector<PartSummary>& /*parts*/) const {}
+  /// Adds to each node's added mass (`nodal`, zeroed before the first block) its elements' share
+  /// of their DT2MS mass, in the fixed order of its force gather (fe/added_mass.hpp).
+  virtual void spread_added_mass(const State& /*s*/, std::vector<double>& /*nodal*/) const {}
   /// Adds to `added` the mass DT2MS mass scaling gave it beyond the nodes' (SPG particles).
   virtual void add_added_mass(const State& /*s*/, double& /*added*/) const {}
   /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
@@ -109,7 +112,7 @@ class Block {
 };
 
 /// A block whose dump is one member list for both directions: Derived has
-///   template <class Ar> void dumped(Ar& ar, State& s) { ar(s.beams, my_state_); }
+///   template <class Ar> void dumped(Ar& ar, State& s) { ar(s.shells, my_state_); }
 /// (an OutArchive writes nothing to the state or the block).
 template <class Derived>
 class DumpedBlock : public Block {
@@ -127,7 +130,6 @@ Blocks make_blocks(State& s, std::vector<Blocks> compiled);
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
 void add_hexahedra_blocks(State& s, Blocks& blocks);         // solids/hexahedra_block.cpp
 void add_shell_blocks(State& s, Blocks& blocks);             // shells/shell_block.cpp
-void add_beam_blocks(State& s, Blocks& blocks);              // beams/beam_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
 void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp

@@ -75,16 +75,24 @@ const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const mode
   return nullptr;
 }
 
+namespace {
+// IHQ 4 and 5 resist the modes with stiffness; 0 (the default, 1) to 3 with viscous forces.
+// Other types are refused by the model checks (6-10) or noted by the shells' pass (8).
+HourglassForm hourglass_form(int ihq) {
+  return ihq == 4 || ihq == 5 ? HourglassForm::stiffness : HourglassForm::viscous;
+}
+}  // namespace
+
 HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
                              BulkViscosityParams& q) {
   HourglassParams hg;
   if (m.controls.hourglass) {
-    hg.type = m.controls.hourglass->type == 0 ? 1 : m.controls.hourglass->type;
+    hg.form = hourglass_form(m.controls.hourglass->type);
     hg.coefficient = m.controls.hourglass->coefficient;
   }
   q = control_bulk_viscosity(m);
   if (const model::Hourglass* h = part_hourglass(m, part)) {
-    hg.type = h->type == 0 ? 1 : h->type;
+    hg.form = hourglass_form(h->type);
     hg.coefficient = h->coefficient;
     q.quadratic = h->quadratic_bulk_viscosity;
     q.linear = h->linear_bulk_viscosity;

@@ -59,7 +59,7 @@ std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabas
 void compile_nodes_and_parts(const model::ModelDatabase& m, State& s);
 void compile_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_beams(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_beams(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
 void compile_discrete(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
 /// Adds `inertia` (per node) to the nodes' rotary inertia, giving the nodes rotations (angular
 /// velocity, moment) the first time.

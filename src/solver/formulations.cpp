@@ -19,7 +19,7 @@ const std::vector<Formulation>& formulations() {
       // Materials are numbered in part order within each element kind: solids, shells, beams,
       // SPG parts.
       {"shells", compile_shells, add_shell_blocks, {"solids"}},
-      {"beams", compile_beams, add_beam_blocks, {"shells"}},
+      {"beams", nullptr, nullptr, {"shells"}, false, compile_beams},
       {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
       {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},
       {"joints", compile_joints, add_joint_blocks, {"rigid bodies"}},

@@ -17,7 +17,7 @@ void fields(Ar& ar, Nodes& n) {
   ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.force, n.mass, n.added_mass,
      n.rigid_body, n.smoothed, n.corner_offsets, n.corners);
   ar(n.angular_velocity, n.previous_angular_velocity, n.moment, n.rotary_inertia,
-     n.shell_corner_offsets, n.shell_corners, n.beam_end_offsets, n.beam_ends);
+     n.shell_corner_offsets, n.shell_corners);
 }
 
 template <class Ar>
@@ -38,7 +38,7 @@ namespace {
 // curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both
 // changed by --fixed-step).
 constexpr auto kStateDumpedSizes = sizes_of<Nodes, State, ResumePoint>();
-static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){416, 3072, 192},
+static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){368, 2400, 192},
               "Nodes, State or ResumePoint changed: list the new member here, or note it among "
               "the deck data left out");
 
@@ -87,8 +87,7 @@ std::string dump_layout(const State& state) {
 
 void save_state_section(core::OutArchive& ar, const State& state, std::size_t section) {
   // The member lists serve both directions; nothing is written to `state`.
-  state_section(ar, const_cast<State&>(state), section,
-                [&](const Block& b) { b.save(ar, state); });
+  state_section(ar, const_cast<State&>(state), section, [&](const Block& b) { b.save(ar, state); });
 }
 
 void load_state_section(core::InArchive& ar, State& state, std::size_t section) {

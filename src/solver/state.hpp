@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "model/conditions.hpp"  // JointKind
 #include "model/entities.hpp"
 #include "solver/contact/interface.hpp"
 #include "solver/curve.hpp"
@@ -47,8 +48,6 @@ struct Nodes {
   /// Node -> (element * 4 + corner) of the deformable shells that touch it, in element order
   /// (the gather of their forces and moments, fixed order as for the solids).
   std::vector<Index> shell_corner_offsets, shell_corners;
-  /// Node -> (element * 2 + end) of the deformable beams that touch it, in element order.
-  std::vector<Index> beam_end_offsets, beam_ends;
   [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
 };
 
@@ -57,10 +56,13 @@ enum class SolidFormulation {
   selective_reduced,  ///< ELFORM 2: 2x2x2 deviatoric, mean volumetric strain rate (B-bar)
 };
 
+/// How the hourglass modes are resisted: IHQ 1-3 by viscous forces, 4-5 by stiffness.
+enum class HourglassForm { viscous, stiffness };
+
 struct HourglassParams {
-  int type = 1;              ///< IHQ: 1-3 viscous, 4-5 stiffness
-  double coefficient = 0.1;  ///< QM
-  [[nodiscard]] bool stiffness() const { return type == 4 || type == 5; }
+  HourglassForm form = HourglassForm::viscous;  ///< from IHQ
+  double coefficient = 0.1;                     ///< QM
+  [[nodiscard]] bool stiffness() const { return form == HourglassForm::stiffness; }
 };
 
 /// Solid elements of one part: a contiguous range [begin, end) of the element arrays.
@@ -106,6 +108,9 @@ enum class ShellFormulation {
   c0_triangle,       ///< ELFORM 4: three-node Mindlin triangle, MITC3 shear (shell_c0_triangle.hpp)
 };
 
+/// How a shell's thickness follows its strain (*CONTROL_SHELL ISTUPD).
+enum class ThicknessUpdate { none, membrane, plastic };
+
 /// Shell elements of one part: a contiguous range [begin, end) of the shell arrays.
 /// Integration points are numbered element by element, in-plane point by in-plane point, layer
 /// by layer (bottom to top).
@@ -124,9 +129,9 @@ struct ShellBlock {
   double bending_hourglass = 0.1;  ///< QB
   double warping_hourglass = 0.1;  ///< QW
   double shear_factor = 1.0;       ///< SHRF
-  /// *CONTROL_SHELL ISTUPD: 0 constant, 1 from the membrane thickness strain, 4 from its
-  /// plastic part only.
-  int thickness_update = 0;
+  /// *CONTROL_SHELL ISTUPD: constant (0), from the membrane thickness strain (1, 3) or from its
+  /// plastic part only (4).
+  ThicknessUpdate thickness_update = ThicknessUpdate::none;
   int plane_stress_iterations = 3;  ///< secant steps of the plane-stress return (MITER)
   /// NLOC: where the nodes sit through the thickness, 0 mid-surface, 1 top, -1 bottom (the
   /// layers sit at z = (zeta - NLOC) t / 2 from the nodes' surface).
@@ -166,56 +171,6 @@ struct Shells {
   std::vector<double> corner_force;
   std::vector<ShellBlock> blocks;
   ShellPoints points;
-  [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
-};
-
-enum class BeamFormulation {
-  hughes_liu,         ///< ELFORM 1: fibres over the cross section, one point along the length
-  belytschko_schwer,  ///< ELFORM 2: elastic resultants, cubic bending (exact end moments)
-};
-
-/// Beam elements of one part: a contiguous range [begin, end) of the beam arrays. Hughes-Liu
-/// points are numbered element by element, section point by section point.
-struct BeamBlock {
-  Index part = 0;
-  Index begin = 0, end = 0;
-  Index point_begin = 0;
-  int points = 0;  ///< cross-section points (0: resultant beam)
-  BeamFormulation formulation = BeamFormulation::hughes_liu;
-  Index material = 0;
-  double shear_factor = 1.0;        ///< SHRF (Hughes-Liu); the resultant beam takes SA instead
-  int constrained_iterations = 30;  ///< secant steps of the uniaxial-stress return
-  /// Section points: s and t as fractions of the element's section widths, weights as fractions
-  /// of its area (rectangle: Gauss or Lobatto in both; tube: a ring).
-  std::array<double, 16> point_s{}, point_t{}, point_weight{};
-};
-
-/// Deformable 2-node beams. Local axes r (N1 -> N2), s (from N3 or the orientation vector,
-/// carried by the mean spin of the nodes), t = r x s.
-struct Beams {
-  std::vector<model::Id> ids;
-  std::vector<std::array<Index, 2>> nodes;
-  std::vector<Index> part;
-  Eigen::Matrix3Xd s_axis;  ///< unit, current
-  std::vector<double> initial_length, mass;
-  /// Section: area, moments of inertia about s and t, torsion constant, shear area (resultant
-  /// beam), and the widths that scale the Hughes-Liu points (rectangle TS, TT; tube the ring
-  /// diameter twice).
-  std::vector<double> area, inertia_s, inertia_t, torsion, shear_area, width_s, width_t;
-  /// Rotary inertia each end gives its node, and the stable step of the bending and torsion
-  /// modes at the initial length (scaled by L / L0 as the beam stretches).
-  std::vector<double> end_inertia, flexural_step;
-  /// 6 per element: resultants in the local axes. Hughes-Liu: N, V_s, V_t, T, M_s, M_t of the
-  /// last pass. Belytschko-Schwer: N, T, M_s at N1, M_s at N2, M_t at N1, M_t at N2 (its state).
-  std::vector<double> resultants;
-  std::vector<double> temperature;      ///< room temperature (no heating in beams)
-  std::vector<double> internal_energy;  ///< absolute
-  std::vector<double> time_step, added_mass;
-  std::vector<std::uint8_t> eroded;
-  /// 12 per element: force (3) then moment (3) on each end node, global axes, this cycle.
-  std::vector<double> corner_force;
-  std::vector<BeamBlock> blocks;
-  ShellPoints points;  ///< Hughes-Liu fibres: stress xx, xy, zx in the local axes (r s t)
   [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
 };
 
@@ -274,7 +229,7 @@ struct RigidBody {
 struct JointState {
   model::Id id = 0;
   std::string heading;
-  int kind = 0;  ///< model::JointKind
+  model::JointKind kind = model::JointKind::spherical;
   std::array<Index, 6> nodes{};
   int pairs = 1;
   double relative_stiffness = 1.0;  ///< RPS
@@ -440,7 +395,6 @@ struct State {
   Nodes nodes;
   Solids solids;
   Shells shells;
-  Beams beams;
   std::vector<spg::Domain> spg;  ///< one per SPG part
   std::vector<PartInfo> parts;
   std::vector<Material> materials;

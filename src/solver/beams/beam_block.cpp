@@ -1,10 +1,10 @@
 // The deformable beams as one block of the time loop: the element pass and the gather of the
-// end forces and moments.
+// end forces and moments. The block owns the beams' data (beams.hpp).
 #include "solver/beams/beam_elements.hpp"
+#include "solver/beams/beam_results.hpp"
 #include "solver/beams/beams_dump.hpp"
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
-#include "solver/results.hpp"
 
 namespace mcdyna::solver {
 
@@ -15,28 +15,29 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
   [[nodiscard]] std::string dump_name() const override { return "beams"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kBeamsDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.beams);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(bm_);
   }
-  explicit BeamsBlock(long count) : count_(count) {}
+  explicit BeamsBlock(Beams beams) : bm_(std::move(beams)) {}
+  [[nodiscard]] const Beams& beams() const { return bm_; }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
-  [[nodiscard]] long elements() const override { return count_; }
-  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] long elements() const override { return bm_.count(); }
+  [[nodiscard]] Index numbered_elements() const override { return bm_.count(); }
   [[nodiscard]] ElementRef element(const State& s, Index k) const override {
     const auto i = static_cast<std::size_t>(k);
-    return {"beam", s.beams.ids[i], s.parts[static_cast<std::size_t>(s.beams.part[i])].id};
+    return {"beam", bm_.ids[i], s.parts[static_cast<std::size_t>(bm_.part[i])].id};
   }
 
   // Every process computes the beams whole, as the shells (shell_block.cpp).
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    for (const auto& conn : s.beams.nodes)
+  void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& nodes) const override {
+    for (const auto& conn : bm_.nodes)
       for (const Index n : conn)
         nodes[static_cast<std::size_t>(n)] = 1;
   }
 
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    const Beams& bm = s.beams;
+    const Beams& bm = bm_;
     for (std::size_t i = 0; i < bm.ids.size(); ++i)
       (bm.eroded[i] ? e.eroded_internal : e.internal) += bm.internal_energy[i];
   }
@@ -45,7 +46,7 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
     const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
-    const Beams& bm = s.beams;
+    const Beams& bm = bm_;
     const Nodes& nd = s.nodes;
     for (std::size_t e = 0; e < bm.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(bm.part[e])];
@@ -63,11 +64,10 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
 
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = beam_element_pass(
-        s, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt, s.time});
-    gather_beam_forces(s);
+        s, bm_, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt, s.time});
+    gather_beam_forces(s, bm_);
     if (e.mass_changed) refresh_added_mass(s);
-    // Elements are numbered solids first, then shells, then beams (element_ref.hpp).
-    const Index offset = s.solids.count() + s.shells.count();
+    const Index offset = first_element(s, *this);
     if (e.critical_step < r.critical_step) {
       r.critical_step = e.critical_step;
       r.controlling_element = offset + e.controlling;
@@ -84,28 +84,47 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
   // moment t).
   void write_state(const State& s, StateSink& sink) const override {
     sink.declare("beam_resultants", {"N", "Vs", "Vt", "T", "Ms", "Mt"});
-    const Beams& bm = s.beams;
+    const Beams& bm = bm_;
     for (const BeamBlock& block : bm.blocks) {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
         if (bm.eroded[i]) continue;
-        const ElementResult r = beam_result(s, block, e);
+        const ElementResult r = beam_result(s, bm, block, e);
         sink.cell(CellShape::line, bm.nodes[i].data(),
                   {r, pressure_of(r), bm.temperature[i], part});
-        sink.value("beam_resultants", beam_resultants(s, block, e).data());
+        sink.value("beam_resultants", beam_resultants(s, bm, block, e).data());
       }
     }
   }
 
+  // The share of each end's DT2MS mass at its node, in the order of the end-force gather.
+  void spread_added_mass(const State& /*s*/, std::vector<double>& nodal) const override {
+    const auto count = static_cast<Index>(nodal.size());
+#pragma omp parallel for schedule(static)
+    for (Index n = 0; n < count; ++n) {
+      const auto nn = static_cast<std::size_t>(n);
+      for (Index k = bm_.end_offsets[nn]; k < bm_.end_offsets[nn + 1]; ++k)
+        nodal[nn] +=
+            0.5 *
+            bm_.added_mass[static_cast<std::size_t>(bm_.ends[static_cast<std::size_t>(k)] / 2)];
+    }
+  }
+
  private:
-  long count_;
+  Beams bm_;
 };
 
 }  // namespace
 
-void add_beam_blocks(State& s, Blocks& blocks) {
-  if (s.beams.count() > 0) blocks.push_back(std::make_unique<BeamsBlock>(s.beams.count()));
+std::unique_ptr<Block> make_beams_block(Beams beams) {
+  return std::make_unique<BeamsBlock>(std::move(beams));
+}
+
+const Beams* beams_of(const State& s) {
+  for (const auto& b : s.blocks)
+    if (const auto* beams = dynamic_cast<const BeamsBlock*>(b.get())) return &beams->beams();
+  return nullptr;
 }
 
 }  // namespace mcdyna::solver

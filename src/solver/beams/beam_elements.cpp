@@ -27,23 +27,22 @@ struct Axes {
 
 // The current axes: r from the nodes; s carried from the last pass by the mean spin of the two
 // nodes over dt (Rodrigues' rotation), then made normal to r. Stores the new s.
-Axes advance_axes(State& st, Index e, double dt) {
+Axes advance_axes(const Nodes& nd, Beams& bm, Index e, double dt) {
   const auto i = static_cast<Eigen::Index>(e);
-  const auto& conn = st.beams.nodes[static_cast<std::size_t>(e)];
-  const Nodes& nd = st.nodes;
+  const auto& conn = bm.nodes[static_cast<std::size_t>(e)];
   const Vec3 d = nd.position.col(conn[1]) - nd.position.col(conn[0]);
   Axes a;
   a.length = d.norm();
   if (!(a.length > 0.0)) return a;
   a.r = d / a.length;
-  Vec3 s = st.beams.s_axis.col(i);
+  Vec3 s = bm.s_axis.col(i);
   const Vec3 spin = 0.5 * (nd.angular_velocity.col(conn[0]) + nd.angular_velocity.col(conn[1]));
   const double angle = spin.norm() * dt;
   if (angle > 0.0) s = Eigen::AngleAxisd(angle, spin.normalized()) * s;
   s -= s.dot(a.r) * a.r;
   a.s = s.normalized();
   a.t = a.r.cross(a.s);
-  st.beams.s_axis.col(i) = a.s;
+  bm.s_axis.col(i) = a.s;
   return a;
 }
 
@@ -55,9 +54,8 @@ struct Rates {
   double spin1_s, spin1_t, spin2_s, spin2_t;
 };
 
-Rates rates(const State& st, Index e, const Axes& a) {
-  const auto& conn = st.beams.nodes[static_cast<std::size_t>(e)];
-  const Nodes& nd = st.nodes;
+Rates rates(const Nodes& nd, const Beams& bm, Index e, const Axes& a) {
+  const auto& conn = bm.nodes[static_cast<std::size_t>(e)];
   const Vec3 dv = nd.velocity.col(conn[1]) - nd.velocity.col(conn[0]);
   const Vec3 w1 = nd.angular_velocity.col(conn[0]), w2 = nd.angular_velocity.col(conn[1]);
   const double l = a.length;
@@ -84,8 +82,8 @@ struct EndForces {
 };
 
 // Applies the internal end forces to the nodes with the opposite sign, in global axes.
-void store_ends(State& st, Index e, const Axes& a, const EndForces& f) {
-  double* out = &st.beams.corner_force[12 * static_cast<std::size_t>(e)];
+void store_ends(Beams& bm, Index e, const Axes& a, const EndForces& f) {
+  double* out = &bm.corner_force[12 * static_cast<std::size_t>(e)];
   Mat3 rot;
   rot.col(0) = a.r;
   rot.col(1) = a.s;
@@ -98,6 +96,7 @@ void store_ends(State& st, Index e, const Axes& a, const EndForces& f) {
 
 struct BeamContext {
   State& st;
+  Beams& bm;
   const BeamBlock& block;
   const Material& mat;
   const BeamPassInput& in;
@@ -109,7 +108,7 @@ struct BeamContext {
 double beam_step(const BeamContext& c, Index e, double length) {
   const auto i = static_cast<std::size_t>(e);
   const double axial = length / std::sqrt(c.young / c.mat.density);
-  return std::min(axial, c.st.beams.flexural_step[i] * length / c.st.beams.initial_length[i]);
+  return std::min(axial, c.bm.flexural_step[i] * length / c.bm.initial_length[i]);
 }
 
 // *MAT_SPOTWELD on a spot-weld beam: it fails at TFAIL, or when
@@ -140,11 +139,11 @@ bool spot_weld_fails(const BeamContext& c, const double* res, double length) {
 // Hughes-Liu: the fibres' uniaxial-stress updates and the resultants they give.
 template <class Model>
 ElementOutcome hughes_liu(BeamContext& c, const Model& model, Index e) {
-  Beams& bm = c.st.beams;
+  Beams& bm = c.bm;
   const auto i = static_cast<std::size_t>(e);
-  const Axes a = advance_axes(c.st, e, c.in.step);
+  const Axes a = advance_axes(c.st.nodes, c.bm, e, c.in.step);
   if (!(a.length > 0.0)) return {0.0, true, false};
-  const Rates r = rates(c.st, e, a);
+  const Rates r = rates(c.st.nodes, c.bm, e, a);
   const BeamBlock& b = c.block;
   const double dt = c.in.step, kappa = b.shear_factor;
   double n = 0.0, vs = 0.0, vt = 0.0, torque = 0.0, ms = 0.0, mt = 0.0, work = 0.0;
@@ -206,7 +205,7 @@ ElementOutcome hughes_liu(BeamContext& c, const Model& model, Index e) {
   f.f2 = Vec3(n, vs, vt);
   f.m1 = Vec3(-torque, -ms + 0.5 * l * vt, -mt - 0.5 * l * vs);
   f.m2 = Vec3(torque, ms + 0.5 * l * vt, mt - 0.5 * l * vs);
-  store_ends(c.st, e, a, f);
+  store_ends(c.bm, e, a, f);
   const bool fibres_failed = b.points > 0 && failed == b.points;
   return {beam_step(c, e, l), false, fibres_failed || spot_weld_fails(c, res, l)};
 }
@@ -215,11 +214,11 @@ ElementOutcome hughes_liu(BeamContext& c, const Model& model, Index e) {
 // (spin minus chord rotation) by the Timoshenko stiffness EI / (L (1 + phi)) [4 + phi, 2 - phi;
 // 2 - phi, 4 + phi], phi = 12 E I / (G SA L^2).
 ElementOutcome belytschko_schwer(BeamContext& c, Index e) {
-  Beams& bm = c.st.beams;
+  Beams& bm = c.bm;
   const auto i = static_cast<std::size_t>(e);
-  const Axes a = advance_axes(c.st, e, c.in.step);
+  const Axes a = advance_axes(c.st.nodes, c.bm, e, c.in.step);
   if (!(a.length > 0.0)) return {0.0, true, false};
-  const Rates r = rates(c.st, e, a);
+  const Rates r = rates(c.st.nodes, c.bm, e, a);
   const double dt = c.in.step, l = a.length;
   const double young = c.young, g = c.mat.shear_modulus;
   double* res = &bm.resultants[6 * i];
@@ -250,13 +249,13 @@ ElementOutcome belytschko_schwer(BeamContext& c, Index e) {
   f.f2 = Vec3(res[0], -sum_t / l, sum_s / l);
   f.m1 = Vec3(-res[1], res[2], res[4]);
   f.m2 = Vec3(res[1], res[3], res[5]);
-  store_ends(c.st, e, a, f);
+  store_ends(c.bm, e, a, f);
   return {beam_step(c, e, l), false, false};
 }
 
 template <class Model>
 void block_pass(BeamContext& c, const Model& model, fe::PassTotals& totals) {
-  Beams& b = c.st.beams;
+  Beams& b = c.bm;
   fe::element_loop(
       c.block.begin, c.block.end,
       fe::ElementArrays{b.eroded, b.corner_force, 12, b.mass, b.added_mass, b.time_step},
@@ -273,32 +272,31 @@ void block_pass(BeamContext& c, const Model& model, fe::PassTotals& totals) {
 
 }  // namespace
 
-Mat3 beam_axes(const State& state, Index element) {
-  const auto& conn = state.beams.nodes[static_cast<std::size_t>(element)];
+Mat3 beam_axes(const State& state, const Beams& beams, Index element) {
+  const auto& conn = beams.nodes[static_cast<std::size_t>(element)];
   const Vec3 d = state.nodes.position.col(conn[1]) - state.nodes.position.col(conn[0]);
   Mat3 axes = Mat3::Identity();
   if (!(d.norm() > 0.0)) return axes;
   axes.col(0) = d.normalized();
-  Vec3 s = state.beams.s_axis.col(element);
+  Vec3 s = beams.s_axis.col(element);
   s -= s.dot(axes.col(0)) * axes.col(0);
   axes.col(1) = s.normalized();
   axes.col(2) = axes.col(0).cross(axes.col(1));
   return axes;
 }
 
-ElementPassResult beam_element_pass(State& state, const BeamPassInput& input) {
+ElementPassResult beam_element_pass(State& state, Beams& beams, const BeamPassInput& input) {
   fe::PassTotals totals;
-  for (const BeamBlock& block : state.beams.blocks) {
+  for (const BeamBlock& block : beams.blocks) {
     const Material& mat = state.materials[static_cast<std::size_t>(block.material)];
-    BeamContext c{state, block, mat, input, youngs_modulus(mat)};
+    BeamContext c{state, beams, block, mat, input, youngs_modulus(mat)};
     std::visit([&](const auto& model) { block_pass(c, model, totals); }, mat.model);
   }
   return totals.result();
 }
 
-void gather_beam_forces(State& state) {
-  fe::gather_forces_and_moments(state, state.beams.corner_force, state.nodes.beam_end_offsets,
-                                state.nodes.beam_ends);
+void gather_beam_forces(State& state, const Beams& beams) {
+  fe::gather_forces_and_moments(state, beams.corner_force, beams.end_offsets, beams.ends);
 }
 
 }  // namespace mcdyna::solver

@@ -12,8 +12,8 @@
 ///   end moments from the ends' deformational rotations by the Timoshenko beam's stiffness (so a
 ///   tip-loaded cantilever is exact with one element), shear area SA.
 /// Every element writes only its own data, so results do not depend on the thread count.
+#include "solver/beams/beams.hpp"
 #include "solver/fe/element_loop.hpp"  // ElementPassResult
-#include "solver/state.hpp"
 
 namespace mcdyna::solver {
 
@@ -24,13 +24,13 @@ struct BeamPassInput {
   double time = 0.0;               ///< t^n, for *MAT_SPOTWELD's TFAIL
 };
 
-ElementPassResult beam_element_pass(State& state, const BeamPassInput& input);
+ElementPassResult beam_element_pass(State& state, Beams& beams, const BeamPassInput& input);
 
 /// Sums the beams' end forces into the nodal forces and their end moments into the nodal
 /// moments (gather over Nodes::beam_ends).
-void gather_beam_forces(State& state);
+void gather_beam_forces(State& state, const Beams& beams);
 
 /// The element's local axes at the current geometry, as columns r s t.
-Mat3 beam_axes(const State& state, Index element);
+Mat3 beam_axes(const State& state, const Beams& beams, Index element);
 
 }  // namespace mcdyna::solver

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/beams/beams.hpp"
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
 
 namespace mcdyna::solver::detail {
@@ -189,9 +191,9 @@ double end_inertia(bool resultant, double e, double g, double density, double ka
 
 }  // namespace
 
-void compile_beams(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_beams(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d) {
   Nodes& nd = s.nodes;
-  Beams& bm = s.beams;
+  Beams bm;
   const std::vector<std::vector<std::size_t>> by_part = elements_by_part(m, m.beams);
   std::vector<double> rotary(static_cast<std::size_t>(nd.count()), 0.0);
   std::vector<Vec3> axes;
@@ -303,7 +305,8 @@ void compile_beams(const model::ModelDatabase& m, State& s, core::Diagnostics& d
   if (n == 0) return;
   add_rotary_inertia(nd, rotary);
   build_node_corners(
-      nd.count(), bm.nodes, [](std::size_t) { return 2; }, nd.beam_end_offsets, nd.beam_ends);
+      nd.count(), bm.nodes, [](std::size_t) { return 2; }, bm.end_offsets, bm.ends);
+  own.push_back(make_beams_block(std::move(bm)));
 }
 
 void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia) {

@@ -8,7 +8,7 @@ namespace mcdyna::solver {
 
 template <class Ar>
 void fields(Ar& ar, HourglassParams& h) {
-  ar(h.type, h.coefficient);
+  ar(h.form, h.coefficient);
 }
 
 template <class Ar>

@@ -95,7 +95,7 @@ void johnson_cook(const model::Material& mat, Material& out, core::Diagnostics& 
   out.room_temperature = j.room_temperature;
   out.specific_heat = j.specific_heat;
   out.pressure_cutoff = j.pressure_cutoff;
-  out.spall = static_cast<int>(j.spall_type);
+  out.spall = j.spall_type == 1.0 ? Spall::hold_cutoff : Spall::no_tension;
   // The return mapping relies on a flow stress that does not fall with plastic strain.
   if (j.b < 0.0 || j.n <= 0.0) {
     d.error(mat.loc, "*MAT_JOHNSON_COOK {}: B = {} and N = {} must give hardening (B >= 0, N > 0)",
@@ -164,7 +164,7 @@ Material compile_material(const model::ModelDatabase& m, const model::Part& part
       out.shear_modulus = 0.0;
       out.bulk_modulus = 0.0;
       out.pressure_cutoff = mat.null_material.pressure_cutoff;
-      out.spall = 1;
+      out.spall = Spall::hold_cutoff;
       break;
     case model::MaterialKind::spotweld: {
       // Isotropic hardening with EH the plastic modulus (MAT_003 with BETA 1 and no rate); EFAIL

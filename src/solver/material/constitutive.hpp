@@ -287,7 +287,7 @@ inline void update_pressure(const Material& m, const VolumeChange& v, double& pr
 inline bool apply_pressure_cutoff(const Material& m, double& pressure) {
   if (m.pressure_cutoff >= 0.0) return false;  // set by MAT_015 only
   if (pressure >= m.pressure_cutoff) return false;
-  if (m.spall == 1) {
+  if (m.spall == Spall::hold_cutoff) {
     pressure = m.pressure_cutoff;
     return false;
   }

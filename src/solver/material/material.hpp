@@ -14,6 +14,10 @@
 
 namespace mcdyna::solver {
 
+/// What a point does below the pressure cutoff (MAT_015 SPALL; *MAT_NULL holds): SPALL 1 holds
+/// the pressure at the cutoff; SPALL 2 and 3 release it and the deviator (no tension once spalled).
+enum class Spall { hold_cutoff, no_tension };
+
 enum class EosModel { none, linear_polynomial, gruneisen };
 
 /// *EOS_LINEAR_POLYNOMIAL and *EOS_GRUNEISEN: p = a(mu) + b(mu) * E, affine in the internal
@@ -70,7 +74,7 @@ struct Material {
   double room_temperature = 0.0;
   double specific_heat = 0.0;
   double pressure_cutoff = 0.0;
-  int spall = 2;
+  Spall spall = Spall::no_tension;
 
   double failure_strain = 0.0;  ///< MAT_003 FS / MAT_024 FAIL: erode at this plastic strain
   /// *MAT_SPOTWELD: TFAIL (0: none) and NRR NRS NRT MRR MSS MTT (0: term not considered), read

@@ -19,7 +19,7 @@ void compile_joint_pairs(const model::ModelDatabase& m, State& s, core::Diagnost
     JointState js;
     js.id = j.id > 0 ? j.id : static_cast<model::Id>(k + 1);
     js.heading = j.heading;
-    js.kind = static_cast<int>(j.kind);
+    js.kind = j.kind;
     js.pairs = j.kind == model::JointKind::spherical       ? 1
                : j.kind == model::JointKind::translational ? 3
                                                            : 2;

@@ -99,7 +99,7 @@ void joint_forces(State& s, JointState& j) {
   }
   j.energy = 0.0;
   j.force.setZero();
-  const auto kind = static_cast<model::JointKind>(j.kind);
+  const model::JointKind kind = j.kind;
   if (kind == model::JointKind::cylindrical || kind == model::JointKind::translational)
     hold_on_lines(s, j);
   else

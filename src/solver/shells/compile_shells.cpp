@@ -143,17 +143,20 @@ void note_shell_control(const model::ShellControl& c, core::Diagnostics& d) {
     d.note(c.loc, "*CONTROL_SHELL: {} has no effect here", f);
 }
 
-// Whether the part's shells change thickness under *CONTROL_SHELL ISTUPD (and PSSTUPD).
-int thickness_update(const model::ModelDatabase& m, const model::Part& part) {
-  if (!m.controls.shell) return 0;
+// Whether the part's shells change thickness under *CONTROL_SHELL ISTUPD (and PSSTUPD): 1 and 3
+// from the membrane thickness strain, 4 from its plastic part.
+ThicknessUpdate thickness_update(const model::ModelDatabase& m, const model::Part& part) {
+  if (!m.controls.shell) return ThicknessUpdate::none;
   const model::ShellControl& c = *m.controls.shell;
-  const int mode = c.thickness_update == 3 ? 1 : c.thickness_update;
-  if (mode != 1 && mode != 4) return 0;
-  if (c.thickness_parts == 0) return mode;
+  const ThicknessUpdate mode = c.thickness_update == 1 || c.thickness_update == 3
+                                   ? ThicknessUpdate::membrane
+                               : c.thickness_update == 4 ? ThicknessUpdate::plastic
+                                                         : ThicknessUpdate::none;
+  if (mode == ThicknessUpdate::none || c.thickness_parts == 0) return mode;
   const model::PartSet* ps = m.part_set(c.thickness_parts);
   return ps != nullptr && std::find(ps->parts.begin(), ps->parts.end(), part.id) != ps->parts.end()
              ? mode
-             : 0;
+             : ThicknessUpdate::none;
 }
 
 }  // namespace

@@ -69,6 +69,21 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
     }
   }
 
+  // Each element's DT2MS mass, 1/4 (a triangle's 1/3) to each corner, in the order of the
+  // corner-force gather.
+  void spread_added_mass(const State& s, std::vector<double>& nodal) const override {
+    const Nodes& nd = s.nodes;
+#pragma omp parallel for schedule(static)
+    for (Index n = 0; n < nd.count(); ++n) {
+      const auto nn = static_cast<std::size_t>(n);
+      for (Index k = nd.shell_corner_offsets[nn]; k < nd.shell_corner_offsets[nn + 1]; ++k) {
+        const auto e = static_cast<std::size_t>(nd.shell_corners[static_cast<std::size_t>(k)] / 4);
+        const bool triangle = s.shells.nodes[e][3] == s.shells.nodes[e][2];
+        nodal[nn] += s.shells.added_mass[e] / (triangle ? 3.0 : 4.0);
+      }
+    }
+  }
+
   void forces(State& s, ForceReport& r) override {
     const ElementPassResult e = shell_element_pass(
         s, ShellPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});

@@ -162,7 +162,8 @@ fe::ElementOutcome c0_triangle(ShellContext& c, const Model& model, Index e) {
     for (int a = 0; a < 2; ++a)
       work += f.area / 3.0 * 0.5 * (s_old[p][a] + s_new[p][a]) * deviation[p][a] * dt;
   charge_work(c, e, work);
-  if (c.block.thickness_update != 0) sh.thickness[i] = t * (1.0 + res.thickness_strain);
+  if (c.block.thickness_update != ThicknessUpdate::none)
+    sh.thickness[i] = t * (1.0 + res.thickness_strain);
   // Shear forces by virtual power: each corner's normal velocity and rotation rates enter the
   // shear linearly; their coefficients from unit rates.
   double fz[3] = {}, mx[3] = {}, my[3] = {};

@@ -120,7 +120,8 @@ ElementOutcome belytschko_tsay(ShellContext& c, const Model& model, Index e) {
   charge_work(c, e, f.area * integrate_layers(c, model, e, first, r, t, res, failed));
   double q[5];
   sh.hourglass_energy[i] += hourglass(c, e, f, r, t, q);
-  if (c.block.thickness_update != 0) sh.thickness[i] = t * (1.0 + res.thickness_strain);
+  if (c.block.thickness_update != ThicknessUpdate::none)
+    sh.thickness[i] = t * (1.0 + res.thickness_strain);
   // Internal forces, the transpose of the rates (virtual power), plus the hourglass
   // resistances on gamma.
   const double a = f.area, kappa = c.block.shear_factor;

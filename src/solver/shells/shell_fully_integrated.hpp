@@ -135,7 +135,8 @@ fe::ElementOutcome fully_integrated(ShellContext& c, const Model& model, Index e
     }
   }
   charge_work(c, e, work);
-  if (c.block.thickness_update != 0) sh.thickness[i] = t * (1.0 + thickness_strain / area);
+  if (c.block.thickness_update != ThicknessUpdate::none)
+    sh.thickness[i] = t * (1.0 + thickness_strain / area);
   for (int n = 0; n < 4; ++n)
     add_corner(out, f, n, k.triangle, fx[n], fy[n], fz[n], mx[n], my[n]);
   return {shell_step(c, k.x, f.area, k.triangle), false, failed == 4 * layers,

@@ -106,7 +106,7 @@ double integrate_layers(ShellContext& c, const Model& model, Index e, Index firs
         c.mat, model, eps, dt, sh.temperature[i], b.plane_stress_iterations,
         ShellPointState{sigma, alpha, sh.points.plastic_strain[pp], sh.points.damage[pp]});
     // ISTUPD 4 leaves out the elastic part, -nu / E (d sigma_xx + d sigma_yy).
-    const double elastic = b.thickness_update == 4
+    const double elastic = b.thickness_update == ThicknessUpdate::plastic
                                ? -c.poisson / c.young * (sigma[0] - old[0] + sigma[1] - old[1])
                                : 0.0;
     res.thickness_strain +=

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "shell_decks.hpp"
-#include "solver/results.hpp"
+#include "solver/beams/beam_results.hpp"
 #include "solver_support.hpp"
 
 using namespace mcdyna;
@@ -153,14 +153,15 @@ TEST_CASE("a Hughes-Liu bar drawn past yield carries the hardening curve's force
   const double ep_modulus = kYoung * 2e9 / (kYoung - 2e9);
   // sigma = sigma_y + E_p (eps - sigma / E)  =>  sigma (1 + E_p / E) = sigma_y + E_p eps
   const double stress = (200e6 + ep_modulus * strain) / (1.0 + ep_modulus / kYoung);
-  const double force = solver::beam_resultants(s, s.beams.blocks[0], 0)[0];
+  const solver::Beams& bm = *solver::beams_of(s);
+  const double force = solver::beam_resultants(s, bm, bm.blocks[0], 0)[0];
   const double area = 1e-4 * std::exp(-strain);  // volume kept in the plastic flow, roughly
   MESSAGE("strain ", strain, ": force ", force, " N; uniaxial ", stress * 1e-4,
           " N on the initial area (", stress * area, " N on the current one)");
   // The beam's area stays its initial one (no thickness update), so the force is the
   // engineering value.
   CHECK(force == doctest::Approx(stress * 1e-4).epsilon(0.01));
-  CHECK(s.beams.points.plastic_strain[0] > 0.01);
+  CHECK(bm.points.plastic_strain[0] > 0.01);
 }
 
 TEST_CASE("the fully plastic moment of a rectangle, to its section rule") {
@@ -180,7 +181,8 @@ TEST_CASE("the fully plastic moment of a rectangle, to its section rule") {
   test::Simulation sim = test::prepare(dir, deck);
   test::run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  const auto r = solver::beam_resultants(*sim.state, sim.state->beams.blocks[0], 0);
+  const solver::Beams& bm = *solver::beams_of(*sim.state);
+  const auto r = solver::beam_resultants(*sim.state, bm, bm.blocks[0], 0);
   const double a = std::sqrt(3.0 / 7.0 - 2.0 / 7.0 * std::sqrt(1.2));
   const double b = std::sqrt(3.0 / 7.0 + 2.0 / 7.0 * std::sqrt(1.2));
   const double wa = (18.0 + std::sqrt(30.0)) / 36.0, wb = (18.0 - std::sqrt(30.0)) / 36.0;
@@ -276,12 +278,13 @@ double beam_weld_fails_at(const std::string& weld, const std::string& direction,
                "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,2,5,6,7,8\n*ELEMENT_BEAM\n3,3,1,5,9\n"
                "*SET_NODE_LIST\n1\n2,3,4\n*BOUNDARY_SPC_SET\n1,0,1,1,1,1,1,1\n" +
                direction + "*DEFINE_CURVE\n1\n0,0\n1,10000\n*END\n");
-  REQUIRE(sim.state->beams.count() == 1);
+  REQUIRE(solver::beams_of(*sim.state) != nullptr);
+  REQUIRE(solver::beams_of(*sim.state)->count() == 1);
   double failed = -1.0;
   long cycles_since = 0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    if (failed < 0.0 && s.beams.eroded[0]) failed = s.time;
+    if (failed < 0.0 && solver::beams_of(s)->eroded[0]) failed = s.time;
   };
   hooks.stop_requested = [&] { return failed >= 0.0 && ++cycles_since > 20; };
   test::run(sim, hooks);
