@@ -89,6 +89,162 @@ bool translate_lsdyna_arguments(std::vector<std::string>& args, std::string& err
   return true;
 }
 
+CLI::App* add_check_command(CLI::App& app, mcdyna::cli::CheckOptions& check) {
+  auto* cmd = app.add_subcommand("check",
+                                 "read and cross-check a deck; print the model "
+                                 "summary and the migration report");
+  cmd->add_option("deck", check.deck, "keyword deck (.k, .key, .dyn)")->required();
+  cmd->add_flag("--allow-unsupported", check.allow_unsupported,
+                "do not fail on unsupported keywords that change the physics");
+  cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
+  cmd->add_option("--case", check.case_id,
+                  "check this *CASE of the deck (default: each case of a deck with *CASE)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
+      ->capture_default_str();
+  return cmd;
+}
+
+CLI::App* add_partition_command(CLI::App& app, mcdyna::cli::PartitionOptions& partition) {
+  auto* cmd = app.add_subcommand(
+      "partition",
+      "the decomposition a run over N processes would use, without running the physics: per "
+      "rank the nodes it owns and reads, the elements and SPG rows it computes, the balance");
+  cmd->add_option("deck", partition.deck, "keyword deck (.k, .key, .dyn)")->required();
+  cmd->add_option("--ranks", partition.ranks, "rank counts, e.g. 2,4,64")
+      ->required()
+      ->delimiter(',');
+  return cmd;
+}
+
+CLI::App* add_run_command(CLI::App& app, mcdyna::cli::RunOptions& run) {
+  auto* cmd = app.add_subcommand("run",
+                                 "run a deck: explicit dynamics, d3plot.pvd states, "
+                                 "ASCII/CSV histories and d3hsp");
+  cmd->add_option("deck", run.deck, "keyword deck (.k, .key, .dyn)")->required();
+  cmd->add_option("--out", run.out_dir, "directory for the outputs (default: working dir)");
+  cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)");
+  cmd->add_option("--restart", run.restart,
+                  "continue from a restart dump (d3dumpNN, runrsf) written by this deck");
+  cmd->add_flag("--allow-unsupported", run.allow_unsupported,
+                "run without unsupported keywords that change the physics");
+  cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");
+  cmd->add_option("--case", run.case_id,
+                  "run this *CASE of the deck (default: each case in turn, into OUT/JOBID)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-messages", run.max_messages, "diagnostics printed (0: all)")
+      ->capture_default_str();
+  cmd->add_option("--spg-stabilization", run.spg_stabilization,
+                  "SPG stabilisation, overriding the sections' ITB: none (plain nodal "
+                  "integration), direct (Eq. 7 smoothing, for studies), mc (MC-SPG, ITB 3), spg "
+                  "(original SPG strain-gradient stabilisation, ITB 1)")
+      ->check(CLI::IsMember({"none", "direct", "mc", "spg"}));
+  cmd->add_option("--spg-renewal-strain", run.spg_renewal_strain,
+                  "KERNEL 0 SPG parts: at an SMSTEP check, renew the kernel of the particles "
+                  "whose Green strain since their last renewal exceeds this (a fifth of it "
+                  "under compression; default 0.1; 0: all particles at every check)")
+      ->check(CLI::NonNegativeNumber);
+
+  cmd->add_option("--spg-mode-control", run.spg_mode_control,
+                  "SPG parts: coefficient of the low-energy-mode stiffness (default from the "
+                  "deck: 0.5 with MSC = 1, else 0; 0 turns it off)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--spg-step", run.spg_step,
+                  "SPG particle step estimate: nn (nearest-neighbour distance; the default "
+                  "for MC-SPG and plain nodal integration) or eigen (stiffness lengths scaled "
+                  "every second cycle to the largest eigenvalue of the linearised equations, "
+                  "by power iteration; the default for ITB 1)")
+      ->check(CLI::IsMember({"nn", "eigen"}));
+  cmd->add_flag("--spg-angular-budget", run.spg_angular_budget,
+                "record every SPG part's angular-momentum budget each cycle and report the "
+                "scheme's own contribution (the gather's first-moment defect, theory.md) at "
+                "the end");
+  cmd->add_option("--fixed-step", run.fixed_step,
+                  "probe: take this step every cycle whatever the stable-step estimate, add no "
+                  "mass, write no restart dump (to measure the true critical step from a dump)")
+      ->check(CLI::PositiveNumber & kFinite);
+  cmd->add_option("--cycles", run.cycles, "stop after this many cycles of this run")
+      ->check(CLI::Range(1L, 1000000000000L));
+  cmd->add_option("--end-time", run.end_time,
+                  "stop at this time instead of the deck's ENDTIM (the outputs' schedule is the "
+                  "deck's)")
+      ->check(CLI::PositiveNumber & kFinite);
+  cmd->add_option("--step-log", run.step_log,
+                  "write one CSV row per cycle: the step, what sets it, and the particle "
+                  "with the smallest step at its physical mass");
+  return cmd;
+}
+
+CLI::App* add_compare_command(CLI::App& app, mcdyna::cli::CompareCommandOptions& cmp) {
+  auto* cmd = app.add_subcommand(
+      "compare",
+      "compare two histories (our CSV, other CSV, LS-DYNA ASCII rcforc/glstat/nodout/spcforc/"
+      "bndout/matsum) column by column; B is the reference");
+  cmd->add_option("a", cmp.a, "history A")->required();
+  cmd->add_option("b", cmp.b, "history B, the reference")->required();
+  cmd->add_option("-c,--column", cmp.compare.columns,
+                  "column to compare: NAME (in both; a quantity like z_force takes all its "
+                  "z_force@... columns), A_NAME:B_NAME, or a 1-based index; repeatable "
+                  "(default: every column the files share)");
+  cmd->add_option("--x", cmp.compare.x_a, "column to align on (name or index)")
+      ->capture_default_str();
+  cmd->add_option("--x-b", cmp.compare.x_b, "alignment column in B when named differently");
+  cmd->add_option("--points", cmp.compare.points,
+                  "resampling points (default: the denser file's count in the common range)")
+      ->check(CLI::Range(std::size_t{2}, kMostPoints));
+  cmd->add_option("--from", cmp.compare.from, "start of the compared range of x")->check(kFinite);
+  cmd->add_option("--to", cmp.compare.to, "end of the compared range of x")->check(kFinite);
+  cmd->add_option("--tol", cmp.tolerance, "exit 1 when a column's max|A-B| / peak|B| exceeds this")
+      ->check(kFinite & CLI::NonNegativeNumber);
+  cmd->add_option("--plot", cmp.plot, "PNG with both curves and their difference");
+  cmd->add_option("--csv", cmp.csv, "write the resampled curves as CSV");
+  return cmd;
+}
+
+// `mcdyna keywords [NAME] [--markdown DIR] [--raw]`.
+struct KeywordsOptions {
+  std::string name;
+  std::string markdown_dir;
+  bool raw = false;
+};
+
+CLI::App* add_keywords_command(CLI::App& app, KeywordsOptions& k) {
+  auto* cmd = app.add_subcommand("keywords", "list supported keywords or print one's card layout");
+  cmd->add_option("name", k.name, "keyword (with or without '*'), e.g. MAT_JOHNSON_COOK");
+  cmd->add_option("--markdown", k.markdown_dir, "write the keyword reference pages into DIR");
+  cmd->add_flag("--raw", k.raw, "print the schema file as embedded");
+  return cmd;
+}
+
+int run_keywords(const KeywordsOptions& k) {
+  const mcdyna::deck::Registry registry;
+  if (!k.markdown_dir.empty()) {
+    if (!mcdyna::cli::write_keyword_pages(k.markdown_dir, registry)) {
+      std::cerr << "mcdyna: cannot write keyword pages into " << k.markdown_dir << "\n";
+      return 1;
+    }
+    return 0;
+  }
+  if (k.name.empty()) {
+    mcdyna::cli::print_keyword_list(std::cout, registry);
+    return 0;
+  }
+  std::string name = mcdyna::deck::upper(k.name);
+  if (!name.empty() && name.front() == '*') name.erase(0, 1);
+  const auto c = registry.classify(name);
+  if (c.schema == nullptr) {
+    std::cerr << fmt::format("mcdyna: *{} is not a supported keyword ({}{})\n", name,
+                             mcdyna::deck::support_name(c.support),
+                             c.reason.empty() ? "" : ": " + c.reason);
+    return 1;
+  }
+  if (k.raw)
+    std::cout << registry.schema_text(c.schema->name);
+  else
+    mcdyna::cli::print_keyword_layout(std::cout, *c.schema, false);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -112,128 +268,15 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mcdyna 0.1");
 
   mcdyna::cli::CheckOptions check;
-  auto* check_cmd = app.add_subcommand("check",
-                                       "read and cross-check a deck; print the model "
-                                       "summary and the migration report");
-  check_cmd->add_option("deck", check.deck, "keyword deck (.k, .key, .dyn)")->required();
-  check_cmd->add_flag("--allow-unsupported", check.allow_unsupported,
-                      "do not fail on unsupported keywords that change the physics");
-  check_cmd->add_flag("-q,--quiet", check.quiet, "print only diagnostics and the verdict");
-  check_cmd
-      ->add_option("--case", check.case_id,
-                   "check this *CASE of the deck (default: each case of a deck with *CASE)")
-      ->check(CLI::PositiveNumber);
-  check_cmd->add_option("--max-messages", check.max_messages, "diagnostics printed (0: all)")
-      ->capture_default_str();
-
+  CLI::App* check_cmd = add_check_command(app, check);
   mcdyna::cli::PartitionOptions partition;
-  auto* partition_cmd = app.add_subcommand(
-      "partition",
-      "the decomposition a run over N processes would use, without running the physics: per "
-      "rank the nodes it owns and reads, the elements and SPG rows it computes, the balance");
-  partition_cmd->add_option("deck", partition.deck, "keyword deck (.k, .key, .dyn)")->required();
-  partition_cmd->add_option("--ranks", partition.ranks, "rank counts, e.g. 2,4,64")
-      ->required()
-      ->delimiter(',');
-
+  CLI::App* partition_cmd = add_partition_command(app, partition);
   mcdyna::cli::RunOptions run;
-  auto* run_cmd = app.add_subcommand("run",
-                                     "run a deck: explicit dynamics, d3plot.pvd states, "
-                                     "ASCII/CSV histories and d3hsp");
-  run_cmd->add_option("deck", run.deck, "keyword deck (.k, .key, .dyn)")->required();
-  run_cmd->add_option("--out", run.out_dir, "directory for the outputs (default: working dir)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)");
-  run_cmd->add_option("--restart", run.restart,
-                      "continue from a restart dump (d3dumpNN, runrsf) written by this deck");
-  run_cmd->add_flag("--allow-unsupported", run.allow_unsupported,
-                    "run without unsupported keywords that change the physics");
-  run_cmd->add_flag("-q,--quiet", run.quiet, "no progress line and summary on success");
-  run_cmd
-      ->add_option("--case", run.case_id,
-                   "run this *CASE of the deck (default: each case in turn, into OUT/JOBID)")
-      ->check(CLI::PositiveNumber);
-  run_cmd->add_option("--max-messages", run.max_messages, "diagnostics printed (0: all)")
-      ->capture_default_str();
-  run_cmd
-      ->add_option("--spg-stabilization", run.spg_stabilization,
-                   "SPG stabilisation, overriding the sections' ITB: none (plain nodal "
-                   "integration), direct (Eq. 7 smoothing, for studies), mc (MC-SPG, ITB 3), spg "
-                   "(original SPG strain-gradient stabilisation, ITB 1)")
-      ->check(CLI::IsMember({"none", "direct", "mc", "spg"}));
-  run_cmd
-      ->add_option("--spg-renewal-strain", run.spg_renewal_strain,
-                   "KERNEL 0 SPG parts: at an SMSTEP check, renew the kernel of the particles "
-                   "whose Green strain since their last renewal exceeds this (a fifth of it "
-                   "under compression; default 0.1; 0: all particles at every check)")
-      ->check(CLI::NonNegativeNumber);
-
-  run_cmd
-      ->add_option("--spg-mode-control", run.spg_mode_control,
-                   "SPG parts: coefficient of the low-energy-mode stiffness (default from the "
-                   "deck: 0.5 with MSC = 1, else 0; 0 turns it off)")
-      ->check(CLI::NonNegativeNumber);
-  run_cmd
-      ->add_option("--spg-step", run.spg_step,
-                   "SPG particle step estimate: nn (nearest-neighbour distance; the default "
-                   "for MC-SPG and plain nodal integration) or eigen (stiffness lengths scaled "
-                   "every second cycle to the largest eigenvalue of the linearised equations, "
-                   "by power iteration; the default for ITB 1)")
-      ->check(CLI::IsMember({"nn", "eigen"}));
-  run_cmd->add_flag("--spg-angular-budget", run.spg_angular_budget,
-                    "record every SPG part's angular-momentum budget each cycle and report the "
-                    "scheme's own contribution (the gather's first-moment defect, theory.md) at "
-                    "the end");
-  run_cmd
-      ->add_option("--fixed-step", run.fixed_step,
-                   "probe: take this step every cycle whatever the stable-step estimate, add no "
-                   "mass, write no restart dump (to measure the true critical step from a dump)")
-      ->check(CLI::PositiveNumber & kFinite);
-  run_cmd->add_option("--cycles", run.cycles, "stop after this many cycles of this run")
-      ->check(CLI::Range(1L, 1000000000000L));
-  run_cmd
-      ->add_option("--end-time", run.end_time,
-                   "stop at this time instead of the deck's ENDTIM (the outputs' schedule is the "
-                   "deck's)")
-      ->check(CLI::PositiveNumber & kFinite);
-  run_cmd->add_option("--step-log", run.step_log,
-                      "write one CSV row per cycle: the step, what sets it, and the particle "
-                      "with the smallest step at its physical mass");
-
+  CLI::App* run_cmd = add_run_command(app, run);
   mcdyna::cli::CompareCommandOptions cmp;
-  auto* cmp_cmd = app.add_subcommand(
-      "compare",
-      "compare two histories (our CSV, other CSV, LS-DYNA ASCII rcforc/glstat/nodout/spcforc/"
-      "bndout/matsum) column by column; B is the reference");
-  cmp_cmd->add_option("a", cmp.a, "history A")->required();
-  cmp_cmd->add_option("b", cmp.b, "history B, the reference")->required();
-  cmp_cmd->add_option("-c,--column", cmp.compare.columns,
-                      "column to compare: NAME (in both; a quantity like z_force takes all its "
-                      "z_force@... columns), A_NAME:B_NAME, or a 1-based index; repeatable "
-                      "(default: every column the files share)");
-  cmp_cmd->add_option("--x", cmp.compare.x_a, "column to align on (name or index)")
-      ->capture_default_str();
-  cmp_cmd->add_option("--x-b", cmp.compare.x_b, "alignment column in B when named differently");
-  cmp_cmd
-      ->add_option("--points", cmp.compare.points,
-                   "resampling points (default: the denser file's count in the common range)")
-      ->check(CLI::Range(std::size_t{2}, kMostPoints));
-  cmp_cmd->add_option("--from", cmp.compare.from, "start of the compared range of x")
-      ->check(kFinite);
-  cmp_cmd->add_option("--to", cmp.compare.to, "end of the compared range of x")->check(kFinite);
-  cmp_cmd
-      ->add_option("--tol", cmp.tolerance, "exit 1 when a column's max|A-B| / peak|B| exceeds this")
-      ->check(kFinite & CLI::NonNegativeNumber);
-  cmp_cmd->add_option("--plot", cmp.plot, "PNG with both curves and their difference");
-  cmp_cmd->add_option("--csv", cmp.csv, "write the resampled curves as CSV");
-
-  std::string keyword_name;
-  std::string markdown_dir;
-  bool raw = false;
-  auto* kw_cmd =
-      app.add_subcommand("keywords", "list supported keywords or print one's card layout");
-  kw_cmd->add_option("name", keyword_name, "keyword (with or without '*'), e.g. MAT_JOHNSON_COOK");
-  kw_cmd->add_option("--markdown", markdown_dir, "write the keyword reference pages into DIR");
-  kw_cmd->add_flag("--raw", raw, "print the schema file as embedded");
+  CLI::App* cmp_cmd = add_compare_command(app, cmp);
+  KeywordsOptions keywords;
+  add_keywords_command(app, keywords);
 
   try {
     std::vector<std::string> reversed(args.rbegin(), args.rend());
@@ -254,33 +297,7 @@ int main(int argc, char** argv) {
     if (*partition_cmd) return mcdyna::cli::run_partition(partition, std::cout, std::cerr);
     if (*run_cmd) return mcdyna::cli::run_deck(run, std::cout, std::cerr);
     if (*cmp_cmd) return mcdyna::cli::run_compare(cmp, std::cout, std::cerr);
-    const mcdyna::deck::Registry registry;
-    if (!markdown_dir.empty()) {
-      if (!mcdyna::cli::write_keyword_pages(markdown_dir, registry)) {
-        std::cerr << "mcdyna: cannot write keyword pages into " << markdown_dir << "\n";
-        return 1;
-      }
-      return 0;
-    }
-    if (keyword_name.empty()) {
-      mcdyna::cli::print_keyword_list(std::cout, registry);
-      return 0;
-    }
-    std::string name = mcdyna::deck::upper(keyword_name);
-    if (!name.empty() && name.front() == '*') name.erase(0, 1);
-    const auto c = registry.classify(name);
-    if (c.schema == nullptr) {
-      std::cerr << fmt::format("mcdyna: *{} is not a supported keyword ({}{})\n", name,
-                               mcdyna::deck::support_name(c.support),
-                               c.reason.empty() ? "" : ": " + c.reason);
-      return 1;
-    }
-    if (raw) {
-      std::cout << registry.schema_text(c.schema->name);
-    } else {
-      mcdyna::cli::print_keyword_layout(std::cout, *c.schema, false);
-    }
-    return 0;
+    return run_keywords(keywords);
   } catch (const std::exception& e) {
     std::cerr << "mcdyna: internal error: " << e.what() << "\n";
     return 3;

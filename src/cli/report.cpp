@@ -151,19 +151,9 @@ ModelCounts count_model(const model::ModelDatabase& m) {
   return c;
 }
 
-void print_summary(std::ostream& out, const deck::Deck& deck, const model::ModelDatabase& m,
-                   const ModelCounts& counts) {
-  fmt::print(out, "Model summary\n");
-  if (!m.title.empty()) fmt::print(out, "  title            {}\n", m.title);
-  fmt::print(out, "  files            {} ({:.1f} MB)\n", deck.files.size() - 1,
-             static_cast<double>(deck.bytes_read) / 1.0e6);
-  fmt::print(out, "  nodes            {}\n", m.nodes.size());
-  fmt::print(out, "  solid elements   {}\n", m.solids.size());
-  fmt::print(out, "  shell elements   {}\n", m.shells.size());
-  if (!m.beams.empty()) fmt::print(out, "  beam elements    {}\n", m.beams.size());
-  if (!m.discretes.empty()) fmt::print(out, "  discrete elements {}\n", m.discretes.size());
-  fmt::print(out, "  SPG particles    {}\n", counts.spg_particles);
-  fmt::print(out, "  parameters       {}\n", deck.parameters.size());
+namespace {
+
+void print_parts(std::ostream& out, const model::ModelDatabase& m, const ModelCounts& counts) {
   if (!m.parts.empty()) {
     fmt::print(out, "\nParts\n  {:>8} {:>10}  {:<26} {:<36} {:<10} {}\n", "ID", "elements",
                "section", "material", "EOS", "heading");
@@ -186,6 +176,9 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
     fmt::print(out, "  {} x{}", k, n);
   fmt::print(out, "\nEOS              {}   hourglass sets {}   erosion criteria {}\n",
              m.equations_of_state.size(), m.hourglasses.size(), m.erosions.size());
+}
+
+void print_contacts(std::ostream& out, const model::ModelDatabase& m) {
   fmt::print(out, "\nContacts         {}\n", m.contacts.size());
   for (const model::Contact& c : m.contacts) {
     if (c.kind == model::ContactKind::force_transducer) {
@@ -200,6 +193,9 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
                side_type_name(c.a.type), c.a.id, side_type_name(c.b.type), c.b.id,
                c.static_friction, c.dynamic_friction);
   }
+}
+
+void print_conditions(std::ostream& out, const model::ModelDatabase& m) {
   std::size_t spc_nodes = 0, spc_sets = 0;
   for (const auto& s : m.spcs)
     (s.is_set ? spc_sets : spc_nodes)++;
@@ -221,6 +217,9 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
              "\nCurves {}  vectors {}  boxes {}  node sets {}  part sets {}  segment sets {}\n",
              m.curves.size(), m.vectors.size(), m.boxes.size(), m.node_sets.size(),
              m.part_sets.size(), m.segment_sets.size());
+}
+
+void print_outputs_and_controls(std::ostream& out, const model::ModelDatabase& m) {
   fmt::print(out, "\nOutputs\n");
   if (m.outputs.d3plot) {
     fmt::print(out, "  d3plot states every {} (VTK series d3plot.pvd)\n",
@@ -245,6 +244,27 @@ void print_summary(std::ostream& out, const deck::Deck& deck, const model::Model
                m.controls.time_step->scale_factor, m.controls.time_step->initial_step,
                m.controls.time_step->mass_scaling_step);
   }
+}
+
+}  // namespace
+
+void print_summary(std::ostream& out, const deck::Deck& deck, const model::ModelDatabase& m,
+                   const ModelCounts& counts) {
+  fmt::print(out, "Model summary\n");
+  if (!m.title.empty()) fmt::print(out, "  title            {}\n", m.title);
+  fmt::print(out, "  files            {} ({:.1f} MB)\n", deck.files.size() - 1,
+             static_cast<double>(deck.bytes_read) / 1.0e6);
+  fmt::print(out, "  nodes            {}\n", m.nodes.size());
+  fmt::print(out, "  solid elements   {}\n", m.solids.size());
+  fmt::print(out, "  shell elements   {}\n", m.shells.size());
+  if (!m.beams.empty()) fmt::print(out, "  beam elements    {}\n", m.beams.size());
+  if (!m.discretes.empty()) fmt::print(out, "  discrete elements {}\n", m.discretes.size());
+  fmt::print(out, "  SPG particles    {}\n", counts.spg_particles);
+  fmt::print(out, "  parameters       {}\n", deck.parameters.size());
+  print_parts(out, m, counts);
+  print_contacts(out, m);
+  print_conditions(out, m);
+  print_outputs_and_controls(out, m);
 }
 
 std::size_t print_migration_report(std::ostream& out, const deck::Deck& deck,
