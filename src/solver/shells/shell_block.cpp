@@ -2,6 +2,7 @@
 // corner forces and moments into the nodes.
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/fe/element_energies.hpp"
 #include "solver/results.hpp"
 #include "solver/shells/shell_elements.hpp"
 #include "solver/shells/shells_dump.hpp"
@@ -37,11 +38,7 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
 
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    const Shells& sh = s.shells;
-    for (std::size_t i = 0; i < sh.ids.size(); ++i) {
-      (sh.eroded[i] ? e.eroded_internal : e.internal) += sh.internal_energy[i];
-      (sh.eroded[i] ? e.eroded_hourglass : e.hourglass) += sh.hourglass_energy[i];
-    }
+    fe::add_element_energies(s.shells, e);
   }
 
   // Kinetic energy and momentum from each element's lumped mass and corner inertia, so shared

@@ -5,6 +5,7 @@
 
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/fe/element_energies.hpp"
 #include "solver/results.hpp"
 #include "solver/solids/solid_elements.hpp"
 #include "solver/solids/solids_dump.hpp"
@@ -32,11 +33,7 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
 
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    const Solids& so = s.solids;
-    for (std::size_t i = 0; i < so.ids.size(); ++i) {
-      (so.eroded[i] ? e.eroded_internal : e.internal) += so.internal_energy[i];
-      (so.eroded[i] ? e.eroded_hourglass : e.hourglass) += so.hourglass_energy[i];
-    }
+    fe::add_element_energies(s.solids, e);
   }
 
   // Kinetic energy and momentum from each element's lumped mass (1/8 per corner), so shared
