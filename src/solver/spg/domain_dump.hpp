@@ -76,7 +76,8 @@ void fields(Ar& ar, Domain& d) {
 }
 
 inline constexpr auto kDomainDumpedSizes = sizes_of<Domain, SpgSettings, StepBound>();
-static_assert(!kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1984, 96, 112},
-              "spg::Domain, SpgSettings or StepBound changed: list the new member in fields() above");
+static_assert(
+    !kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1984, 96, 112},
+    "spg::Domain, SpgSettings or StepBound changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver::spg
