@@ -79,6 +79,11 @@ void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagno
 void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+/// The nodes a rigid wall tracks: its node set (0: every node), less the exempted set, inside
+/// its box, with mass and not of a rigid body; for NSID 0 within OFFSET of the plane (point,
+/// normal) when OFFSET > 0.
+std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
+                              const model::RigidWall& w, const Vec3& point, const Vec3& normal);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one

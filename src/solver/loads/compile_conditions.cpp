@@ -342,6 +342,28 @@ void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::D
   }
 }
 
+std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
+                              const model::RigidWall& w, const Vec3& point, const Vec3& normal) {
+  const model::Box* box = box_of(m, w.box);
+  std::vector<Index> nodes = w.node_set == 0 ? all_nodes(s) : node_set_nodes(m, w.node_set);
+  std::vector<Index> exempt =
+      w.exempted_set == 0 ? std::vector<Index>{} : node_set_nodes(m, w.exempted_set);
+  std::vector<Index> out;
+  for (const Index node : nodes) {
+    const auto i = static_cast<std::size_t>(node);
+    if (s.nodes.rigid_body[i] >= 0 || !(s.nodes.mass[i] > 0.0)) continue;
+    if (std::binary_search(exempt.begin(), exempt.end(), node)) continue;
+    const Vec3 x = s.nodes.initial.col(node);
+    if (!inside(box, x)) continue;
+    if (w.node_set == 0 && w.offset > 0.0) {
+      const double dist = (x - point).dot(normal);
+      if (dist < 0.0 || dist > w.offset) continue;
+    }
+    out.push_back(node);
+  }
+  return out;
+}
+
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (const model::RigidWall& w : m.rigid_walls) {
     RigidWallState rw;
@@ -378,22 +400,7 @@ void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnost
       rw.velocity = w.initial_velocity;
       if (!(w.mass > 0.0)) d.error(w.loc, "*RIGIDWALL_PLANAR_MOVING: MASS must be > 0");
     }
-    const model::Box* box = box_of(m, w.box);
-    std::vector<Index> nodes = w.node_set == 0 ? all_nodes(s) : node_set_nodes(m, w.node_set);
-    std::vector<Index> exempt =
-        w.exempted_set == 0 ? std::vector<Index>{} : node_set_nodes(m, w.exempted_set);
-    for (const Index node : nodes) {
-      const auto i = static_cast<std::size_t>(node);
-      if (s.nodes.rigid_body[i] >= 0 || !(s.nodes.mass[i] > 0.0)) continue;
-      if (std::binary_search(exempt.begin(), exempt.end(), node)) continue;
-      const Vec3 x = s.nodes.initial.col(node);
-      if (!inside(box, x)) continue;
-      if (w.node_set == 0 && w.offset > 0.0) {
-        const double dist = (x - rw.point).dot(rw.normal);
-        if (dist < 0.0 || dist > w.offset) continue;
-      }
-      rw.nodes.push_back(node);
-    }
+    rw.nodes = wall_nodes(m, s, w, rw.point, rw.normal);
     s.rigid_walls.push_back(std::move(rw));
   }
 }

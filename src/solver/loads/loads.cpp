@@ -20,7 +20,6 @@ void apply_body_loads(State& state) {
     if (!b.released) b.body_force = -b.mass * a;
 }
 
-namespace {
 double nodal_mass(const Nodes& nd, Index n) {
   const auto i = static_cast<std::size_t>(n);
   return nd.mass[i] + nd.added_mass[i];
@@ -33,7 +32,28 @@ double nodal_mass(const Nodes& nd, Index n) {
 double impulse_work(const Vec3& impulse, const Vec3& v_start, const Vec3& v_end) {
   return 0.5 * impulse.dot(v_start + v_end);
 }
-}  // namespace
+
+WallLanding land_on_wall(Nodes& nd, Index n, const StepTimes& t, double gap, const Vec3& normal,
+                         const Vec3& wall_velocity, double friction) {
+  WallLanding l;
+  Vec3 v = nd.velocity.col(n);
+  const Vec3 v_before = v;
+  l.start = v - t.mean * Vec3(nd.acceleration.col(n));  // v^{n-1/2}
+  l.normal_change = -gap / t.step;  // normal velocity change that lands the node on the wall
+  v += l.normal_change * normal;
+  if (friction > 0.0) {
+    const Vec3 relative = v - wall_velocity;
+    const Vec3 vt = relative - relative.dot(normal) * normal;
+    const double speed = vt.norm();
+    const double allowed = friction >= 1.0 ? speed : friction * l.normal_change;
+    if (speed > 0.0) v -= std::min(speed, allowed) / speed * vt;
+  }
+  l.change = v - v_before;
+  l.end = v;
+  nd.velocity.col(n) = v;
+  nd.acceleration.col(n) += l.change / t.mean;
+  return l;
+}
 
 void apply_nodal_constraints(State& state, const StepTimes& t) {
   NodalConstraints& c = state.constraints;
@@ -115,25 +135,14 @@ void apply_rigid_walls(State& state, const StepTimes& t) {
           continue;
       }
       const double m = nodal_mass(nd, n);
-      const Vec3 v_before = v;
-      const Vec3 v_start = v - t.mean * Vec3(nd.acceleration.col(n));  // v^{n-1/2}
-      const double dvn = -gap / t.step;  // normal velocity change that lands the node on the wall
-      v += dvn * w.normal;
-      if (w.friction > 0.0) {
-        const Vec3 vt = v - v.dot(w.normal) * w.normal;  // the wall moves along its normal only
-        const double speed = vt.norm();
-        const double allowed = w.friction >= 1.0 ? speed : w.friction * dvn;
-        if (speed > 0.0) v -= std::min(speed, allowed) / speed * vt;
-      }
-      const Vec3 dv = v - v_before;
-      nd.velocity.col(n) = v;
-      nd.acceleration.col(n) += dv / t.mean;
+      // The wall moves along its normal only: no velocity of its own across it.
+      const WallLanding l = land_on_wall(nd, n, t, gap, w.normal, Vec3::Zero(), w.friction);
       if (!own.owns_node(n)) continue;  // a replicated node counts on its owner only
-      const Vec3 f = -m * dv / t.mean;
+      const Vec3 f = -m * l.change / t.mean;
       for (int k = 0; k < 3; ++k)
         sums[static_cast<std::size_t>(kForceX + k)].add(f[k]);
-      sums[kImpulse].add(m * dvn);
-      sums[kWork].add(impulse_work(m * dv, v_start, v));
+      sums[kImpulse].add(m * l.normal_change);
+      sums[kWork].add(impulse_work(m * l.change, l.start, l.end));
     }
     const std::vector<double> total = own.comm.sum(sums);
     w.force = Vec3(total[kForceX], total[kForceY], total[kForceZ]);
