@@ -366,9 +366,11 @@ void check_conditions(const ModelDatabase& m, core::Diagnostics& diags) {
   for (const BodyLoad& b : m.body_loads)
     need(ix.curves, b.curve, b.curve_loc, "curve", "*LOAD_BODY", diags);
   for (const RigidWall& w : m.rigid_walls) {
-    need(ix.node_sets, w.node_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);
-    need(ix.node_sets, w.exempted_set, w.loc, "node set", "*RIGIDWALL_PLANAR", diags, true);
-    need(ix.boxes, w.box, w.loc, "box", "*RIGIDWALL_PLANAR", diags, true);
+    const char* user = w.shape == WallShape::planar ? "*RIGIDWALL_PLANAR" : "*RIGIDWALL_GEOMETRIC";
+    need(ix.node_sets, w.node_set, w.loc, "node set", user, diags, true);
+    need(ix.node_sets, w.exempted_set, w.loc, "node set", user, diags, true);
+    need(ix.boxes, w.box, w.loc, "box", user, diags, true);
+    need(ix.curves, w.motion_curve, w.motion_loc, "curve (LCID)", user, diags, true);
   }
 }
 

@@ -191,7 +191,11 @@ struct InitialVelocity {
   core::SourceLoc loc;
 };
 
+/// *RIGIDWALL_PLANAR, or one of *RIGIDWALL_GEOMETRIC's shapes.
+enum class WallShape { planar, flat, prism, cylinder, sphere };
+
 struct RigidWall {
+  WallShape shape = WallShape::planar;
   Id id = 0;
   std::string heading;
   Id node_set = 0;  ///< 0 = all nodes
@@ -207,7 +211,15 @@ struct RigidWall {
   double length_l = 0.0, length_m = 0.0;
   bool moving = false;
   double mass = 0.0, initial_velocity = 0.0;
-  core::SourceLoc loc;
+  /// Geometric walls: the prism's LENP, the cylinder's and sphere's radius, the cylinder's
+  /// length (0: infinite).
+  double length_p = 0.0, radius = 0.0, cylinder_length = 0.0;
+  /// _MOTION: the wall translates along `motion_direction` by the curve's velocity (or, with
+  /// OPT 1, displacement) at t - BIRTH.
+  Id motion_curve = 0;
+  bool motion_is_displacement = false;
+  Vec3 motion_direction{};
+  core::SourceLoc loc, motion_loc;
 };
 
 }  // namespace mcdyna::model

@@ -84,6 +84,8 @@ void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnost
 /// normal) when OFFSET > 0.
 std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
                               const model::RigidWall& w, const Vec3& point, const Vec3& normal);
+void compile_geometric_walls(const model::ModelDatabase& m, State& s, Blocks& own,
+                             core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one

@@ -72,6 +72,8 @@ void initial_velocity(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_node(KeywordRecord& r, model::ModelDatabase& m);
 void initial_velocity_generation(KeywordRecord& r, model::ModelDatabase& m);
 void rigidwall_planar(KeywordRecord& r, model::ModelDatabase& m);
+// rigidwall_geometric.cpp
+void rigidwall_geometric(KeywordRecord& r, model::ModelDatabase& m);
 // constrained.cpp
 void constrained_extra_nodes(KeywordRecord& r, model::ModelDatabase& m);
 void constrained_rigid_bodies(KeywordRecord& r, model::ModelDatabase& m);

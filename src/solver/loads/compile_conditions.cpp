@@ -366,6 +366,7 @@ std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
 
 void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   for (const model::RigidWall& w : m.rigid_walls) {
+    if (w.shape != model::WallShape::planar) continue;  // geometric walls: walls/
     RigidWallState rw;
     rw.id = w.id != 0 ? w.id : static_cast<model::Id>(s.rigid_walls.size() + 1);
     rw.point = Vec3(w.tail[0], w.tail[1], w.tail[2]);

@@ -42,11 +42,23 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
   // bodies (whole before any condition reads them: the line that stops at errors), joints,
   // constraints, motions, then the SPG parts that these pin, their initial velocities, the
   // walls that track their nodes, and contact, whose slave nodes they are.
-  const char* const expected[] = {
-      "solids",      "shells",     "beams",         "rigid bodies",   "joints",
-      "constraints", "motions",    "spg",           "discrete",       "initial velocities",
-      "rigid walls", "body loads", "applied loads", "global damping", "contact",
-      "ties"};
+  const char* const expected[] = {"solids",
+                                  "shells",
+                                  "beams",
+                                  "rigid bodies",
+                                  "joints",
+                                  "constraints",
+                                  "motions",
+                                  "spg",
+                                  "discrete",
+                                  "initial velocities",
+                                  "rigid walls",
+                                  "geometric walls",
+                                  "body loads",
+                                  "applied loads",
+                                  "global damping",
+                                  "contact",
+                                  "ties"};
   REQUIRE(order.size() == std::size(expected));
   for (std::size_t i = 0; i < order.size(); ++i)
     CHECK(order[i] == expected[i]);

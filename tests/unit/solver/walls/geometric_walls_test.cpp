@@ -1,0 +1,161 @@
+// Geometric rigid walls (solver/walls/) against closed forms: a 1 kg elastic cube (one
+// hexahedron, 0.1 m, E 1 GPa: its own vibration far faster and smaller than the motions checked)
+// on a flat wall with friction, set on a cylinder and on a sphere, driven into a prism, and
+// carried by a moving wall. TSSFAC 0.6: a lone one-point hexahedron with free corners breathes
+// above its step estimate (verification.md "Lone elements").
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "solver_support.hpp"
+
+using namespace mcdyna;
+
+namespace {
+
+// The cube's corners at x, y in [-0.05, 0.05] + (cx, cy), z in [cz, cz + 0.1]; gravity g
+// along -z; initial velocity (vx, 0, vz); `wall` the wall's keyword (and its curves).
+struct Cube {
+  double cx = 0.0, cy = 0.0, cz = 0.0;
+  double vx = 0.0, vz = 0.0, gravity = 0.0, end = 0.5;
+};
+
+std::string cube_deck(const Cube& c, const std::string& wall) {
+  std::string nodes = "*NODE\n";
+  int id = 1;
+  for (const double z : {c.cz, c.cz + 0.1})
+    for (const auto& [x, y] : {std::pair{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
+      nodes += fmt::format("{},{},{},{:.17g}\n", id++, c.cx + x, c.cy + y, z);
+  return fmt::format(
+      "*KEYWORD\n*CONTROL_TERMINATION\n{}\n*CONTROL_TIMESTEP\n0,0.6\n*PART\ncube\n1,1,1\n"
+      "*SECTION_SOLID\n1\n*MAT_ELASTIC\n1,1000,1e9,0.3\n{}*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n"
+      "*INITIAL_VELOCITY_GENERATION\n1,2,0,{},0,{}\n0,0,0,0,0,0\n"
+      "*LOAD_BODY_Z\n1\n*DEFINE_CURVE\n1\n0,{}\n100,{}\n{}*END\n",
+      c.end, nodes, c.vx, c.vz, c.gravity, c.gravity, wall);
+}
+
+struct Track {
+  std::vector<double> time, x, vx;  ///< the cube's mean x and vx
+  std::vector<double> z_bottom;     ///< node 1's z (a bottom corner)
+  std::vector<double> front;        ///< node 2's x (on the face x = cx + 0.05)
+};
+
+Track run_cube(const std::string& deck) {
+  test::TempDir dir;
+  test::Simulation sim = test::prepare(dir, deck);
+  Track tr;
+  solver::RunHooks hooks;
+  hooks.progress = [&](const solver::State& s) {
+    double x = 0.0, vx = 0.0;
+    for (solver::Index n = 0; n < 8; ++n) {
+      x += s.nodes.position(0, n) / 8.0;
+      vx += s.nodes.velocity(0, n) / 8.0;
+    }
+    tr.time.push_back(s.time);
+    tr.x.push_back(x);
+    tr.vx.push_back(vx);
+    tr.z_bottom.push_back(s.nodes.position(2, 0));
+    tr.front.push_back(s.nodes.position(0, 1));
+  };
+  test::run(sim, hooks);
+  REQUIRE(sim.result.reason == solver::StopReason::end_time);
+  REQUIRE(tr.time.size() > 100);
+  return tr;
+}
+
+// The flat wall z = 0 (normal +z), 10 x 10 from its tail at (-5, -5).
+std::string flat_wall(double friction) {
+  return fmt::format("0,0,0,0,1e20\n-5,-5,0,-5,-5,1,{}\n5,-5,0,10,10\n", friction);
+}
+
+}  // namespace
+
+TEST_CASE("geometric flat wall: a block sliding under Coulomb friction stops at v0^2 / (2 mu g)") {
+  // mu 0.2, g 10, v0 1 m/s: deceleration 2 m/s^2, at rest after 0.5 s, 0.25 m on.
+  Cube c;
+  c.vx = 1.0;
+  c.gravity = 10.0;
+  c.end = 0.7;
+  const Track tr = run_cube(cube_deck(c, "*RIGIDWALL_GEOMETRIC_FLAT\n" + flat_wall(0.2)));
+  double speed_at_quarter = 0.0, x_stopped = 0.0, creep = 0.0;
+  for (std::size_t i = 0; i < tr.time.size(); ++i) {
+    if (tr.time[i] <= 0.25) speed_at_quarter = tr.vx[i];
+    if (tr.time[i] <= 0.55) x_stopped = tr.x[i];
+    creep = std::max(creep, std::abs(tr.x[i] - x_stopped));
+  }
+  const double travel = tr.x.back() - tr.x.front();
+  MESSAGE("travel ", travel, " m (0.25), speed at 0.25 s ", speed_at_quarter,
+          " m/s (0.5), moved after 0.55 s ", creep, " m; bottom z ", tr.z_bottom.back());
+  // The stop falls inside a step: v0 dt = 5e-5 m of 0.25 m (2e-4; measured -1.9e-4).
+  CHECK(travel == doctest::Approx(0.25).epsilon(5e-4));
+  CHECK(speed_at_quarter == doctest::Approx(0.5).epsilon(5e-4));
+  // At rest from 0.5 s: sticking holds it (at 2 m/s^2 it would cover 0.01 m in 0.1 s).
+  CHECK(creep < 1e-6);
+  CHECK(std::abs(tr.z_bottom.back()) < 1e-9);
+}
+
+TEST_CASE("geometric cylinder and sphere walls: a block set on top of them stays there") {
+  // The bottom corners (x, y = +-0.05) start on the surface: on a cylinder of radius 1 along y
+  // at z = sqrt(1 - 0.05^2) = 0.998749, on a sphere at sqrt(1 - 2 0.05^2) = 0.997497. Gravity
+  // (10 m/s^2 for 0.4 s: 0.8 m of fall without the wall) presses them on it; FRIC 1 (no sliding)
+  // keeps them there, the cube's elastic settling (rho g L / E, 1e-8) aside.
+  Cube c;
+  c.gravity = 10.0;
+  c.end = 0.4;
+  for (const bool sphere : {false, true}) {
+    const double surface = std::sqrt(1.0 - (sphere ? 0.005 : 0.0025));
+    c.cz = surface;
+    const Track tr = run_cube(cube_deck(
+        c, sphere ? "*RIGIDWALL_GEOMETRIC_SPHERE\n0,0,0,0,1e20\n0,0,0,0,0,1,1.0\n1.0\n"
+                  : "*RIGIDWALL_GEOMETRIC_CYLINDER\n0,0,0,0,1e20\n0,-5,0,0,5,0,1.0\n1.0,10,0\n"));
+    const double lowest = *std::min_element(tr.z_bottom.begin(), tr.z_bottom.end());
+    MESSAGE((sphere ? "sphere" : "cylinder"), ": bottom corner z at the end ",
+            fmt::format("{:.9f}", tr.z_bottom.back()), ", lowest ", fmt::format("{:.9f}", lowest),
+            " (", fmt::format("{:.9f}", surface), ")");
+    CHECK(tr.z_bottom.back() == doctest::Approx(surface).epsilon(1e-7));
+    CHECK(lowest == doctest::Approx(surface).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("geometric prism wall: a block driven into its face meets it on time, never crosses") {
+  // The box spans x 1..2, y and z -1..1 from the tail (l along x, m along y, the normal along z);
+  // the block's front face (x = 0.55) reaches x = 1 at 0.45 s. The front nodes stop there
+  // (plastic), the rest of the elastic block rings against them and sends it back.
+  Cube c;
+  c.cx = 0.5;
+  c.cz = -0.05;
+  c.vx = 1.0;
+  c.end = 0.8;
+  const Track tr = run_cube(
+      cube_deck(c, "*RIGIDWALL_GEOMETRIC_PRISM\n0,0,0,0,1e20\n1,-1,-1,1,-1,1,0\n2,-1,-1,1,2,2\n"));
+  double contact = -1.0, furthest = 0.0, step = 0.0;
+  for (std::size_t i = 0; i < tr.time.size(); ++i) {
+    furthest = std::max(furthest, tr.front[i]);
+    if (i > 0) step = std::max(step, tr.time[i] - tr.time[i - 1]);
+    if (contact < 0.0 && tr.front[i] >= 1.0 - 1e-12) contact = tr.time[i];
+  }
+  MESSAGE("front face on x = 1 at ", contact, " s (0.45, step ", step, "); furthest ",
+          fmt::format("{:.12f}", furthest), "; mean vx at the end ", tr.vx.back());
+  CHECK(std::abs(contact - 0.45) <= step);
+  CHECK(furthest <= 1.0 + 1e-12);
+  CHECK(tr.vx.back() < 0.0);
+}
+
+TEST_CASE("geometric wall with _MOTION: a block on a rising wall rides it, node on wall") {
+  // The flat wall at z = 0 rises at 0.5 m/s (OPT 0, a velocity curve; OPT 1 the displacement
+  // curve 0.5 t): under gravity the block's bottom node stays on it, z = 0.5 t.
+  Cube c;
+  c.gravity = 10.0;
+  c.end = 0.5;
+  for (const std::string opt : {"0", "1"}) {
+    const std::string curve =
+        opt == "0" ? "*DEFINE_CURVE\n2\n0,0.5\n10,0.5\n" : "*DEFINE_CURVE\n2\n0,0\n10,5\n";
+    const Track tr = run_cube(cube_deck(
+        c, "*RIGIDWALL_GEOMETRIC_FLAT_MOTION\n" + flat_wall(0) + "2," + opt + ",0,0,1\n" + curve));
+    MESSAGE("OPT ", opt, ": bottom z at ", tr.time.back(), " s: ", tr.z_bottom.back());
+    CHECK(tr.z_bottom.back() == doctest::Approx(0.5 * tr.time.back()).epsilon(1e-6));
+  }
+}
