@@ -159,3 +159,29 @@ TEST_CASE("geometric wall with _MOTION: a block on a rising wall rides it, node 
     CHECK(tr.z_bottom.back() == doctest::Approx(0.5 * tr.time.back()).epsilon(1e-6));
   }
 }
+
+TEST_CASE("geometric walls: a run continued from a dump ends with the same bytes") {
+  // The sliding block (tests/regression/sliding_block), its wall moving: a dump at cycle 4,000 of
+  // about 14,400, continued to the end, writes the histories of the run that went through.
+  test::TempDir dir;
+  std::string deck = test::source_text("tests/regression/sliding_block/sliding_block.k");
+  const std::string wall = "*RIGIDWALL_GEOMETRIC_FLAT\n";
+  REQUIRE(deck.find(wall) != std::string::npos);
+  deck.replace(deck.find(wall), wall.size(), "*RIGIDWALL_GEOMETRIC_FLAT_MOTION\n");
+  deck.replace(
+      deck.find("*END"), 4,
+      "         2         0       0.0       0.0       1.0\n*DEFINE_CURVE\n2\n0,0.01\n10,0.01\n"
+      "*DATABASE_BINARY_D3DUMP\n      4000\n*END");
+  const std::filesystem::path path = dir.write("block.k", deck);
+  const std::filesystem::path through = dir.path() / "through", resumed = dir.path() / "resumed";
+  auto run = [&](const std::filesystem::path& out, const std::string& more) {
+    const test::Run r =
+        test::run_mcdyna("run " + path.string() + " --out " + out.string() + " -q " + more);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  };
+  run(through, "");
+  std::filesystem::copy(through, resumed);
+  run(resumed, "--restart " + (resumed / "d3dump01").string());
+  for (const char* f : {"glstat.csv", "nodout.csv"})
+    CHECK_MESSAGE(test::read_text(through / f) == test::read_text(resumed / f), f);
+}
