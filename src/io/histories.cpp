@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/history_file.hpp"
+#include "solver/block.hpp"
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
 
@@ -64,8 +65,9 @@ class Glstat final : public HistoryFile {
     line("time step", s.step);
     line("kinetic energy", e.kinetic);
     line("internal energy", e.internal);
-    for (std::size_t w = 0; w < s.rigid_walls.size(); ++w)
-      ascii(" {:.<31}{:14.5E} wall#{:2d}\n", "stonewall energy", s.rigid_walls[w].energy,
+    const std::vector<solver::WallRecord> walls = solver::wall_records(s);
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      ascii(" {:.<31}{:14.5E} wall#{:2d}\n", "stonewall energy", walls[w].energy,
             static_cast<int>(w + 1));
     ascii(" hourglass energy ..............{:14.5E}\n", e.hourglass);
     line("system damping energy", 0.0);
@@ -222,13 +224,12 @@ class Rwforc final : public HistoryFile {
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
-    for (const solver::RigidWallState& w : s.rigid_walls) {
-      // Force of the structure on the wall; the normal force is positive in contact.
-      const double normal = -w.force.dot(w.normal);
-      ascii("{:12.5E}{:8d}{:15.6E}{:15.6E}{:15.6E}{:15.6E}\n", s.time, w.id, normal, w.force[0],
-            w.force[1], w.force[2]);
-      csv("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, w.id, normal, w.force[0], w.force[1],
-          w.force[2]);
+    // Force of the structure on the wall; the normal force is positive in contact.
+    for (const solver::WallRecord& w : solver::wall_records(s)) {
+      ascii("{:12.5E}{:8d}{:15.6E}{:15.6E}{:15.6E}{:15.6E}\n", s.time, w.id, w.normal_force,
+            w.force[0], w.force[1], w.force[2]);
+      csv("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, w.id, w.normal_force, w.force[0],
+          w.force[1], w.force[2]);
     }
     flush();
   }

@@ -40,6 +40,15 @@ struct ForceReport {
   }
 };
 
+/// A rigid wall's line in rwforc and glstat: its ID, the normal force on it (positive in contact),
+/// the force on it from the nodes, last step, and the work it has taken.
+struct WallRecord {
+  model::Id id = 0;
+  double normal_force = 0.0;
+  Vec3 force = Vec3::Zero();
+  double energy = 0.0;
+};
+
 class Block {
  public:
   virtual ~Block() = default;
@@ -100,6 +109,8 @@ class Block {
   virtual void spread_added_mass(const State& /*s*/, std::vector<double>& /*nodal*/) const {}
   /// Adds to `added` the mass DT2MS mass scaling gave it beyond the nodes' (SPG particles).
   virtual void add_added_mass(const State& /*s*/, double& /*added*/) const {}
+  /// Its rigid walls' lines (rwforc, glstat), in the blocks' order.
+  virtual void add_wall_records(const State& /*s*/, std::vector<WallRecord>& /*walls*/) const {}
   /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
   /// empty when nothing of it changes during a run.
   [[nodiscard]] virtual std::string dump_name() const { return {}; }
@@ -144,6 +155,9 @@ void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
 
 /// The number of block `b`'s first element: the elements the blocks before it number.
 Index first_element(const State& s, const Block& b);  // fe/element_names.cpp
+
+/// Every block's rigid walls, in the blocks' order (energy.cpp).
+std::vector<WallRecord> wall_records(const State& s);
 
 /// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
 std::string element_name(const State& s, Index element);

@@ -9,6 +9,7 @@ namespace mcdyna::solver {
 namespace {
 
 using AddEnergies = void (*)(const State&, EnergySummary&);
+using AddWalls = void (*)(const State&, std::vector<WallRecord>&);
 
 void motions_work(const State& s, EnergySummary& e) {
   for (const NodalMotion& m : s.nodal_motions)
@@ -20,10 +21,17 @@ void walls_energy(const State& s, EnergySummary& e) {
     e.stonewall += w.energy;
 }
 
+// The force on the wall along its normal is minus the structure's push: positive in contact.
+void walls_records(const State& s, std::vector<WallRecord>& out) {
+  for (const RigidWallState& w : s.rigid_walls)
+    out.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
+}
+
 // A condition applied by one of loads.hpp's functions in the constraint phase; its state is
 // the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
-template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr>
-class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo>> {
+template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr,
+          AddWalls Walls = nullptr>
+class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo, Walls>> {
  public:
   explicit ConditionBlock(std::string name) : name_(std::move(name)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
@@ -31,6 +39,9 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
     if constexpr (AddTo != nullptr) AddTo(s, e);
+  }
+  void add_wall_records(const State& s, std::vector<WallRecord>& walls) const override {
+    if constexpr (Walls != nullptr) Walls(s, walls);
   }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {
@@ -68,9 +79,8 @@ void add_nodal_motion_blocks(State& s, Blocks& blocks) {
 
 void add_rigid_wall_blocks(State& s, Blocks& blocks) {
   if (!s.rigid_walls.empty())
-    blocks.push_back(
-        std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls, walls_energy>>(
-            "rigid walls"));
+    blocks.push_back(std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls,
+                                                     walls_energy, walls_records>>("rigid walls"));
 }
 
 void add_body_load_blocks(State& s, Blocks& blocks) {

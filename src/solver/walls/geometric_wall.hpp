@@ -32,6 +32,7 @@ struct GeometricWall {
   Vec3 displacement = Vec3::Zero();  ///< the wall's translation so far
   Vec3 velocity = Vec3::Zero();      ///< over the last step
   Vec3 force = Vec3::Zero();         ///< on the wall from the nodes, last step
+  double normal_force = 0.0;         ///< its part against the nodes' normals (> 0 in contact)
   double energy = 0.0;               ///< work the wall has absorbed
 };
 

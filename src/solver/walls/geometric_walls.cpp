@@ -4,6 +4,8 @@
 // walls' constraint method, with friction relative to the wall's own velocity).
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "core/exact_sum.hpp"
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
@@ -18,7 +20,7 @@ namespace {
 using walls::GeometricWall;
 
 inline constexpr auto kWallDumpedSizes = sizes_of<GeometricWall>();
-static_assert(!kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){312},
+static_assert(!kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){320},
               "walls::GeometricWall changed: list what changes in a run in dumped() below, or "
               "leave it out as deck data");
 
@@ -42,7 +44,7 @@ void apply_wall(State& s, GeometricWall& w, const StepTimes& t) {
   Nodes& nd = s.nodes;
   const parallel::Ownership& own = s.ownership;
   const auto [next, wall_velocity] = wall_motion(s, w, t);
-  enum { kForceX, kForceY, kForceZ, kWork, kSums };
+  enum { kForceX, kForceY, kForceZ, kNormal, kWork, kSums };
   std::vector<core::ExactSum> sums(kSums);
   if (t.time >= w.birth && t.time <= w.death) {
     for (const Index n : w.nodes) {
@@ -56,11 +58,13 @@ void apply_wall(State& s, GeometricWall& w, const StepTimes& t) {
       const Vec3 f = -m * l.change / t.mean;
       for (int k = 0; k < 3; ++k)
         sums[static_cast<std::size_t>(kForceX + k)].add(f[k]);
+      sums[kNormal].add(-f.dot(p.normal));
       sums[kWork].add(impulse_work(m * l.change, l.start, l.end));
     }
   }
   const std::vector<double> total = own.comm.sum(sums);
   w.force = Vec3(total[kForceX], total[kForceY], total[kForceZ]);
+  w.normal_force = total[kNormal];
   w.energy -= total[kWork];
   w.displacement = next;
   w.velocity = wall_velocity;
@@ -74,6 +78,10 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
     for (GeometricWall& w : walls_)
       apply_wall(s, w, t);
   }
+  void add_wall_records(const State& /*s*/, std::vector<WallRecord>& out) const override {
+    for (const GeometricWall& w : walls_)
+      out.push_back({w.id, w.normal_force, w.force, w.energy});
+  }
   // The work the walls took is glstat's stonewall energy.
   void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
@@ -85,7 +93,7 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     for (GeometricWall& w : walls_)
-      ar(w.displacement, w.velocity, w.force, w.energy);
+      ar(w.displacement, w.velocity, w.force, w.normal_force, w.energy);
   }
 
  private:
@@ -134,10 +142,14 @@ namespace detail {
 void compile_geometric_walls(const model::ModelDatabase& m, State& s, Blocks& own,
                              core::Diagnostics& d) {
   std::vector<GeometricWall> out;
+  // Unnumbered walls are numbered after the planar ones, in deck order.
+  const auto planar = std::count_if(m.rigid_walls.begin(), m.rigid_walls.end(), [](const auto& w) {
+    return w.shape == model::WallShape::planar;
+  });
   for (const model::RigidWall& mw : m.rigid_walls) {
     if (mw.shape == model::WallShape::planar) continue;
     GeometricWall w;
-    w.id = mw.id != 0 ? mw.id : static_cast<model::Id>(out.size() + 1);
+    w.id = mw.id != 0 ? mw.id : static_cast<model::Id>(planar + static_cast<long>(out.size()) + 1);
     w.shape = shape_of(mw.shape);
     w.point = Vec3(mw.tail[0], mw.tail[1], mw.tail[2]);
     if (!set_axes(mw, w, d)) continue;

@@ -185,3 +185,29 @@ TEST_CASE("geometric walls: a run continued from a dump ends with the same bytes
   for (const char* f : {"glstat.csv", "nodout.csv"})
     CHECK_MESSAGE(test::read_text(through / f) == test::read_text(resumed / f), f);
 }
+
+TEST_CASE("geometric flat wall: the cube drop on it writes the planar wall's histories") {
+  // decks/cube/cube_drop.k with its infinite *RIGIDWALL_PLANAR written as the same plane in
+  // *RIGIDWALL_GEOMETRIC_FLAT form: one constraint method, the same numbers, the same lines.
+  test::TempDir dir;
+  const std::string planar = test::source_text("decks/cube/cube_drop.k");
+  const std::string wall =
+      "*RIGIDWALL_PLANAR\n         0\n       0.0       0.0       0.0       0.0       0.0       "
+      "1.0\n";
+  REQUIRE(planar.find(wall) != std::string::npos);
+  std::string geometric = planar;
+  geometric.replace(geometric.find(wall), wall.size(),
+                    "*RIGIDWALL_GEOMETRIC_FLAT\n0,0,0,0.0,1.0e20\n0,0,0,0,0,1,0\n1,0,0,0,0\n");
+  for (const auto& [name, text] : {std::pair{"planar", planar}, {"geometric", geometric}}) {
+    const test::Run r =
+        test::run_mcdyna("run " + dir.write(std::string(name) + ".k", text).string() + " --out " +
+                         (dir.path() / name).string() + " -q");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  }
+  // rwforc.csv: a line per output with the wall's forces, not only its header.
+  CHECK(test::read_text(dir.path() / "geometric" / "rwforc.csv").size() > 1000);
+  for (const char* f : {"glstat.csv", "matsum.csv", "rwforc.csv", "rwforc"})
+    CHECK_MESSAGE(
+        test::read_text(dir.path() / "planar" / f) == test::read_text(dir.path() / "geometric" / f),
+        f);
+}
