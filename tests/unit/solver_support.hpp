@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/compile.hpp"
@@ -59,6 +60,22 @@ struct Simulation {
   std::unique_ptr<solver::State> state;
   solver::RunResult result;
 };
+
+/// A restart check's two runs of `deck` (a file): through to the end into DIR/through, then a
+/// copy of those outputs continued from the first restart dump, d3dump01, into DIR/resumed
+/// (REQUIREs both to end normally). Returns {through, resumed}.
+inline std::pair<std::filesystem::path, std::filesystem::path> run_through_and_resumed(
+    const TempDir& dir, const std::filesystem::path& deck) {
+  const std::filesystem::path through = dir.path() / "through", resumed = dir.path() / "resumed";
+  auto run = [&](const std::filesystem::path& out, const std::string& more) {
+    const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q " + more);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  };
+  run(through, "");
+  std::filesystem::copy(through, resumed);
+  run(resumed, "--restart " + (resumed / "d3dump01").string());
+  return {through, resumed};
+}
 
 /// Reads, checks and compiles a deck (REQUIREs no errors); run() then runs it.
 inline Simulation prepare(const TempDir& dir, const std::string& text) {

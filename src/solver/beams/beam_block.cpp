@@ -5,6 +5,7 @@
 #include "solver/beams/beams_dump.hpp"
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
+#include "solver/fe/element_energies.hpp"
 
 namespace mcdyna::solver {
 
@@ -45,20 +46,13 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
   // Kinetic energy and momentum from each element's lumped mass and end inertia.
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
     const Beams& bm = bm_;
-    const Nodes& nd = s.nodes;
     for (std::size_t e = 0; e < bm.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(bm.part[e])];
       (bm.eroded[e] ? ps.eroded_internal : ps.internal) += bm.internal_energy[e];
       ps.added_mass += bm.added_mass[e];
-      const double m = 0.5 * bm.mass[e], inertia = bm.end_inertia[e];
-      for (const Index n : bm.nodes[e]) {
-        ps.kinetic +=
-            0.5 * m * previous.col(n).dot(velocity.col(n)) +
-            0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
-        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
-      }
+      for (const Index n : bm.nodes[e])
+        fe::add_corner_motion(ps, s.nodes, previous, n, 0.5 * bm.mass[e], bm.end_inertia[e]);
     }
   }
 

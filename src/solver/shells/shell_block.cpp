@@ -45,9 +45,7 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
   // nodes split between parts.
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
     const Shells& sh = s.shells;
-    const Nodes& nd = s.nodes;
     for (std::size_t e = 0; e < sh.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(sh.part[e])];
       (sh.eroded[e] ? ps.eroded_internal : ps.internal) += sh.internal_energy[e];
@@ -55,14 +53,9 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
       ps.added_mass += sh.added_mass[e];
       const bool triangle = sh.nodes[e][3] == sh.nodes[e][2];
       const double m = sh.mass[e] / (triangle ? 3.0 : 4.0);
-      const double inertia = sh.corner_inertia[e];
-      for (int c = 0; c < (triangle ? 3 : 4); ++c) {
-        const Index n = sh.nodes[e][static_cast<std::size_t>(c)];
-        ps.kinetic +=
-            0.5 * m * previous.col(n).dot(velocity.col(n)) +
-            0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
-        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
-      }
+      for (int c = 0; c < (triangle ? 3 : 4); ++c)
+        fe::add_corner_motion(ps, s.nodes, previous, sh.nodes[e][static_cast<std::size_t>(c)], m,
+                              sh.corner_inertia[e]);
     }
   }
 

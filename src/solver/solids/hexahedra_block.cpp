@@ -40,7 +40,6 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
   // nodes split between parts.
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
     const Solids& so = s.solids;
     for (std::size_t e = 0; e < so.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(so.part[e])];
@@ -48,10 +47,8 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
       ps.hourglass += so.hourglass_energy[e];
       ps.added_mass += so.added_mass[e];
       const double m = so.mass[e] / 8.0;
-      for (const Index n : so.nodes[e]) {
-        ps.kinetic += 0.5 * m * previous.col(n).dot(velocity.col(n));
-        ps.momentum += 0.5 * m * (previous.col(n) + velocity.col(n));
-      }
+      for (const Index n : so.nodes[e])
+        fe::add_corner_motion(ps, s.nodes, previous, n, m);
     }
   }
 

@@ -181,16 +181,7 @@ TEST_CASE("discrete elements: a run continued from a dump ends with the same byt
   test::TempDir dir;
   const std::string deck =
       oscillator_deck(kSpring + "*DATABASE_GLSTAT\n0.01\n*DATABASE_BINARY_D3DUMP\n400\n", 1.0);
-  const std::filesystem::path path = dir.write("osc.k", deck);
-  const std::filesystem::path through = dir.path() / "through", resumed = dir.path() / "resumed";
-  auto run = [&](const std::filesystem::path& out, const std::string& more) {
-    const test::Run r =
-        test::run_mcdyna("run " + path.string() + " --out " + out.string() + " -q " + more);
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  };
-  run(through, "");
-  // Continue a copy of the outputs from the first dump (cycle 400 of 1,000).
-  std::filesystem::copy(through, resumed);
-  run(resumed, "--restart " + (resumed / "d3dump01").string());
+  // Continued from the first dump (cycle 400 of 1,000).
+  const auto [through, resumed] = test::run_through_and_resumed(dir, dir.write("osc.k", deck));
   CHECK(test::read_text(through / "glstat") == test::read_text(resumed / "glstat"));
 }

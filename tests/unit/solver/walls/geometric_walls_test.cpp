@@ -172,16 +172,7 @@ TEST_CASE("geometric walls: a run continued from a dump ends with the same bytes
       deck.find("*END"), 4,
       "         2         0       0.0       0.0       1.0\n*DEFINE_CURVE\n2\n0,0.01\n10,0.01\n"
       "*DATABASE_BINARY_D3DUMP\n      4000\n*END");
-  const std::filesystem::path path = dir.write("block.k", deck);
-  const std::filesystem::path through = dir.path() / "through", resumed = dir.path() / "resumed";
-  auto run = [&](const std::filesystem::path& out, const std::string& more) {
-    const test::Run r =
-        test::run_mcdyna("run " + path.string() + " --out " + out.string() + " -q " + more);
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  };
-  run(through, "");
-  std::filesystem::copy(through, resumed);
-  run(resumed, "--restart " + (resumed / "d3dump01").string());
+  const auto [through, resumed] = test::run_through_and_resumed(dir, dir.write("block.k", deck));
   for (const char* f : {"glstat.csv", "nodout.csv"})
     CHECK_MESSAGE(test::read_text(through / f) == test::read_text(resumed / f), f);
 }
