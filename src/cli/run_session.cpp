@@ -17,6 +17,7 @@
 #include "cli/state_summary.hpp"
 #include "cli/wait_policy.hpp"
 #include "io/checked_file.hpp"
+#include "solver/block.hpp"
 #include "solver/energy.hpp"
 #include "solver/run_overrides.hpp"
 
@@ -276,6 +277,11 @@ std::string RunSession::summary(const solver::RunResult& result) const {
   print_spg_summary(out, s);
   inertia_.print(out, s);
   print_angular_budgets(out, s, budgets_);
+  std::vector<std::string> notes;
+  for (const auto& b : s.blocks)
+    b->add_notes(s, notes);
+  for (const std::string& n : notes)
+    fmt::print(out, "  {}\n", n);
   if (result.reason == solver::StopReason::interrupted && !last_dump_.empty())
     fmt::print(out, "  continue with: mcdyna run {} --out {} --restart {} (and the same options)\n",
                options_.deck.string(), dir_.string(), last_dump_.string());

@@ -14,6 +14,7 @@ namespace detail {
 void build_indices(ModelDatabase& m, core::Diagnostics& diags);
 void check_references(const ModelDatabase& m, core::Diagnostics& diags);
 void check_sanity(const ModelDatabase& m, core::Diagnostics& diags);
+void check_sensors(const ModelDatabase& m, core::Diagnostics& diags);  // checks_sensors.cpp
 }  // namespace detail
 
 }  // namespace mcdyna::model

@@ -11,6 +11,7 @@ std::size_t check(ModelDatabase& model, core::Diagnostics& diags) {
   detail::build_indices(model, diags);
   detail::check_references(model, diags);
   detail::check_sanity(model, diags);
+  detail::check_sensors(model, diags);
   return diags.error_count() - before;
 }
 

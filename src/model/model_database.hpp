@@ -9,6 +9,7 @@
 #include "model/controls.hpp"
 #include "model/entities.hpp"
 #include "model/id_index.hpp"
+#include "model/sensors.hpp"
 
 namespace mcdyna::model {
 
@@ -49,6 +50,7 @@ struct ModelDatabase {
   std::vector<Joint> joints;
   std::vector<JointStiffness> joint_stiffnesses;
   std::vector<CoordinateSystem> coordinate_systems;
+  Sensors sensors;
 
   Controls controls;
   OutputRequests outputs;

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "core/binary_archive.hpp"
+#include "core/diagnostics.hpp"
+#include "model/sensors.hpp"  // SensedEntity
 #include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
@@ -111,6 +113,24 @@ class Block {
   virtual void add_added_mass(const State& /*s*/, double& /*added*/) const {}
   /// Its rigid walls' lines (rwforc, glstat), in the blocks' order.
   virtual void add_wall_records(const State& /*s*/, std::vector<WallRecord>& /*walls*/) const {}
+  /// Once compile() has made every block: resolves what it reads or drives in the other blocks'
+  /// entities (a sensor's contact, a control's wall), reporting what it cannot find at its deck
+  /// location. Runs again when a run restarts, before the dump is read.
+  virtual void link(State& /*s*/, const Blocks& /*all*/, core::Diagnostics& /*d*/) {}
+  /// *SENSOR_DEFINE_FORCE: the force of its entity `kind` `id`, this cycle, into `force`; false
+  /// when it holds no such entity.
+  virtual bool sensed_force(const State& /*s*/, model::SensedEntity /*kind*/, model::Id /*id*/,
+                            Vec3& /*force*/) const {
+    return false;
+  }
+  /// *SENSOR_CONTROL: turns its entity `kind` `id` on or off (off: it acts as it does outside
+  /// its birth and death times); false when it holds no such entity.
+  virtual bool switch_entity(State& /*s*/, model::SensedEntity /*kind*/, model::Id /*id*/,
+                             bool /*on*/) {
+    return false;
+  }
+  /// Lines for the end-of-run summary (a control's switches: what turned off, when).
+  virtual void add_notes(const State& /*s*/, std::vector<std::string>& /*notes*/) const {}
   /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
   /// empty when nothing of it changes during a run.
   [[nodiscard]] virtual std::string dump_name() const { return {}; }

@@ -229,6 +229,9 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::warn_free_corner_elements(m, *s, diags);
   if (diags.error_count() > errors) return nullptr;
   s->blocks = make_blocks(*s, std::move(compiled));
+  for (const auto& b : s->blocks)
+    b->link(*s, s->blocks, diags);
+  if (diags.error_count() > errors) return nullptr;
   return s;
 }
 

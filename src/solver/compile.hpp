@@ -84,10 +84,15 @@ void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnost
 /// normal) when OFFSET > 0.
 std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
                               const model::RigidWall& w, const Vec3& point, const Vec3& normal);
+/// The unit direction of *DEFINE_VECTOR `id`, reported at `loc` when it is missing or zero.
+Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::SourceLoc& loc,
+                      core::Diagnostics& d);
 void compile_geometric_walls(const model::ModelDatabase& m, State& s, Blocks& own,
                              core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_sensors(const model::ModelDatabase& m, State& s, Blocks& own,
+                     core::Diagnostics& d);  // sensors/sensor_block.cpp
 /// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one
 /// element across) when TSSFAC is above their breathing mode's bound (compile.cpp).
 void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, core::Diagnostics& d);

@@ -42,6 +42,8 @@ const std::vector<Formulation>& formulations() {
       // Particles are slave nodes.
       {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies"}},
       {"ties", nullptr, add_tie_blocks, {"contact"}},
+      // Last: reads the cycle's results and switches the blocks before it (Block::link).
+      {"sensors", nullptr, nullptr, {}, false, compile_sensors},
   };
   return kLines;
 }

@@ -240,6 +240,7 @@ struct JointState {
   double initial_step = 0.0;  ///< dt0
   double energy = 0.0;        ///< stored in the springs, 1/2 k |d|^2
   Vec3 force = Vec3::Zero();  ///< on body B, summed over the pairs, this cycle
+  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/): no force
 };
 
 /// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between rigid bodies A and B about
@@ -297,6 +298,7 @@ struct NodalMotion {
   Index curve = -1;
   double scale = 1.0;
   double birth = 0.0, death = 1.0e28;
+  bool switched_off = false;      ///< by *SENSOR_CONTROL (sensors/)
   Eigen::Matrix3Xd node_force;    ///< per node of `nodes`, this cycle (bndout nd# lines)
   std::vector<double> node_work;  ///< per node of `nodes`, accumulated
   [[nodiscard]] Vec3 force() const { return node_force.rowwise().sum(); }
@@ -317,6 +319,7 @@ struct RigidWallState {
   double length_l = 0.0, length_m = 0.0;
   double friction = 0.0;
   double birth = 0.0, death = 1.0e20;
+  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/)
   bool moving = false;
   double mass = 0.0, velocity = 0.0, displacement = 0.0;  ///< along the normal
   std::vector<Index> nodes;                               ///< tracked nodes

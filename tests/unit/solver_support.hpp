@@ -186,6 +186,29 @@ inline std::string with(std::string text, const std::string& from, const std::st
   return text.replace(at, from.size(), to);
 }
 
+/// The 1 kg elastic cube of the walls' and sensors' tests (one hexahedron, 0.1 m, E 1 GPa,
+/// TSSFAC 0.6: a lone one-point hexahedron breathes above its step estimate). Its corners at x, y
+/// in [-0.05, 0.05] + (cx, cy), z in [cz, cz + 0.1]; gravity g along -z; initial velocity (vx, 0,
+/// vz); `wall`: more keywords (a wall and its curves).
+struct Cube {
+  double cx = 0.0, cy = 0.0, cz = 0.0;
+  double vx = 0.0, vz = 0.0, gravity = 0.0, end = 0.5;
+};
+
+inline std::string cube_deck(const Cube& c, const std::string& wall) {
+  std::string nodes = "*NODE\n";
+  int id = 1;
+  for (const double z : {c.cz, c.cz + 0.1})
+    for (const auto& [x, y] : {std::pair{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
+      nodes += fmt::format("{},{},{},{:.17g}\n", id++, c.cx + x, c.cy + y, z);
+  return fmt::format(
+      "*KEYWORD\n*CONTROL_TERMINATION\n{}\n*CONTROL_TIMESTEP\n0,0.6\n*PART\ncube\n1,1,1\n"
+      "*SECTION_SOLID\n1\n*MAT_ELASTIC\n1,1000,1e9,0.3\n{}*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n"
+      "*INITIAL_VELOCITY_GENERATION\n1,2,0,{},0,{}\n0,0,0,0,0,0\n"
+      "*LOAD_BODY_Z\n1\n*DEFINE_CURVE\n1\n0,{}\n100,{}\n{}*END\n",
+      c.end, nodes, c.vx, c.vz, c.gravity, c.gravity, wall);
+}
+
 /// Gaps along z between consecutive layers (particles of equal initial z, mean current z) of
 /// the first SPG part's particles that `keep` selects, in order of initial z.
 template <class Keep>

@@ -79,6 +79,7 @@ compare beams tests/regression/beam_tip_load/beam_tip_load.k
 compare spot_weld tests/regression/spot_weld_lap/spot_weld_lap.k
 compare spring_damper tests/regression/spring_damper/spring_damper.k
 compare sliding_block tests/regression/sliding_block/sliding_block.k
+compare sensor_release tests/regression/sensor_release/sensor_release.k
 compare revolute tests/data/public-decks/WillemJR/dynakw/test/full_files/joint_revolute.k --cycles 3000
 compare translational tests/data/public-decks/WillemJR/dynakw/test/full_files/joint_translational.k --cycles 3000
 compare projectile tests/data/public-decks/ansys/pydyna/tests/testfiles/run/case-keywords/projectile.k --cycles 3000

@@ -84,6 +84,11 @@ void constrained_joint(KeywordRecord& r, model::ModelDatabase& m);
 void element_discrete(KeywordRecord& r, model::ModelDatabase& m);
 void section_discrete(KeywordRecord& r, model::ModelDatabase& m);
 void mat_spring(KeywordRecord& r, model::ModelDatabase& m);
+// sensors.cpp
+void sensor_define_node(KeywordRecord& r, model::ModelDatabase& m);
+void sensor_define_force(KeywordRecord& r, model::ModelDatabase& m);
+void sensor_switch(KeywordRecord& r, model::ModelDatabase& m);
+void sensor_control(KeywordRecord& r, model::ModelDatabase& m);
 void joint_stiffness_generalized(KeywordRecord& r, model::ModelDatabase& m);
 void define_coordinate_node(KeywordRecord& r, model::ModelDatabase& m);
 // define_sets.cpp

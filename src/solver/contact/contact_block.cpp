@@ -2,6 +2,7 @@
 // t^n, after every internal force (contact.hpp).
 #include <algorithm>
 #include <chrono>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -10,6 +11,7 @@
 #include "solver/contact/interface_dump.hpp"
 #include "solver/parallel/exchange_plan.hpp"
 #include "solver/parallel/owned_gather.hpp"
+#include "solver/sensors/switchable.hpp"
 
 namespace mcdyna::solver {
 
@@ -45,6 +47,17 @@ class InterfaceBlock : public DumpedBlock<Derived> {
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
     e.sliding += s.contacts[interface_].energy;
+  }
+  // A contact's force is side A's (rcforc's slave line).
+  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+                    Vec3& force) const override {
+    return sensors::sensed_force_in(
+        std::span(&s.contacts[interface_], 1), model::SensedEntity::contact, kind, id,
+        [](const contact::Interface& c) { return c.force_a; }, force);
+  }
+  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
+    return sensors::switch_in(std::span(&s.contacts[interface_], 1), model::SensedEntity::contact,
+                              kind, id, on);
   }
 
  protected:

@@ -384,7 +384,7 @@ void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds)
     charge(a.node, a.force);
   c.applied.clear();
   if (c.initial_step == 0.0 && s.step > 0.0) c.initial_step = s.step;
-  if (s.time < c.birth || s.time > c.death) {
+  if (!c.acting(s.time)) {
     for (Pass& p : c.passes) {
       p.friction.setZero();
       p.side.setZero();
@@ -417,7 +417,7 @@ void transducer_pass(State& s, Interface& t, double& exchange_seconds) {
   // hits of several processes counts its mass once, on its owner.
   const core::Communicator& comm = s.ownership.comm;
   Resultants sums;
-  if (s.time < t.birth || s.time > t.death) {
+  if (!t.acting(s.time)) {
     sums.store(t, comm, exchange_seconds);
     return;
   }

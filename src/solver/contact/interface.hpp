@@ -89,6 +89,9 @@ struct Interface {
   double viscous_friction = 0.0;  ///< VC (x VSF): limit of the friction stress
   double damping = 0.0;           ///< VDC / 100: share of critical damping on the normal force
   double birth = 0.0, death = 1.0e20;
+  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/)
+  /// Between its birth and death and not switched off.
+  [[nodiscard]] bool acting(double t) const { return !switched_off && t >= birth && t <= death; }
   /// SOFT 1: the stiffness is at least that of a spring whose period matches the initial step
   /// for the smaller mass.
   bool soft_constraint = false;

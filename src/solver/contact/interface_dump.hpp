@@ -29,8 +29,9 @@ void fields(Ar& ar, Transducer& t) {
 template <class Ar>
 void fields(Ar& ar, Interface& c) {
   ar(c.id, c.heading, c.passes, c.static_friction, c.dynamic_friction, c.decay, c.viscous_friction,
-     c.damping, c.birth, c.death, c.soft_constraint, c.soft_scale, c.penalty_scale, c.sort_interval,
-     c.initial_step, c.initial_penetration, c.segment_based, c.segment_based_scale, c.sensor);
+     c.damping, c.birth, c.death, c.switched_off, c.soft_constraint, c.soft_scale, c.penalty_scale,
+     c.sort_interval, c.initial_step, c.initial_penetration, c.segment_based, c.segment_based_scale,
+     c.sensor);
   ar(c.last_sort, c.sorted_positions, c.tracked, c.capture, c.force_a, c.force_b, c.moment_a,
      c.moment_b, c.mass_in_contact, c.energy, c.applied, c.computed);
 }

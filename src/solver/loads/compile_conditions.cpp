@@ -58,17 +58,6 @@ std::vector<Index> nodes_of_parts(const model::ModelDatabase& m, const State& s,
   return out;
 }
 
-Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::SourceLoc& loc,
-                      core::Diagnostics& d) {
-  for (const model::Vector& v : m.vectors) {
-    if (v.id != id) continue;
-    const Vec3 dir(v.head[0] - v.tail[0], v.head[1] - v.tail[1], v.head[2] - v.tail[2]);
-    if (dir.norm() > 0.0) return dir.normalized();
-  }
-  d.error(loc, "*DEFINE_VECTOR {} is missing or has zero length", id);
-  return Vec3::UnitX();
-}
-
 // Velocity of the rigid motion that best fits the velocities of the body's nodes a record gave
 // one (exact for a rigid field): centroid velocity plus the spin from sum r x v = (sum r^2 I - r
 // r^T) omega.
@@ -122,6 +111,17 @@ void given_velocity(const model::ModelDatabase& m, RigidBody& body) {
 }
 
 }  // namespace
+
+Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::SourceLoc& loc,
+                      core::Diagnostics& d) {
+  for (const model::Vector& v : m.vectors) {
+    if (v.id != id) continue;
+    const Vec3 dir(v.head[0] - v.tail[0], v.head[1] - v.tail[1], v.head[2] - v.tail[2]);
+    if (dir.norm() > 0.0) return dir.normalized();
+  }
+  d.error(loc, "*DEFINE_VECTOR {} is missing or has zero length", id);
+  return Vec3::UnitX();
+}
 
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   struct Entry {

@@ -3,6 +3,7 @@
 #include "solver/block.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/loads/loads_dump.hpp"
+#include "solver/sensors/switchable.hpp"
 
 namespace mcdyna::solver {
 
@@ -27,6 +28,35 @@ void walls_records(const State& s, std::vector<WallRecord>& out) {
     out.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
 }
 
+// What the conditions give *SENSOR_DEFINE_FORCE and *SENSOR_CONTROL: a prescribed motion's force
+// on its nodes, the force on a wall; the nodal constraints (merged per node) take no part.
+bool held_force(const NodalConstraints& /*c*/, model::SensedEntity /*kind*/, model::Id /*id*/,
+                Vec3& /*force*/) {
+  return false;
+}
+bool held_force(const std::vector<NodalMotion>& v, model::SensedEntity kind, model::Id id,
+                Vec3& force) {
+  return sensors::sensed_force_in(
+      v, model::SensedEntity::prescribed_motion, kind, id,
+      [](const NodalMotion& m) { return m.force(); }, force);
+}
+bool held_force(const std::vector<RigidWallState>& v, model::SensedEntity kind, model::Id id,
+                Vec3& force) {
+  return sensors::sensed_force_in(
+      v, model::SensedEntity::rigid_wall, kind, id, [](const RigidWallState& w) { return w.force; },
+      force);
+}
+bool switch_held(NodalConstraints& /*c*/, model::SensedEntity /*kind*/, model::Id /*id*/,
+                 bool /*on*/) {
+  return false;
+}
+bool switch_held(std::vector<NodalMotion>& v, model::SensedEntity kind, model::Id id, bool on) {
+  return sensors::switch_in(v, model::SensedEntity::prescribed_motion, kind, id, on);
+}
+bool switch_held(std::vector<RigidWallState>& v, model::SensedEntity kind, model::Id id, bool on) {
+  return sensors::switch_in(v, model::SensedEntity::rigid_wall, kind, id, on);
+}
+
 // A condition applied by one of loads.hpp's functions in the constraint phase; its state is
 // the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
 template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr,
@@ -42,6 +72,13 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
   }
   void add_wall_records(const State& s, std::vector<WallRecord>& walls) const override {
     if constexpr (Walls != nullptr) Walls(s, walls);
+  }
+  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+                    Vec3& force) const override {
+    return held_force(s.*Held, kind, id, force);
+  }
+  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
+    return switch_held(s.*Held, kind, id, on);
   }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {

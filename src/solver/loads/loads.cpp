@@ -81,7 +81,7 @@ void apply_nodal_motions(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
   for (NodalMotion& nm : state.nodal_motions) {
     nm.node_force.setZero();
-    if (t.time < nm.birth || t.time > nm.death) continue;
+    if (nm.switched_off || t.time < nm.birth || t.time > nm.death) continue;
     const Vec3& axis = nm.axis;
     for (std::size_t k = 0; k < nm.nodes.size(); ++k) {
       const Index n = nm.nodes[k];
@@ -113,7 +113,7 @@ void apply_rigid_walls(State& state, const StepTimes& t) {
   Nodes& nd = state.nodes;
   const parallel::Ownership& own = state.ownership;
   for (RigidWallState& w : state.rigid_walls) {
-    const bool on = t.time >= w.birth && t.time <= w.death;
+    const bool on = !w.switched_off && t.time >= w.birth && t.time <= w.death;
     // Wall plane at the end of the step (a moving wall advances along its normal).
     const Vec3 point_next = w.point + (w.displacement + w.velocity * t.step) * w.normal;
     // The wall's force, the work it absorbs and the impulse it takes, summed exactly: each node

@@ -13,13 +13,15 @@ void fields(Ar& ar, NodalConstraints& c) {
 
 template <class Ar>
 void fields(Ar& ar, NodalMotion& m) {
-  ar(m.id, m.nodes, m.axis, m.kind, m.curve, m.scale, m.birth, m.death, m.node_force, m.node_work);
+  ar(m.id, m.nodes, m.axis, m.kind, m.curve, m.scale, m.birth, m.death, m.switched_off,
+     m.node_force, m.node_work);
 }
 
 template <class Ar>
 void fields(Ar& ar, RigidWallState& w) {
   ar(w.id, w.point, w.normal, w.finite, w.edge_l, w.edge_m, w.length_l, w.length_m, w.friction,
-     w.birth, w.death, w.moving, w.mass, w.velocity, w.displacement, w.nodes, w.force, w.energy);
+     w.birth, w.death, w.switched_off, w.moving, w.mass, w.velocity, w.displacement, w.nodes,
+     w.force, w.energy);
 }
 
 template <class Ar>
@@ -35,7 +37,7 @@ void fields(Ar& ar, PressureLoadState& p) {
 inline constexpr auto kConditionDumpedSizes =
     sizes_of<NodalConstraints, NodalMotion, RigidWallState>();
 static_assert(!kSizesPinned ||
-                  kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 128, 240},
+                  kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 136, 240},
               "NodalConstraints, NodalMotion or RigidWallState changed: list the new member in "
               "fields() above");
 inline constexpr auto kLoadDumpedSizes = sizes_of<PointLoadState, PressureLoadState>();

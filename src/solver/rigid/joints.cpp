@@ -19,6 +19,7 @@
 #include "solver/block.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
 #include "solver/rigid/rigid_dump.hpp"
+#include "solver/sensors/switchable.hpp"
 
 namespace mcdyna::solver {
 
@@ -99,6 +100,7 @@ void joint_forces(State& s, JointState& j) {
   }
   j.energy = 0.0;
   j.force.setZero();
+  if (j.switched_off) return;
   const model::JointKind kind = j.kind;
   if (kind == model::JointKind::cylindrical || kind == model::JointKind::translational)
     hold_on_lines(s, j);
@@ -157,6 +159,15 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
       e.internal += j.energy;
     for (const JointStiffnessState& j : s.joint_stiffnesses)
       e.internal += j.work;
+  }
+  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+                    Vec3& force) const override {
+    return sensors::sensed_force_in(
+        s.joints, model::SensedEntity::joint, kind, id, [](const JointState& j) { return j.force; },
+        force);
+  }
+  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
+    return sensors::switch_in(s.joints, model::SensedEntity::joint, kind, id, on);
   }
   void forces(State& s, ForceReport& /*report*/) override {
     for (JointState& j : s.joints)

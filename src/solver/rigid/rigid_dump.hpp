@@ -28,7 +28,7 @@ void fields(Ar& ar, WeldState& w) {
 template <class Ar>
 void fields(Ar& ar, JointState& j) {
   ar(j.id, j.heading, j.kind, j.nodes, j.pairs, j.relative_stiffness, j.reduced_mass, j.stiffness,
-     j.initial_step, j.energy, j.force);
+     j.initial_step, j.energy, j.force, j.switched_off);
 }
 
 template <class Ar>
@@ -41,7 +41,7 @@ inline constexpr auto kRigidDumpedSizes = sizes_of<RigidBody, RigidMotion, WeldS
 static_assert(!kSizesPinned || kRigidDumpedSizes == decltype(kRigidDumpedSizes){584, 72, 120},
               "RigidBody, RigidMotion or WeldState changed: list the new member in fields() above");
 inline constexpr auto kJointsDumpedSizes = sizes_of<JointState, JointStiffnessState>();
-static_assert(!kSizesPinned || kJointsDumpedSizes == decltype(kJointsDumpedSizes){136, 304},
+static_assert(!kSizesPinned || kJointsDumpedSizes == decltype(kJointsDumpedSizes){144, 304},
               "JointState or JointStiffnessState changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

@@ -22,6 +22,7 @@ struct GeometricWall {
   double cylinder_length = 0.0;                           ///< 0: infinite
   double friction = 0.0;
   double birth = 0.0, death = 1.0e20;
+  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/)
   /// _MOTION: curve index (-1: none), whether it gives the displacement (else the velocity),
   /// and the unit direction.
   Index motion_curve = -1;

@@ -11,6 +11,7 @@
 #include "solver/compile.hpp"
 #include "solver/dump.hpp"
 #include "solver/loads/loads.hpp"
+#include "solver/sensors/switchable.hpp"
 #include "solver/walls/geometric_wall.hpp"
 
 namespace mcdyna::solver {
@@ -20,7 +21,7 @@ namespace {
 using walls::GeometricWall;
 
 inline constexpr auto kWallDumpedSizes = sizes_of<GeometricWall>();
-static_assert(!kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){320},
+static_assert(!kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){328},
               "walls::GeometricWall changed: list what changes in a run in dumped() below, or "
               "leave it out as deck data");
 
@@ -46,7 +47,7 @@ void apply_wall(State& s, GeometricWall& w, const StepTimes& t) {
   const auto [next, wall_velocity] = wall_motion(s, w, t);
   enum { kForceX, kForceY, kForceZ, kNormal, kWork, kSums };
   std::vector<core::ExactSum> sums(kSums);
-  if (t.time >= w.birth && t.time <= w.death) {
+  if (!w.switched_off && t.time >= w.birth && t.time <= w.death) {
     for (const Index n : w.nodes) {
       if (!own.moves_node(n)) continue;  // another process moves it
       const Vec3 predicted = nd.position.col(n) + t.step * Vec3(nd.velocity.col(n));
@@ -82,6 +83,15 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
     for (const GeometricWall& w : walls_)
       out.push_back({w.id, w.normal_force, w.force, w.energy});
   }
+  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
+                    Vec3& force) const override {
+    return sensors::sensed_force_in(
+        walls_, model::SensedEntity::rigid_wall, kind, id,
+        [](const GeometricWall& w) { return w.force; }, force);
+  }
+  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
+    return sensors::switch_in(walls_, model::SensedEntity::rigid_wall, kind, id, on);
+  }
   // The work the walls took is glstat's stonewall energy.
   void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
@@ -93,7 +103,7 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     for (GeometricWall& w : walls_)
-      ar(w.displacement, w.velocity, w.force, w.normal_force, w.energy);
+      ar(w.displacement, w.velocity, w.force, w.normal_force, w.energy, w.switched_off);
   }
 
  private:

@@ -16,27 +16,6 @@ using namespace mcdyna;
 
 namespace {
 
-// The cube's corners at x, y in [-0.05, 0.05] + (cx, cy), z in [cz, cz + 0.1]; gravity g
-// along -z; initial velocity (vx, 0, vz); `wall` the wall's keyword (and its curves).
-struct Cube {
-  double cx = 0.0, cy = 0.0, cz = 0.0;
-  double vx = 0.0, vz = 0.0, gravity = 0.0, end = 0.5;
-};
-
-std::string cube_deck(const Cube& c, const std::string& wall) {
-  std::string nodes = "*NODE\n";
-  int id = 1;
-  for (const double z : {c.cz, c.cz + 0.1})
-    for (const auto& [x, y] : {std::pair{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
-      nodes += fmt::format("{},{},{},{:.17g}\n", id++, c.cx + x, c.cy + y, z);
-  return fmt::format(
-      "*KEYWORD\n*CONTROL_TERMINATION\n{}\n*CONTROL_TIMESTEP\n0,0.6\n*PART\ncube\n1,1,1\n"
-      "*SECTION_SOLID\n1\n*MAT_ELASTIC\n1,1000,1e9,0.3\n{}*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n"
-      "*INITIAL_VELOCITY_GENERATION\n1,2,0,{},0,{}\n0,0,0,0,0,0\n"
-      "*LOAD_BODY_Z\n1\n*DEFINE_CURVE\n1\n0,{}\n100,{}\n{}*END\n",
-      c.end, nodes, c.vx, c.vz, c.gravity, c.gravity, wall);
-}
-
 struct Track {
   std::vector<double> time, x, vx;  ///< the cube's mean x and vx
   std::vector<double> z_bottom;     ///< node 1's z (a bottom corner)
@@ -75,11 +54,11 @@ std::string flat_wall(double friction) {
 
 TEST_CASE("geometric flat wall: a block sliding under Coulomb friction stops at v0^2 / (2 mu g)") {
   // mu 0.2, g 10, v0 1 m/s: deceleration 2 m/s^2, at rest after 0.5 s, 0.25 m on.
-  Cube c;
+  test::Cube c;
   c.vx = 1.0;
   c.gravity = 10.0;
   c.end = 0.7;
-  const Track tr = run_cube(cube_deck(c, "*RIGIDWALL_GEOMETRIC_FLAT\n" + flat_wall(0.2)));
+  const Track tr = run_cube(test::cube_deck(c, "*RIGIDWALL_GEOMETRIC_FLAT\n" + flat_wall(0.2)));
   double speed_at_quarter = 0.0, x_stopped = 0.0, creep = 0.0;
   for (std::size_t i = 0; i < tr.time.size(); ++i) {
     if (tr.time[i] <= 0.25) speed_at_quarter = tr.vx[i];
@@ -102,13 +81,13 @@ TEST_CASE("geometric cylinder and sphere walls: a block set on top of them stays
   // at z = sqrt(1 - 0.05^2) = 0.998749, on a sphere at sqrt(1 - 2 0.05^2) = 0.997497. Gravity
   // (10 m/s^2 for 0.4 s: 0.8 m of fall without the wall) presses them on it; FRIC 1 (no sliding)
   // keeps them there, the cube's elastic settling (rho g L / E, 1e-8) aside.
-  Cube c;
+  test::Cube c;
   c.gravity = 10.0;
   c.end = 0.4;
   for (const bool sphere : {false, true}) {
     const double surface = std::sqrt(1.0 - (sphere ? 0.005 : 0.0025));
     c.cz = surface;
-    const Track tr = run_cube(cube_deck(
+    const Track tr = run_cube(test::cube_deck(
         c, sphere ? "*RIGIDWALL_GEOMETRIC_SPHERE\n0,0,0,0,1e20\n0,0,0,0,0,1,1.0\n1.0\n"
                   : "*RIGIDWALL_GEOMETRIC_CYLINDER\n0,0,0,0,1e20\n0,-5,0,0,5,0,1.0\n1.0,10,0\n"));
     const double lowest = *std::min_element(tr.z_bottom.begin(), tr.z_bottom.end());
@@ -124,13 +103,13 @@ TEST_CASE("geometric prism wall: a block driven into its face meets it on time, 
   // The box spans x 1..2, y and z -1..1 from the tail (l along x, m along y, the normal along z);
   // the block's front face (x = 0.55) reaches x = 1 at 0.45 s. The front nodes stop there
   // (plastic), the rest of the elastic block rings against them and sends it back.
-  Cube c;
+  test::Cube c;
   c.cx = 0.5;
   c.cz = -0.05;
   c.vx = 1.0;
   c.end = 0.8;
-  const Track tr = run_cube(
-      cube_deck(c, "*RIGIDWALL_GEOMETRIC_PRISM\n0,0,0,0,1e20\n1,-1,-1,1,-1,1,0\n2,-1,-1,1,2,2\n"));
+  const Track tr = run_cube(test::cube_deck(
+      c, "*RIGIDWALL_GEOMETRIC_PRISM\n0,0,0,0,1e20\n1,-1,-1,1,-1,1,0\n2,-1,-1,1,2,2\n"));
   double contact = -1.0, furthest = 0.0, step = 0.0;
   for (std::size_t i = 0; i < tr.time.size(); ++i) {
     furthest = std::max(furthest, tr.front[i]);
@@ -147,13 +126,13 @@ TEST_CASE("geometric prism wall: a block driven into its face meets it on time, 
 TEST_CASE("geometric wall with _MOTION: a block on a rising wall rides it, node on wall") {
   // The flat wall at z = 0 rises at 0.5 m/s (OPT 0, a velocity curve; OPT 1 the displacement
   // curve 0.5 t): under gravity the block's bottom node stays on it, z = 0.5 t.
-  Cube c;
+  test::Cube c;
   c.gravity = 10.0;
   c.end = 0.5;
   for (const std::string opt : {"0", "1"}) {
     const std::string curve =
         opt == "0" ? "*DEFINE_CURVE\n2\n0,0.5\n10,0.5\n" : "*DEFINE_CURVE\n2\n0,0\n10,5\n";
-    const Track tr = run_cube(cube_deck(
+    const Track tr = run_cube(test::cube_deck(
         c, "*RIGIDWALL_GEOMETRIC_FLAT_MOTION\n" + flat_wall(0) + "2," + opt + ",0,0,1\n" + curve));
     MESSAGE("OPT ", opt, ": bottom z at ", tr.time.back(), " s: ", tr.z_bottom.back());
     CHECK(tr.z_bottom.back() == doctest::Approx(0.5 * tr.time.back()).epsilon(1e-6));
