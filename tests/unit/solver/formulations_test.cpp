@@ -41,7 +41,8 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
   // The order the physics needs, as compile() ran it before the registry: elements, the rigid
   // bodies (whole before any condition reads them: the line that stops at errors), joints,
   // constraints, motions, then the SPG parts that these pin, their initial velocities, the
-  // walls that track their nodes, and contact, whose slave nodes they are.
+  // walls that track their nodes, and contact, whose slave nodes they are; the sensors last,
+  // as they read the cycle's results and switch the blocks before them.
   const char* const expected[] = {"solids",
                                   "shells",
                                   "beams",
@@ -58,7 +59,8 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
                                   "applied loads",
                                   "global damping",
                                   "contact",
-                                  "ties"};
+                                  "ties",
+                                  "sensors"};
   REQUIRE(order.size() == std::size(expected));
   for (std::size_t i = 0; i < order.size(); ++i)
     CHECK(order[i] == expected[i]);
