@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <map>
 #include <ostream>
@@ -213,6 +214,17 @@ void print_conditions(std::ostream& out, const model::ModelDatabase& m) {
   }
   fmt::print(out, "  initial velocity definitions {}  rigid walls {}\n",
              m.initial_velocities.size(), m.rigid_walls.size());
+  const model::Sensors& sn = m.sensors;
+  if (!sn.nodes.empty() || !sn.forces.empty() || !sn.switches.empty() || !sn.controls.empty())
+    fmt::print(out, "  sensors {} on nodes, {} on forces; switches {}; controls {}\n",
+               sn.nodes.size(), sn.forces.size(), sn.switches.size(), sn.controls.size());
+  for (const model::SensorControl& c : sn.controls)
+    fmt::print(out, "  sensor control {}: {} {}, {} at first, switches {}{}\n", c.id,
+               model::sensed_entity_keyword(c.kind), c.target, c.initially_on ? "on" : "off",
+               fmt::join(c.switches, " "),
+               c.repeats == 0  ? std::string()
+               : c.repeats < 0 ? std::string(", NREP -1 (without end)")
+                               : fmt::format(", NREP {}", c.repeats));
   fmt::print(out,
              "\nCurves {}  vectors {}  boxes {}  node sets {}  part sets {}  segment sets {}\n",
              m.curves.size(), m.vectors.size(), m.boxes.size(), m.node_sets.size(),

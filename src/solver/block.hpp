@@ -166,7 +166,6 @@ void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_bloc
 void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp
 void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp
 void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_blocks.cpp
-void add_rigid_wall_blocks(State& s, Blocks& blocks);        // loads/condition_blocks.cpp
 void add_body_load_blocks(State& s, Blocks& blocks);         // loads/condition_blocks.cpp
 void add_applied_load_blocks(State& s, Blocks& blocks);      // loads/applied_loads.cpp
 void add_global_damping_blocks(State& s, Blocks& blocks);    // loads/global_damping.cpp

@@ -78,7 +78,8 @@ void compile_body_loads(const model::ModelDatabase& m, State& s, core::Diagnosti
 void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_planar_walls(const model::ModelDatabase& m, State& s, Blocks& own,
+                          core::Diagnostics& d);  // walls/planar_walls.cpp
 /// The nodes a rigid wall tracks: its node set (0: every node), less the exempted set, inside
 /// its box, with mass and not of a rigid body; for NSID 0 within OFFSET of the plane (point,
 /// normal) when OFFSET > 0.

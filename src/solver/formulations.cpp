@@ -34,7 +34,7 @@ const std::vector<Formulation>& formulations() {
       // take it once they exist.
       {"initial velocities", compile_initial_velocities, nullptr, {"spg", "rigid bodies"}},
       // Walls track the nodes that have mass, particles included.
-      {"rigid walls", compile_rigid_walls, add_rigid_wall_blocks, {"spg"}},
+      {"rigid walls", nullptr, nullptr, {"spg"}, false, compile_planar_walls},
       {"geometric walls", nullptr, nullptr, {"spg"}, false, compile_geometric_walls},
       {"body loads", compile_body_loads, add_body_load_blocks, {}},
       {"applied loads", compile_applied_loads, add_applied_load_blocks, {"rigid bodies", "shells"}},

@@ -310,23 +310,6 @@ struct NodalMotion {
   }
 };
 
-struct RigidWallState {
-  model::Id id = 0;
-  Vec3 point = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();  ///< unit, into the allowed side
-  bool finite = false;
-  Vec3 edge_l = Vec3::UnitX(), edge_m = Vec3::UnitY();  ///< unit in-plane edges (finite)
-  double length_l = 0.0, length_m = 0.0;
-  double friction = 0.0;
-  double birth = 0.0, death = 1.0e20;
-  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/)
-  bool moving = false;
-  double mass = 0.0, velocity = 0.0, displacement = 0.0;  ///< along the normal
-  std::vector<Index> nodes;                               ///< tracked nodes
-  Vec3 force = Vec3::Zero();  ///< force on the wall this cycle (from the nodes)
-  double energy = 0.0;        ///< work the wall has absorbed
-};
-
 /// *LOAD_BODY_X / _Y / _Z: base acceleration scale x curve(t) along `axis`; force -m a.
 struct BodyLoadState {
   int axis = 2;
@@ -409,7 +392,6 @@ struct State {
   std::vector<LoadCurve> curves;
   NodalConstraints constraints;
   std::vector<NodalMotion> nodal_motions;
-  std::vector<RigidWallState> rigid_walls;
   std::vector<contact::Interface> contacts;
   std::vector<Tie> ties;  ///< tied contacts' slave nodes, by slave node (deck data)
   std::vector<BodyLoadState> body_loads;

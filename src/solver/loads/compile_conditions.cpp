@@ -364,46 +364,4 @@ std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
   return out;
 }
 
-void compile_rigid_walls(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
-  for (const model::RigidWall& w : m.rigid_walls) {
-    if (w.shape != model::WallShape::planar) continue;  // geometric walls: walls/
-    RigidWallState rw;
-    rw.id = w.id != 0 ? w.id : static_cast<model::Id>(s.rigid_walls.size() + 1);
-    rw.point = Vec3(w.tail[0], w.tail[1], w.tail[2]);
-    const Vec3 n = Vec3(w.head[0], w.head[1], w.head[2]) - rw.point;
-    if (!(n.norm() > 0.0)) {
-      d.error(w.loc, "*RIGIDWALL_PLANAR: the normal (head - tail) has zero length");
-      continue;
-    }
-    rw.normal = n.normalized();
-    if (w.friction >= 2.0) {
-      d.error(w.loc, "*RIGIDWALL_PLANAR: FRIC = {} (welding) is not supported", w.friction);
-    }
-    rw.friction = w.friction;
-    rw.birth = w.birth;
-    rw.death = w.death == 0.0 ? 1.0e20 : w.death;
-    if (w.finite) {
-      rw.finite = true;
-      const Vec3 l = Vec3(w.edge_head[0], w.edge_head[1], w.edge_head[2]) - rw.point;
-      const Vec3 lp = l - l.dot(rw.normal) * rw.normal;
-      if (!(lp.norm() > 0.0)) {
-        d.error(w.loc, "*RIGIDWALL_PLANAR_FINITE: edge vector l is parallel to the normal");
-        continue;
-      }
-      rw.edge_l = lp.normalized();
-      rw.edge_m = rw.normal.cross(rw.edge_l);
-      rw.length_l = w.length_l;
-      rw.length_m = w.length_m;
-    }
-    if (w.moving) {
-      rw.moving = true;
-      rw.mass = w.mass;
-      rw.velocity = w.initial_velocity;
-      if (!(w.mass > 0.0)) d.error(w.loc, "*RIGIDWALL_PLANAR_MOVING: MASS must be > 0");
-    }
-    rw.nodes = wall_nodes(m, s, w, rw.point, rw.normal);
-    s.rigid_walls.push_back(std::move(rw));
-  }
-}
-
 }  // namespace mcdyna::solver::detail

@@ -1,4 +1,4 @@
-// The velocity-level conditions (SPC and *NODE TC, prescribed nodal motion, rigid walls) and the
+// The velocity-level conditions (SPC and *NODE TC, prescribed nodal motion) and the
 // body loads as blocks of the time loop (loads.hpp).
 #include "solver/block.hpp"
 #include "solver/loads/loads.hpp"
@@ -10,26 +10,14 @@ namespace mcdyna::solver {
 namespace {
 
 using AddEnergies = void (*)(const State&, EnergySummary&);
-using AddWalls = void (*)(const State&, std::vector<WallRecord>&);
 
 void motions_work(const State& s, EnergySummary& e) {
   for (const NodalMotion& m : s.nodal_motions)
     e.external_work += m.work();
 }
 
-void walls_energy(const State& s, EnergySummary& e) {
-  for (const RigidWallState& w : s.rigid_walls)
-    e.stonewall += w.energy;
-}
-
-// The force on the wall along its normal is minus the structure's push: positive in contact.
-void walls_records(const State& s, std::vector<WallRecord>& out) {
-  for (const RigidWallState& w : s.rigid_walls)
-    out.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
-}
-
 // What the conditions give *SENSOR_DEFINE_FORCE and *SENSOR_CONTROL: a prescribed motion's force
-// on its nodes, the force on a wall; the nodal constraints (merged per node) take no part.
+// on its nodes; the nodal constraints (merged per node) take no part.
 bool held_force(const NodalConstraints& /*c*/, model::SensedEntity /*kind*/, model::Id /*id*/,
                 Vec3& /*force*/) {
   return false;
@@ -40,12 +28,6 @@ bool held_force(const std::vector<NodalMotion>& v, model::SensedEntity kind, mod
       v, model::SensedEntity::prescribed_motion, kind, id,
       [](const NodalMotion& m) { return m.force(); }, force);
 }
-bool held_force(const std::vector<RigidWallState>& v, model::SensedEntity kind, model::Id id,
-                Vec3& force) {
-  return sensors::sensed_force_in(
-      v, model::SensedEntity::rigid_wall, kind, id, [](const RigidWallState& w) { return w.force; },
-      force);
-}
 bool switch_held(NodalConstraints& /*c*/, model::SensedEntity /*kind*/, model::Id /*id*/,
                  bool /*on*/) {
   return false;
@@ -53,15 +35,11 @@ bool switch_held(NodalConstraints& /*c*/, model::SensedEntity /*kind*/, model::I
 bool switch_held(std::vector<NodalMotion>& v, model::SensedEntity kind, model::Id id, bool on) {
   return sensors::switch_in(v, model::SensedEntity::prescribed_motion, kind, id, on);
 }
-bool switch_held(std::vector<RigidWallState>& v, model::SensedEntity kind, model::Id id, bool on) {
-  return sensors::switch_in(v, model::SensedEntity::rigid_wall, kind, id, on);
-}
 
 // A condition applied by one of loads.hpp's functions in the constraint phase; its state is
 // the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
-template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr,
-          AddWalls Walls = nullptr>
-class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo, Walls>> {
+template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr>
+class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo>> {
  public:
   explicit ConditionBlock(std::string name) : name_(std::move(name)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
@@ -69,9 +47,6 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
     if constexpr (AddTo != nullptr) AddTo(s, e);
-  }
-  void add_wall_records(const State& s, std::vector<WallRecord>& walls) const override {
-    if constexpr (Walls != nullptr) Walls(s, walls);
   }
   bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
                     Vec3& force) const override {
@@ -112,12 +87,6 @@ void add_nodal_motion_blocks(State& s, Blocks& blocks) {
     blocks.push_back(
         std::make_unique<ConditionBlock<apply_nodal_motions, &State::nodal_motions, motions_work>>(
             "prescribed nodal motions"));
-}
-
-void add_rigid_wall_blocks(State& s, Blocks& blocks) {
-  if (!s.rigid_walls.empty())
-    blocks.push_back(std::make_unique<ConditionBlock<apply_rigid_walls, &State::rigid_walls,
-                                                     walls_energy, walls_records>>("rigid walls"));
 }
 
 void add_body_load_blocks(State& s, Blocks& blocks) {

@@ -1,7 +1,7 @@
 #pragma once
 /// Velocity-level boundary conditions applied after the free velocity update, in this order:
-/// nodal constraints (SPC, *NODE TC), prescribed nodal motion, planar rigid walls. Each records
-/// the force it applied (m dv / dt) for spcforc, bndout and rwforc.
+/// nodal constraints (SPC, *NODE TC), prescribed nodal motion (then the walls, walls/). Each
+/// records the force it applied (m dv / dt) for spcforc and bndout.
 #include "solver/rigid/rigid_bodies.hpp"
 #include "solver/state.hpp"
 
@@ -14,9 +14,6 @@ void apply_body_loads(State& state);
 
 void apply_nodal_constraints(State& state, const StepTimes& t);
 void apply_nodal_motions(State& state, const StepTimes& t);
-/// Stonewall (constraint method): nodes that would cross the wall during the coming step get the
-/// normal velocity that puts them on it; Coulomb friction limits the tangential impulse.
-void apply_rigid_walls(State& state, const StepTimes& t);
 
 /// What landing a node on a wall did (rigid walls, planar and geometric).
 struct WallLanding {

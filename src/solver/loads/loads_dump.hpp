@@ -18,13 +18,6 @@ void fields(Ar& ar, NodalMotion& m) {
 }
 
 template <class Ar>
-void fields(Ar& ar, RigidWallState& w) {
-  ar(w.id, w.point, w.normal, w.finite, w.edge_l, w.edge_m, w.length_l, w.length_m, w.friction,
-     w.birth, w.death, w.switched_off, w.moving, w.mass, w.velocity, w.displacement, w.nodes,
-     w.force, w.energy);
-}
-
-template <class Ar>
 void fields(Ar& ar, PointLoadState& p) {
   ar(p.nodes, p.body, p.axis, p.moment, p.curve, p.scale, p.last);
 }
@@ -34,12 +27,9 @@ void fields(Ar& ar, PressureLoadState& p) {
   ar(p.segments, p.curve, p.scale, p.arrival, p.last);
 }
 
-inline constexpr auto kConditionDumpedSizes =
-    sizes_of<NodalConstraints, NodalMotion, RigidWallState>();
-static_assert(!kSizesPinned ||
-                  kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 136, 240},
-              "NodalConstraints, NodalMotion or RigidWallState changed: list the new member in "
-              "fields() above");
+inline constexpr auto kConditionDumpedSizes = sizes_of<NodalConstraints, NodalMotion>();
+static_assert(!kSizesPinned || kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 136},
+              "NodalConstraints or NodalMotion changed: list the new member in fields() above");
 inline constexpr auto kLoadDumpedSizes = sizes_of<PointLoadState, PressureLoadState>();
 static_assert(!kSizesPinned || kLoadDumpedSizes == decltype(kLoadDumpedSizes){56, 64},
               "PointLoadState or PressureLoadState changed: list the new member in fields() above");

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/energy.hpp"
+#include "solver/walls/planar_wall.hpp"
 #include "solver_support.hpp"
 
 namespace mcdyna::test {
@@ -133,7 +134,7 @@ TEST_CASE("finite rigid wall only stops nodes over its extent, moving wall excha
   Simulation hit =
       prepare(dir, elastic_cube("*RIGIDWALL_PLANAR_MOVING\n0\n0,0,-0.05,0,0,1\n50.0,1.0\n", 0.6));
   run(hit);
-  const solver::RigidWallState& w = hit.state->rigid_walls[0];
+  const solver::walls::PlanarWall& w = solver::walls::planar_walls_of(*hit.state).at(0);
   const double total = momentum(*hit.state).z() + w.mass * w.velocity;
   CHECK(momentum(*hit.state).z() > 1.0);
   CHECK(total == doctest::Approx(50.0).epsilon(1e-12));
