@@ -43,24 +43,15 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
   // constraints, motions, then the SPG parts that these pin, their initial velocities, the
   // walls that track their nodes, and contact, whose slave nodes they are; the sensors last,
   // as they read the cycle's results and switch the blocks before them.
-  const char* const expected[] = {"solids",
-                                  "shells",
-                                  "beams",
-                                  "rigid bodies",
-                                  "joints",
-                                  "constraints",
-                                  "motions",
-                                  "spg",
-                                  "discrete",
-                                  "initial velocities",
-                                  "rigid walls",
-                                  "geometric walls",
-                                  "body loads",
-                                  "applied loads",
-                                  "global damping",
-                                  "contact",
-                                  "ties",
-                                  "sensors"};
+  const char* const expected[] = {"solids",         "shells",
+                                  "beams",          "rigid bodies",
+                                  "joints",         "constraints",
+                                  "motions",        "spg",
+                                  "discrete",       "initial velocities",
+                                  "rigid walls",    "geometric walls",
+                                  "body loads",     "applied loads",
+                                  "global damping", "contact",
+                                  "ties",           "sensors"};
   REQUIRE(order.size() == std::size(expected));
   for (std::size_t i = 0; i < order.size(); ++i)
     CHECK(order[i] == expected[i]);
