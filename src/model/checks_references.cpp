@@ -17,19 +17,6 @@ std::size_t check(ModelDatabase& model, core::Diagnostics& diags) {
 
 namespace detail {
 
-namespace {
-
-template <typename Entity>
-void index_one(IdIndex& index, const std::vector<Entity>& v, const char* what,
-               core::Diagnostics& diags) {
-  for (const auto& [first, again] : index.build(v)) {
-    diags.error(v[again].loc, "{} {} is defined twice (first at line {})", what, v[again].id,
-                v[first].loc.line);
-  }
-}
-
-}  // namespace
-
 void build_indices(ModelDatabase& m, core::Diagnostics& diags) {
   auto& ix = m.index;
   index_one(ix.nodes, m.nodes, "node", diags);

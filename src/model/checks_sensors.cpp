@@ -10,15 +10,6 @@ namespace mcdyna::model::detail {
 
 namespace {
 
-// Each repeated ID of `ids` reported at the repeat's location.
-template <typename Entity>
-void unique_ids(IdIndex& index, const std::vector<Entity>& v, const char* what,
-                core::Diagnostics& diags) {
-  for (const auto& [first, again] : index.build(v))
-    diags.error(v[again].loc, "{} {} is defined twice (first at line {})", what, v[again].id,
-                v[first].loc.line);
-}
-
 void need(bool found, const core::SourceLoc& loc, const char* user, model::Id user_id,
           const char* what, model::Id id, core::Diagnostics& diags) {
   if (!found)
@@ -31,10 +22,10 @@ void check_sensors(const ModelDatabase& m, core::Diagnostics& diags) {
   const Sensors& s = m.sensors;
   // Node and force sensors share one ID space (a switch names a sensor by SENSID alone).
   IdIndex node_sensors, force_sensors, switches, controls;
-  unique_ids(node_sensors, s.nodes, "sensor", diags);
-  unique_ids(force_sensors, s.forces, "sensor", diags);
-  unique_ids(switches, s.switches, "*SENSOR_SWITCH", diags);
-  unique_ids(controls, s.controls, "*SENSOR_CONTROL", diags);
+  index_one(node_sensors, s.nodes, "sensor", diags);
+  index_one(force_sensors, s.forces, "sensor", diags);
+  index_one(switches, s.switches, "*SENSOR_SWITCH", diags);
+  index_one(controls, s.controls, "*SENSOR_CONTROL", diags);
   for (const ForceSensor& f : s.forces)
     if (node_sensors.contains(f.id))
       diags.error(f.loc, "sensor {} is defined twice (also a *SENSOR_DEFINE_NODE)", f.id);

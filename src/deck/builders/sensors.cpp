@@ -2,30 +2,19 @@
 // (FTYPE, VID, CTYPE, LOGIC, INITSTT) become typed values here (one sensor or switch per line,
 // as many lines as the keyword has); a word mcdyna does not run is
 // refused at its field with what it does run.
-#include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <optional>
 
 #include "deck/builders/builders.hpp"
+#include "deck/numbers.hpp"
+#include "deck/text_util.hpp"
 
 namespace mcdyna::deck::builders {
 
 namespace {
 
+// A text field's word as the keywords compare it: trimmed, upper case.
 std::string word(const Row& row, std::string_view field) {
-  std::string w = row.text_or_default(field);
-  w.erase(std::remove_if(w.begin(), w.end(), [](unsigned char c) { return std::isspace(c); }),
-          w.end());
-  std::transform(w.begin(), w.end(), w.begin(), [](unsigned char c) { return std::toupper(c); });
-  return w;
-}
-
-std::optional<model::Id> whole_number(const std::string& w) {
-  model::Id n = 0;
-  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), n);
-  if (ec != std::errc() || end != w.data() + w.size() || n < 0) return std::nullopt;
-  return n;
+  return upper(trim(row.text_or_default(field)));
 }
 
 // FTYPE (force sensors) and TYPE (controls): the entity kinds the solver can read and switch.
@@ -48,7 +37,7 @@ model::SensorDirection force_direction(KeywordRecord& r, const Row& row) {
   d.magnitude = false;
   if (w == "X" || w == "Y" || w == "Z") {
     d.axis = w[0] - 'X';
-  } else if (const auto n = whole_number(w); n && *n > 0) {
+  } else if (const auto n = parse_integer(w); n && *n > 0) {
     d.vector = *n;
   } else {
     r.diags().error(row.loc("VID"),
@@ -72,8 +61,8 @@ void sensor_define_node(KeywordRecord& r, model::ModelDatabase& m) {
     s.node_loc = c1.loc("NODE1");
     s.vector_loc = c1.loc("VID");
     if (const std::string vid = word(c1, "VID"); !vid.empty()) {
-      const auto n = whole_number(vid);
-      if (!n) {
+      const auto n = parse_integer(vid);
+      if (!n || *n < 0) {
         r.diags().error(c1.loc("VID"), "{}: VID {} is not a *DEFINE_VECTOR ID", r.display_name(),
                         vid);
       } else if (*n > 0) {

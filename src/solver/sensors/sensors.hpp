@@ -28,7 +28,7 @@ struct Sensor {
 /// One switch: its sensor (or the time), its test and its timing.
 struct Switch {
   model::Id id = 0;
-  std::ptrdiff_t sensor = -1;  ///< into Sensors::sensors; -1: the time
+  std::ptrdiff_t sensor = -1;  ///< into the block's sensors; -1: the time
   bool greater = false;
   double value = 0.0, window = 0.0, delay = 0.0;
 };

@@ -11,8 +11,8 @@
 #include "solver/compile.hpp"
 #include "solver/dump.hpp"
 #include "solver/loads/loads.hpp"
-#include "solver/sensors/switchable.hpp"
 #include "solver/walls/geometric_wall.hpp"
+#include "solver/walls/walls_block.hpp"
 
 namespace mcdyna::solver {
 
@@ -71,10 +71,9 @@ void apply_wall(State& s, GeometricWall& w, const StepTimes& t) {
   w.velocity = wall_velocity;
 }
 
-class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
+class GeometricWallsBlock final : public walls::WallsBlock<GeometricWall, GeometricWallsBlock> {
  public:
-  explicit GeometricWallsBlock(std::vector<GeometricWall> walls) : walls_(std::move(walls)) {}
-  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
+  using WallsBlock::WallsBlock;
   void constrain(State& s, const StepTimes& t) override {
     for (GeometricWall& w : walls_)
       apply_wall(s, w, t);
@@ -83,21 +82,6 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
     for (const GeometricWall& w : walls_)
       out.push_back({w.id, w.normal_force, w.force, w.energy});
   }
-  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
-                    Vec3& force) const override {
-    return sensors::sensed_force_in(
-        walls_, model::SensedEntity::rigid_wall, kind, id,
-        [](const GeometricWall& w) { return w.force; }, force);
-  }
-  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
-    return sensors::switch_in(walls_, model::SensedEntity::rigid_wall, kind, id, on);
-  }
-  // The work the walls took is glstat's stonewall energy.
-  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
-                    EnergySummary& e) const override {
-    for (const GeometricWall& w : walls_)
-      e.stonewall += w.energy;
-  }
   [[nodiscard]] std::string dump_name() const override { return "geometric rigid walls"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kWallDumpedSizes); }
   template <class Ar>
@@ -105,9 +89,6 @@ class GeometricWallsBlock final : public DumpedBlock<GeometricWallsBlock> {
     for (GeometricWall& w : walls_)
       ar(w.displacement, w.velocity, w.force, w.normal_force, w.energy, w.switched_off);
   }
-
- private:
-  std::vector<GeometricWall> walls_;
 };
 
 walls::Shape shape_of(model::WallShape s) {

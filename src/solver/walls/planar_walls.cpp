@@ -9,8 +9,8 @@
 #include "solver/compile.hpp"
 #include "solver/dump.hpp"
 #include "solver/loads/loads.hpp"
-#include "solver/sensors/switchable.hpp"
 #include "solver/walls/planar_wall.hpp"
+#include "solver/walls/walls_block.hpp"
 
 namespace mcdyna::solver {
 
@@ -81,30 +81,14 @@ void apply_walls(State& state, std::vector<PlanarWall>& walls, const StepTimes& 
   }
 }
 
-class PlanarWallsBlock final : public DumpedBlock<PlanarWallsBlock> {
+class PlanarWallsBlock final : public walls::WallsBlock<PlanarWall, PlanarWallsBlock> {
  public:
-  explicit PlanarWallsBlock(std::vector<PlanarWall> walls) : walls_(std::move(walls)) {}
-  [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
+  using WallsBlock::WallsBlock;
   void constrain(State& s, const StepTimes& t) override { apply_walls(s, walls_, t); }
   // The force on the wall along its normal is minus the structure's push: positive in contact.
   void add_wall_records(const State& /*s*/, std::vector<WallRecord>& out) const override {
     for (const PlanarWall& w : walls_)
       out.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
-  }
-  // The work the walls took is glstat's stonewall energy.
-  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
-                    EnergySummary& e) const override {
-    for (const PlanarWall& w : walls_)
-      e.stonewall += w.energy;
-  }
-  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
-                    Vec3& force) const override {
-    return sensors::sensed_force_in(
-        walls_, model::SensedEntity::rigid_wall, kind, id,
-        [](const PlanarWall& w) { return w.force; }, force);
-  }
-  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
-    return sensors::switch_in(walls_, model::SensedEntity::rigid_wall, kind, id, on);
   }
   [[nodiscard]] std::string dump_name() const override { return "rigid walls"; }
   [[nodiscard]] std::string dump_layout() const override {
@@ -114,10 +98,6 @@ class PlanarWallsBlock final : public DumpedBlock<PlanarWallsBlock> {
   void dumped(Ar& ar, State& /*s*/) {
     ar(walls_);
   }
-  [[nodiscard]] const std::vector<PlanarWall>& walls() const { return walls_; }
-
- private:
-  std::vector<PlanarWall> walls_;
 };
 
 }  // namespace
