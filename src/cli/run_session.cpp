@@ -219,9 +219,10 @@ void RunSession::add_output_hooks(solver::RunHooks& hooks) {
 // Every process: the stops (a signal, a failed write, the sense switches) and the dumps.
 void RunSession::add_control_hooks(solver::RunHooks& hooks) {
   if (!budgets_.empty())
-    hooks.velocities_advanced = [this](const solver::State& s, const solver::StepTimes& t) {
+    hooks.velocities_advanced = [this](const solver::State& s, const solver::NodalForces& f,
+                                       const solver::StepTimes& t) {
       for (std::size_t k = 0; k < budgets_.size(); ++k)
-        budgets_[k].record(s, s.spg[k], t.step, t.mean);
+        budgets_[k].record(s, s.spg[k], f.force, t.step, t.mean);
     };
   hooks.stop_requested = [this] { return stop_signal_ != 0 || !output_failure_.empty(); };
   hooks.sense_switches = [this] { return switches_->poll(); };

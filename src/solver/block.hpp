@@ -19,6 +19,7 @@
 #include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
+#include "solver/nodal_forces.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 #include "solver/state_sink.hpp"
@@ -58,12 +59,15 @@ class Block {
   [[nodiscard]] virtual PhaseTimes::Phase phase() const = 0;
   /// Once before the first cycle of a run that does not continue from a restart dump.
   virtual void initialise(State& /*s*/) {}
-  /// Forces at t^n added to s.nodes.force (positions x^n, velocities v^{n-1/2}); the block's
+  /// Forces and moments at t^n added to `f` (positions x^n, velocities v^{n-1/2}); the block's
   /// stable step and failures into `report`.
-  virtual void forces(State& /*s*/, ForceReport& /*report*/) {}
-  /// v^{n-1/2} -> v^{n+1/2} over t.mean for the nodes the block moves itself (the other nodes
-  /// took a = f / m before). Returns the lowest node with a non-finite velocity, or -1.
-  virtual Index advance_velocities(State& /*s*/, const StepTimes& /*t*/) { return -1; }
+  virtual void forces(State& /*s*/, NodalForces& /*f*/, ForceReport& /*report*/) {}
+  /// v^{n-1/2} -> v^{n+1/2} over t.mean by the forces `f` at t^n for the nodes the block moves
+  /// itself (the other nodes took a = f / m before). Returns the lowest node with a non-finite
+  /// velocity, or -1.
+  virtual Index advance_velocities(State& /*s*/, const NodalForces& /*f*/, const StepTimes& /*t*/) {
+    return -1;
+  }
   /// Velocity-level conditions, after every block's velocities.
   virtual void constrain(State& /*s*/, const StepTimes& /*t*/) {}
   /// After every condition: take up what the conditions changed.

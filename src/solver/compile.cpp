@@ -117,7 +117,6 @@ void compile_nodes_and_parts(const model::ModelDatabase& m, State& s) {
   nd.position = nd.initial;
   nd.velocity.setZero(3, nn);
   nd.acceleration.setZero(3, nn);
-  nd.force.setZero(3, nn);
   nd.mass.assign(static_cast<std::size_t>(nn), 0.0);
   nd.added_mass.assign(static_cast<std::size_t>(nn), 0.0);
   nd.rigid_body.assign(static_cast<std::size_t>(nn), -1);

@@ -77,22 +77,21 @@ class Phases {
   PhaseClock clock_;
 };
 
-// Forces at t^n from every block, and the critical step of them all.
+// Forces at t^n from every block into `f`, and the critical step of them all.
 // Over several processes only the nodes this process moves: the forces of the others are never
-// read here (their owners integrate them; outputs and dumps take them from the owners).
-ForceReport compute_forces(State& s, Phases& phases) {
+// read here (their owners integrate them).
+ForceReport compute_forces(State& s, NodalForces& f, Phases& phases) {
   ForceReport r;
-  const bool rotations = s.nodes.moment.cols() > 0;
   if (s.ownership.moves.empty()) {
-    s.nodes.force.setZero();
-    if (rotations) s.nodes.moment.setZero();
+    f.force.setZero();
+    if (f.rotations()) f.moment.setZero();
   } else {
     for (const Index n : s.ownership.moved_nodes) {
-      s.nodes.force.col(n).setZero();
-      if (rotations) s.nodes.moment.col(n).setZero();
+      f.force.col(n).setZero();
+      if (f.rotations()) f.moment.col(n).setZero();
     }
   }
-  phases.each([&](Block& b) { b.forces(s, r); });
+  phases.each([&](Block& b) { b.forces(s, f, r); });
   return r;
 }
 
@@ -105,19 +104,19 @@ std::string controlling_name(const State& s, const ForceReport& r) {
 
 // w += M / I dt for a node with rotations (a shell node). Its rotary inertia grows with any
 // DT2MS mass in proportion, so the rotations stay off the step as the translations slow down.
-bool rotation_update(Nodes& nd, Index n, double dt) {
+bool rotation_update(Nodes& nd, const Eigen::Matrix3Xd& moment, Index n, double dt) {
   const auto i = static_cast<std::size_t>(n);
   const double inertia = nd.rotary_inertia[i] * (1.0 + nd.added_mass[i] / nd.mass[i]);
   nd.previous_angular_velocity.col(n) = nd.angular_velocity.col(n);
-  nd.angular_velocity.col(n) += (dt / inertia) * nd.moment.col(n);
+  nd.angular_velocity.col(n) += (dt / inertia) * moment.col(n);
   return std::isfinite(nd.angular_velocity.col(n).sum());
 }
 
 // a = f / m and v += a dt for deformable nodes (and w += M / I dt where they rotate); returns
 // the lowest node with a non-finite value.
-Index free_velocity_update(State& s, double dt) {
+Index free_velocity_update(State& s, const NodalForces& f, double dt) {
   Nodes& nd = s.nodes;
-  const bool rotations = !nd.rotary_inertia.empty();
+  const bool rotations = nd.rotates();
   Index bad = std::numeric_limits<Index>::max();
   const std::size_t count = s.ownership.moved_count(nd.count());  // another process moves the rest
 #pragma omp parallel for schedule(static) reduction(min : bad) if (count > 2048)
@@ -128,12 +127,12 @@ Index free_velocity_update(State& s, double dt) {
     const double m = nd.mass[i] + nd.added_mass[i];
     if (!(m > 0.0)) continue;
     for (int k = 0; k < 3; ++k) {
-      const double a = nd.force(k, n) / m;
+      const double a = f.force(k, n) / m;
       nd.acceleration(k, n) = a;
       nd.velocity(k, n) += a * dt;
     }
     if (!std::isfinite(nd.velocity(0, n) + nd.velocity(1, n) + nd.velocity(2, n))) bad = n;
-    if (rotations && nd.rotary_inertia[i] > 0.0 && !rotation_update(nd, n, dt)) bad = n;
+    if (rotations && nd.rotary_inertia[i] > 0.0 && !rotation_update(nd, f.moment, n, dt)) bad = n;
   }
   return bad == std::numeric_limits<Index>::max() ? -1 : bad;
 }
@@ -153,11 +152,11 @@ void advance_free_positions(State& s, double dt) {
 // The first half of a cycle: v^{n-1/2} -> v^{n+1/2} (the nodes by a = f / m, then the blocks
 // that move their nodes themselves), then the conditions and what the blocks take up from them.
 // Returns the lowest node with a non-finite velocity, or -1.
-Index advance_velocities(State& s, Phases& phases, const StepTimes& t) {
-  Index bad = free_velocity_update(s, t.mean);
+Index advance_velocities(State& s, const NodalForces& f, Phases& phases, const StepTimes& t) {
+  Index bad = free_velocity_update(s, f, t.mean);
   phases.charge(PhaseTimes::elements);
   phases.each([&](Block& b) {
-    const Index n = b.advance_velocities(s, t);
+    const Index n = b.advance_velocities(s, f, t);
     if (bad < 0) bad = n;
   });
   phases.each([&](Block& b) { b.constrain(s, t); });
@@ -167,7 +166,8 @@ Index advance_velocities(State& s, Phases& phases, const StepTimes& t) {
 
 // The second half: x^n -> x^{n+1}, t^{n+1}, and the forces there. Over several processes the
 // ghost nodes' new positions and velocities arrive before the forces.
-ForceReport advance_positions(State& s, Phases& phases, const StepTimes& t, parallel::Halo* halo) {
+ForceReport advance_positions(State& s, NodalForces& f, Phases& phases, const StepTimes& t,
+                              parallel::Halo* halo) {
   advance_free_positions(s, t.step);
   phases.charge(PhaseTimes::other);
   phases.each([&](Block& b) { b.advance_positions(s, t.step); });
@@ -178,7 +178,7 @@ ForceReport advance_positions(State& s, Phases& phases, const StepTimes& t, para
     halo->exchange_motion(s);
     phases.charge(PhaseTimes::exchange);
   }
-  return compute_forces(s, phases);
+  return compute_forces(s, f, phases);
 }
 
 // Over several processes each computed the step estimate and failures of its own share: all
@@ -249,7 +249,8 @@ class Loop {
     if (comm_.size() > 1) decompose(resume != nullptr);
     if (resume) {
       // The dump was taken at the top of a cycle: its forces and step estimate are in the
-      // state and the resume point; computing them again would advance the stresses again.
+      // resume point; computing them again would advance the stresses again.
+      forces_ = resume->forces;
       pass_.critical_step = resume->critical_step;
       pass_.controlling_element = resume->controlling_element;
       pass_.controlling_domain = resume->controlling_domain;
@@ -260,6 +261,7 @@ class Loop {
       earlier_wall_ = resume->wall_seconds;
       earlier_core_ = resume->core_seconds;
     } else {
+      forces_ = NodalForces(s_.nodes.count(), s_.nodes.rotates());
       phases_.each([&](Block& b) { b.initialise(s_); });
     }
     if (halo_) {
@@ -270,7 +272,7 @@ class Loop {
       if (hooks_.decomposed && comm_.rank() == 0) hooks_.decomposed(summary);
     }
     if (!resume) {
-      pass_ = compute_forces(s_, phases_);
+      pass_ = compute_forces(s_, forces_, phases_);
       if (halo_) {
         follow_ownership(false);
         agree_on_forces(pass_, comm_);
@@ -299,13 +301,13 @@ class Loop {
     const bool stop = at_end || interrupted || result_.reason == StopReason::step_collapse;
     const bool write = stop || output_due;
     if (write) velocity_before_ = s_.nodes.velocity;
-    Index bad = advance_velocities(s_, phases_, t);
+    Index bad = advance_velocities(s_, forces_, phases_, t);
     if (halo_) bad = agree(bad);
     if (bad >= 0) stop_on_non_finite_velocity(bad);
-    if (hooks_.velocities_advanced && bad < 0) hooks_.velocities_advanced(s_, t);
+    if (hooks_.velocities_advanced && bad < 0) hooks_.velocities_advanced(s_, forces_, t);
     if (write || bad >= 0) write_state(velocity_before_, stop || bad >= 0);
     if (bad >= 0 || stop) return close(at_end, interrupted);
-    pass_ = advance_positions(s_, phases_, t, halo_ ? &*halo_ : nullptr);
+    pass_ = advance_positions(s_, forces_, phases_, t, halo_ ? &*halo_ : nullptr);
     if (halo_) {
       follow_ownership(false);
       agree_on_forces(pass_, comm_);
@@ -412,7 +414,8 @@ class Loop {
     phases_.charge(PhaseTimes::other);
     if (halo_) synchronise_blocks(Block::Gather::dump);
     const double seconds = elapsed();
-    const ResumePoint point{pass_.critical_step,
+    const ResumePoint point{forces_,
+                            pass_.critical_step,
                             pass_.controlling_element,
                             pass_.controlling_domain,
                             pass_.controlling_particle,
@@ -487,6 +490,7 @@ class Loop {
   long halo_generation_ = -1;           ///< s.ownership.generation the halo was built for
   long elements_ = 0, particles_ = 0;
   ForceReport pass_;
+  NodalForces forces_;      ///< at t^n: the step context the blocks' phases share
   bool state_due_ = false;  ///< the output of this cycle includes a d3plot state
   double earlier_wall_ = 0.0, earlier_core_ = 0.0;
   long first_cycle_ = 0;

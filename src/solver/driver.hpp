@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "solver/nodal_forces.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 
@@ -59,8 +60,9 @@ struct RunResult {
 };
 
 /// The time loop's own values at the top of a cycle, beside the State: what a restart dump needs
-/// to continue the loop exactly where it was (the forces of the state are already computed).
+/// to continue the loop exactly where it was (the forces at t^n are already computed).
 struct ResumePoint {
+  NodalForces forces;          ///< at t^n, as the last force pass left them
   double critical_step = 0.0;  ///< of the last force pass, before TSSFAC
   Index controlling_element = -1;
   std::size_t controlling_domain = 0;
@@ -94,8 +96,9 @@ struct RunHooks {
   /// interruption or error stop).
   std::function<void(const State&, const Eigen::Matrix3Xd& previous, bool final)> write;
   /// Called every cycle once the velocities have advanced to n+1/2 (constraints applied), before
-  /// the positions move: the state holds x^n, f^n and v^{n+1/2} (spg/angular_budget.hpp).
-  std::function<void(const State&, const StepTimes&)> velocities_advanced;
+  /// the positions move: the state holds x^n and v^{n+1/2}, the forces are f^n
+  /// (spg/angular_budget.hpp).
+  std::function<void(const State&, const NodalForces&, const StepTimes&)> velocities_advanced;
   /// Over several processes, once at the start: the decomposition summary (process 0).
   std::function<void(const std::string&)> decomposed;
   /// Polled every cycle (signals).
@@ -118,7 +121,7 @@ struct RunHooks {
 };
 
 /// Runs the state from its current time to ENDTIM / ENDCYC or until something stops it.
-/// `resume`: continue a run read from a restart dump (its forces are in the state already).
+/// `resume`: continue a run read from a restart dump (its forces are in the resume point).
 RunResult run(State& state, const RunHooks& hooks, const ResumePoint* resume = nullptr);
 
 }  // namespace mcdyna::solver

@@ -14,10 +14,10 @@ namespace mcdyna::solver {
 // (Outside the anonymous namespace: the archive finds fields() by argument-dependent lookup.)
 template <class Ar>
 void fields(Ar& ar, Nodes& n) {
-  ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.force, n.mass, n.added_mass,
-     n.rigid_body, n.smoothed, n.corner_offsets, n.corners);
-  ar(n.angular_velocity, n.previous_angular_velocity, n.moment, n.rotary_inertia,
-     n.shell_corner_offsets, n.shell_corners);
+  ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.mass, n.added_mass, n.rigid_body,
+     n.smoothed, n.corner_offsets, n.corners);
+  ar(n.angular_velocity, n.previous_angular_velocity, n.rotary_inertia, n.shell_corner_offsets,
+     n.shell_corners);
 }
 
 template <class Ar>
@@ -26,8 +26,13 @@ void fields(Ar& ar, PhaseTimes& p) {
 }
 
 template <class Ar>
+void fields(Ar& ar, NodalForces& f) {
+  ar(f.force, f.moment);
+}
+
+template <class Ar>
 void fields(Ar& ar, ResumePoint& r) {
-  ar(r.critical_step, r.controlling_element, r.controlling_domain, r.controlling_particle,
+  ar(r.forces, r.critical_step, r.controlling_element, r.controlling_domain, r.controlling_particle,
      r.first_step, r.phases, r.wall_seconds, r.core_seconds, r.element_cycles, r.particle_cycles);
 }
 
@@ -38,7 +43,7 @@ namespace {
 // curves, body_loads, damping, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both
 // changed by --fixed-step).
 constexpr auto kStateDumpedSizes = sizes_of<Nodes, State, ResumePoint>();
-static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){368, 2376, 192},
+static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){336, 2344, 224},
               "Nodes, State or ResumePoint changed: list the new member here, or note it among "
               "the deck data left out");
 

@@ -27,9 +27,10 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
 /// Nodal arrays. Velocities live at half steps (central difference), everything else at t^n.
+/// The forces and moments are the time loop's (nodal_forces.hpp), not the state's.
 struct Nodes {
   std::vector<model::Id> ids;
-  Eigen::Matrix3Xd initial, position, velocity, acceleration, force;
+  Eigen::Matrix3Xd initial, position, velocity, acceleration;
   std::vector<double> mass;        ///< lumped physical mass
   std::vector<double> added_mass;  ///< DT2MS mass scaling (zero without it)
   std::vector<Index> rigid_body;   ///< owning rigid body or -1
@@ -43,12 +44,14 @@ struct Nodes {
   /// rotary_inertia 0 means none (solid, particle and rigid-body nodes). Angular velocities
   /// live at half steps like the velocities; previous_angular_velocity is one half step back
   /// (the kinetic energy's 1/2 I w^{n-1/2} . w^{n+1/2}).
-  Eigen::Matrix3Xd angular_velocity, previous_angular_velocity, moment;
+  Eigen::Matrix3Xd angular_velocity, previous_angular_velocity;
   std::vector<double> rotary_inertia;
   /// Node -> (element * 4 + corner) of the deformable shells that touch it, in element order
   /// (the gather of their forces and moments, fixed order as for the solids).
   std::vector<Index> shell_corner_offsets, shell_corners;
   [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
+  /// Some node carries rotational degrees of freedom (and the step's forces carry moments).
+  [[nodiscard]] bool rotates() const { return !rotary_inertia.empty(); }
 };
 
 enum class SolidFormulation {

@@ -22,7 +22,7 @@ import tempfile
 PHASES = {
     "SPG smoothing": [r"\bspg::advance_velocities\(mcdyna::solver::State&", r"\bspg::absorb_constraints\("],
     "SPG stress": [r"::particle_update<"],
-    "SPG forces": [r"spg::particle_pass\(mcdyna::solver::State&, mcdyna::solver::spg::Domain&, double\) \[clone \._omp_fn\.0\]"],
+    "SPG forces": [r"spg::particle_pass\(mcdyna::solver::State&, mcdyna::solver::spg::Domain&, double, Eigen::Matrix<double, 3, -1, 0, 3, -1>&\) \[clone \._omp_fn\.0\]"],
     "SPG step estimate": [r"\bspg::recalibrate_stiffness_length\("],
     "SPG renewal": [r"\bspg::renew_kernel\(mcdyna::solver::State&, mcdyna::solver::spg::Domain&, std::vector",
                     r"\bspg::rows_to_renew\(", r"\bspg::break_bonds\("],

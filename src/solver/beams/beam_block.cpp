@@ -56,10 +56,10 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
     }
   }
 
-  void forces(State& s, ForceReport& r) override {
+  void forces(State& s, NodalForces& f, ForceReport& r) override {
     const ElementPassResult e = beam_element_pass(
         s, bm_, BeamPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt, s.time});
-    gather_beam_forces(s, bm_);
+    gather_beam_forces(s, bm_, f);
     if (e.mass_changed) refresh_added_mass(s);
     const Index offset = first_element(s, *this);
     if (e.critical_step < r.critical_step) {

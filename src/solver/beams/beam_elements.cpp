@@ -295,8 +295,8 @@ ElementPassResult beam_element_pass(State& state, Beams& beams, const BeamPassIn
   return totals.result();
 }
 
-void gather_beam_forces(State& state, const Beams& beams) {
-  fe::gather_forces_and_moments(state, beams.corner_force, beams.end_offsets, beams.ends);
+void gather_beam_forces(const State& state, const Beams& beams, NodalForces& f) {
+  fe::gather_forces_and_moments(state, beams.corner_force, beams.end_offsets, beams.ends, f);
 }
 
 }  // namespace mcdyna::solver

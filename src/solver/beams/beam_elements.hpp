@@ -28,7 +28,7 @@ ElementPassResult beam_element_pass(State& state, Beams& beams, const BeamPassIn
 
 /// Sums the beams' end forces into the nodal forces and their end moments into the nodal
 /// moments (gather over Nodes::beam_ends).
-void gather_beam_forces(State& state, const Beams& beams);
+void gather_beam_forces(const State& state, const Beams& beams, NodalForces& f);
 
 /// The element's local axes at the current geometry, as columns r s t.
 Mat3 beam_axes(const State& state, const Beams& beams, Index element);

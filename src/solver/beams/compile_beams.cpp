@@ -314,7 +314,6 @@ void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia) {
     nd.rotary_inertia.assign(static_cast<std::size_t>(nd.count()), 0.0);
     nd.angular_velocity.setZero(3, nd.count());
     nd.previous_angular_velocity.setZero(3, nd.count());
-    nd.moment.setZero(3, nd.count());
   }
   for (std::size_t i = 0; i < inertia.size(); ++i)
     nd.rotary_inertia[i] += inertia[i];

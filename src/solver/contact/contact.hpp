@@ -10,11 +10,12 @@
 
 namespace mcdyna::solver::contact {
 
-/// Adds the interface's contact forces at t^n to s.nodes.force (positions at t^n, velocities at
+/// Adds the interface's contact forces at t^n to `force` (positions at t^n, velocities at
 /// t^{n-1/2}) and updates its resultants and energy.
 /// `sort`: whether the candidate lists are rebuilt first (sort_due). Adds the wall seconds of its
 /// exchanges between processes (and the waits in them) to `exchange_seconds`.
-void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds);
+void interface_pass(State& s, Interface& c, bool sort, Eigen::Matrix3Xd& force,
+                    double& exchange_seconds);
 
 /// A force transducer (*CONTACT_FORCE_TRANSDUCER_PENALTY): its resultants from the forces the
 /// other interfaces applied this cycle (their `applied` lists), applying none itself. Run after

@@ -67,10 +67,10 @@ class InterfaceBlock : public DumpedBlock<Derived> {
 class ContactBlock final : public InterfaceBlock<ContactBlock> {
  public:
   using InterfaceBlock::InterfaceBlock;
-  void forces(State& s, ForceReport& /*report*/) override {
+  void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
     contact::Interface& c = s.contacts[interface_];
     if (s.ownership.comm.size() == 1) {
-      contact::interface_pass(s, c, contact::sort_due(s, c), exchange_seconds_);
+      contact::interface_pass(s, c, contact::sort_due(s, c), f.force, exchange_seconds_);
       return;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -82,7 +82,7 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
       segment_ghosts_.exchange([&](Index n, double* out) { pack_motion(s, n, out); },
                                [&](Index n, const double* in) { unpack_motion(s, n, in); });
     exchange_seconds_ += spg::seconds_since(start);
-    contact::interface_pass(s, c, sort, exchange_seconds_);
+    contact::interface_pass(s, c, sort, f.force, exchange_seconds_);
     if (sort) plan_segment_ghosts(s);
   }
   // The exchanges of the nodes' motion (and the wait for the slowest process) are exchange.
@@ -259,7 +259,7 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
 class TransducerBlock final : public InterfaceBlock<TransducerBlock> {
  public:
   using InterfaceBlock::InterfaceBlock;
-  void forces(State& s, ForceReport& /*report*/) override {
+  void forces(State& s, NodalForces& /*f*/, ForceReport& /*report*/) override {
     contact::transducer_pass(s, s.contacts[interface_], exchange_seconds_);
   }
   void split_times(const State& /*s*/, PhaseTimes& phases) const override {

@@ -367,7 +367,8 @@ std::vector<Contribution> owned_contributions(const State& s, Interface& c,
 
 }  // namespace
 
-void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds) {
+void interface_pass(State& s, Interface& c, bool sort, Eigen::Matrix3Xd& force,
+                    double& exchange_seconds) {
   // What the interface took from the structure (penalty springs and friction), the glstat
   // sliding energy: the work of the contact forces over each step with the trapezoidal rule,
   // half the force at either end times x^{n+1} - x^n = dt^{n+1/2} v^{n+1/2} (exact for a
@@ -396,7 +397,7 @@ void interface_pass(State& s, Interface& c, bool sort, double& exchange_seconds)
   for (const Contribution& f : owned_contributions(s, c, exchange_seconds)) {
     const Pass& p = c.passes[static_cast<std::size_t>(f.key >> 40)];
     const auto slot = static_cast<Index>(f.key & 7);
-    s.nodes.force.col(f.node) += f.force;
+    force.col(f.node) += f.force;
     // A replicated node's force is on every process; its owner alone counts it in the sums.
     if (!s.ownership.owned_now(f.node)) continue;
     c.applied.push_back({f.node, 0, slot, f.force});

@@ -111,17 +111,16 @@ class TieBlock final : public Block {
     after_constraints(s);
   }
 
-  void forces(State& s, ForceReport& /*report*/) override {
-    Nodes& nd = s.nodes;
+  void forces(State& s, NodalForces& forces, ForceReport& /*report*/) override {
     for (const Tie& t : s.ties) {
-      const Vec3 f = nd.force.col(t.slave);
+      const Vec3 f = forces.force.col(t.slave);
       for (std::size_t k = 0; k < 4; ++k)
-        if (t.weights[k] != 0.0) nd.force.col(t.masters[k]) += t.weights[k] * f;
-      nd.force.col(t.slave).setZero();
+        if (t.weights[k] != 0.0) forces.force.col(t.masters[k]) += t.weights[k] * f;
+      forces.force.col(t.slave).setZero();
     }
   }
 
-  Index advance_velocities(State& s, const StepTimes& t) override {
+  Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
     Nodes& nd = s.nodes;
     carry_masses(nd, s.ties);
     for (std::size_t j = 0; j < masters_.size(); ++j) {
@@ -129,7 +128,7 @@ class TieBlock final : public Block {
       const auto i = static_cast<std::size_t>(n);
       const double m = nd.mass[i] + nd.added_mass[i];
       if (!(m > 0.0)) continue;
-      nd.velocity.col(n) += t.mean * (1.0 / (m + carried_[j]) - 1.0 / m) * nd.force.col(n);
+      nd.velocity.col(n) += t.mean * (1.0 / (m + carried_[j]) - 1.0 / m) * f.force.col(n);
     }
     return -1;
   }

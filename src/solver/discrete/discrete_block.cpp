@@ -57,8 +57,8 @@ class SpringsBlock final : public DumpedBlock<SpringsBlock> {
   }
 
   // At x^n with v^{n-1/2} (the rate lags half a step, as *DAMPING_GLOBAL's velocities do).
-  void forces(State& s, ForceReport& r) override {
-    Nodes& nd = s.nodes;
+  void forces(State& s, NodalForces& forces, ForceReport& r) override {
+    const Nodes& nd = s.nodes;
     const Index first = first_element(s, *this);
     for (Index k = 0; k < sp_.count(); ++k) {
       const auto i = static_cast<std::size_t>(k);
@@ -82,8 +82,8 @@ class SpringsBlock final : public DumpedBlock<SpringsBlock> {
       sp_.force[i] = f;
       sp_.deflection[i] = d;
       sp_.rate[i] = rate;
-      nd.force.col(a) += f * n;
-      nd.force.col(b) -= f * n;
+      forces.force.col(a) += f * n;
+      forces.force.col(b) -= f * n;
       const double scale = std::abs(sp_.scale[i]);
       const double step =
           discrete::stable_step(scale * law.step_stiffness, scale * law.damping,

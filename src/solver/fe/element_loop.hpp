@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "solver/nodal_forces.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -154,10 +155,10 @@ void element_loop(Index begin, Index end, ElementArrays a, double scale_factor, 
 /// Sums per-corner forces and moments (6 values: force then moment, global axes) into the nodal
 /// forces and moments over a node -> (element * N + corner) list (CSR `offsets`, `corners`), in
 /// its fixed order: the shells' and the beams' gather.
-inline void gather_forces_and_moments(State& state, const std::vector<double>& values,
+inline void gather_forces_and_moments(const State& state, const std::vector<double>& values,
                                       const std::vector<Index>& offsets,
-                                      const std::vector<Index>& corners) {
-  Nodes& nd = state.nodes;
+                                      const std::vector<Index>& corners, NodalForces& f) {
+  const Nodes& nd = state.nodes;
   const double* cf = values.data();
   const std::size_t count = state.ownership.moved_count(nd.count());
 #pragma omp parallel for schedule(static) if (count > 4 * kParallelMinimum)
@@ -173,8 +174,8 @@ inline void gather_forces_and_moments(State& state, const std::vector<double>& v
         sum[d] += c[d];
     }
     for (int d = 0; d < 3; ++d) {
-      nd.force(d, n) += sum[d];
-      nd.moment(d, n) += sum[3 + d];
+      f.force(d, n) += sum[d];
+      f.moment(d, n) += sum[3 + d];
     }
   }
 }

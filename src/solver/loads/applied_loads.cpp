@@ -17,8 +17,8 @@ double value(const State& s, Index curve, double scale, double shift) {
   return scale * s.curves[static_cast<std::size_t>(curve)](s.time - shift);
 }
 
-void apply_point_loads(State& s) {
-  Nodes& nd = s.nodes;
+void apply_point_loads(State& s, NodalForces& f) {
+  const Nodes& nd = s.nodes;
   for (PointLoadState& l : s.point_loads) {
     const double now = value(s, l.curve, l.scale, 0.0);
     // Work of last cycle's load and this one over the step just taken, at v^{n+1/2}.
@@ -36,12 +36,12 @@ void apply_point_loads(State& s) {
       (l.moment ? b.load_moment : b.load_force)[l.axis] += now;
     }
     for (const Index n : l.nodes)
-      (l.moment ? nd.moment : nd.force)(l.axis, n) += now;
+      (l.moment ? f.moment : f.force)(l.axis, n) += now;
   }
 }
 
-void apply_pressure_loads(State& s) {
-  Nodes& nd = s.nodes;
+void apply_pressure_loads(State& s, Eigen::Matrix3Xd& force) {
+  const Nodes& nd = s.nodes;
   for (PressureLoadState& l : s.pressure_loads) {
     const double p = s.time >= l.arrival ? value(s, l.curve, l.scale, l.arrival) : 0.0;
     for (std::size_t k = 0; k < l.segments.size(); ++k) {
@@ -58,7 +58,7 @@ void apply_pressure_loads(State& s) {
         const auto col = static_cast<Index>(4 * k + static_cast<std::size_t>(c));
         s.load_work += 0.5 * s.step * (Vec3(l.last.col(col)) + f).dot(nd.velocity.col(n));
         l.last.col(col) = f;
-        nd.force.col(n) += f;
+        force.col(n) += f;
       }
     }
   }
@@ -86,9 +86,9 @@ class AppliedLoadsBlock final : public DumpedBlock<AppliedLoadsBlock> {
                     EnergySummary& e) const override {
     e.external_work += s.load_work;
   }
-  void forces(State& s, ForceReport& /*report*/) override {
-    apply_point_loads(s);
-    apply_pressure_loads(s);
+  void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
+    apply_point_loads(s, f);
+    apply_pressure_loads(s, f.force);
   }
 };
 

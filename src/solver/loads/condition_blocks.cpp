@@ -71,7 +71,9 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
 class BodyLoadsBlock final : public Block {
  public:
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
-  void forces(State& s, ForceReport& /*report*/) override { apply_body_loads(s); }
+  void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
+    apply_body_loads(s, f.force);
+  }
 };
 
 }  // namespace

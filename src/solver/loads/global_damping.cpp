@@ -11,11 +11,11 @@ namespace mcdyna::solver {
 
 namespace {
 
-void apply_global_damping(State& s, const GlobalDampingState& g) {
+void apply_global_damping(State& s, const GlobalDampingState& g, NodalForces& forces) {
   const double d = g.curve >= 0 ? s.curves[static_cast<std::size_t>(g.curve)](s.time) : g.value;
   if (d == 0.0) return;
-  Nodes& nd = s.nodes;
-  const bool rotations = !nd.rotary_inertia.empty();
+  const Nodes& nd = s.nodes;
+  const bool rotations = nd.rotates();
   core::ExactSum taken;
   const std::size_t count = s.ownership.moved_count(nd.count());
   for (std::size_t k = 0; k < count; ++k) {
@@ -25,12 +25,12 @@ void apply_global_damping(State& s, const GlobalDampingState& g) {
     double power = 0.0;
     for (int a = 0; a < 3; ++a) {
       const double f = -g.scale[static_cast<std::size_t>(a)] * d * nd.mass[i] * nd.velocity(a, n);
-      nd.force(a, n) += f;
+      forces.force(a, n) += f;
       power += f * nd.velocity(a, n);
       if (rotations && nd.rotary_inertia[i] > 0.0) {
         const double m = -g.scale[static_cast<std::size_t>(3 + a)] * d * nd.rotary_inertia[i] *
                          nd.angular_velocity(a, n);
-        nd.moment(a, n) += m;
+        forces.moment(a, n) += m;
         power += m * nd.angular_velocity(a, n);
       }
     }
@@ -65,9 +65,9 @@ class GlobalDampingBlock final : public DumpedBlock<GlobalDampingBlock> {
                     EnergySummary& e) const override {
     e.damping += s.damping_work;
   }
-  void forces(State& s, ForceReport& /*report*/) override {
+  void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
     for (const GlobalDampingState& g : s.damping)
-      apply_global_damping(s, g);
+      apply_global_damping(s, g, f);
   }
 };
 

@@ -6,16 +6,16 @@
 
 namespace mcdyna::solver {
 
-void apply_body_loads(State& state) {
+void apply_body_loads(State& state, Eigen::Matrix3Xd& force) {
   if (state.body_loads.empty()) return;
   Vec3 a = Vec3::Zero();
   for (const BodyLoadState& b : state.body_loads)
     a[b.axis] += b.scale * state.curves[static_cast<std::size_t>(b.curve)](state.time);
-  Nodes& nd = state.nodes;
+  const Nodes& nd = state.nodes;
 #pragma omp parallel for schedule(static) if (nd.count() > 2048)
   for (Index n = 0; n < nd.count(); ++n)
     if (nd.rigid_body[static_cast<std::size_t>(n)] < 0)
-      nd.force.col(n) -= nd.mass[static_cast<std::size_t>(n)] * a;
+      force.col(n) -= nd.mass[static_cast<std::size_t>(n)] * a;
   for (RigidBody& b : state.rigid_bodies)
     if (!b.released) b.body_force = -b.mass * a;
 }

@@ -10,7 +10,7 @@ namespace mcdyna::solver {
 /// *LOAD_BODY: adds -m a(t) to every deformable node's force (SPG particles with the mass their
 /// velocity update divides by, so every particle gets the same acceleration) and sets each rigid
 /// body's body_force to -M a(t).
-void apply_body_loads(State& state);
+void apply_body_loads(State& state, Eigen::Matrix3Xd& force);
 
 void apply_nodal_constraints(State& state, const StepTimes& t);
 void apply_nodal_motions(State& state, const StepTimes& t);

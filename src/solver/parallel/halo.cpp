@@ -17,7 +17,6 @@ void node_fields(State& s, Eigen::Matrix3Xd& previous, Index n, Visit&& visit) {
   visit(nd.position.col(n).data(), 3);
   visit(nd.velocity.col(n).data(), 3);
   visit(nd.acceleration.col(n).data(), 3);
-  visit(nd.force.col(n).data(), 3);
   visit(&nd.added_mass[static_cast<std::size_t>(n)], 1);
   visit(previous.col(n).data(), 3);
 }

@@ -30,14 +30,14 @@ Vec3 at(const State& s, Index n) {
 }
 
 // Spherical and revolute: each pair's B node is pulled onto its A node, all three directions.
-void hold_points(State& s, JointState& j) {
+void hold_points(const State& s, JointState& j, Eigen::Matrix3Xd& force) {
   for (int p = 0; p < j.pairs; ++p) {
     const Index a = j.nodes[static_cast<std::size_t>(2 * p)];
     const Index b = j.nodes[static_cast<std::size_t>(2 * p + 1)];
     const Vec3 d = at(s, b) - at(s, a);
     const Vec3 f = j.stiffness * d;  // pulls a towards b and b towards a
-    s.nodes.force.col(a) += f;
-    s.nodes.force.col(b) -= f;
+    force.col(a) += f;
+    force.col(b) -= f;
     j.force -= f;
     j.energy += 0.5 * j.stiffness * d.squaredNorm();
   }
@@ -70,7 +70,7 @@ double line_stiffness(const State& s, const JointState& j, Index anchor, Index b
 // couple s/l f on N3 and -s/l f on N1 (s the B node's distance along the axis from the anchor,
 // l = |N3 - N1|), the statics of a rigid line. At the anchor alone it would be a follower
 // moment that grows with the slide and feeds the motion.
-void hold_on_lines(State& s, JointState& j) {
+void hold_on_lines(const State& s, JointState& j, Eigen::Matrix3Xd& force) {
   const Index n1 = j.nodes[0], n3 = j.nodes[2];
   const Vec3 axis = at(s, n3) - at(s, n1);
   const double length = axis.norm();
@@ -83,16 +83,16 @@ void hold_on_lines(State& s, JointState& j) {
     const Vec3 d = r - along * unit;
     const double k = line_stiffness(s, j, anchor, b, at(s, anchor) + along * unit, along / length);
     const Vec3 f = k * d;
-    s.nodes.force.col(anchor) += f;
-    s.nodes.force.col(n3) += (along / length) * f;
-    s.nodes.force.col(n1) -= (along / length) * f;
-    s.nodes.force.col(b) -= f;
+    force.col(anchor) += f;
+    force.col(n3) += (along / length) * f;
+    force.col(n1) -= (along / length) * f;
+    force.col(b) -= f;
     j.force -= f;
     j.energy += 0.5 * k * d.squaredNorm();
   }
 }
 
-void joint_forces(State& s, JointState& j) {
+void joint_forces(const State& s, JointState& j, Eigen::Matrix3Xd& force) {
   if (j.stiffness == 0.0) {
     if (!(s.step > 0.0)) return;  // the first cycle: the pairs still coincide
     j.initial_step = s.step;
@@ -103,9 +103,9 @@ void joint_forces(State& s, JointState& j) {
   if (j.switched_off) return;
   const model::JointKind kind = j.kind;
   if (kind == model::JointKind::cylindrical || kind == model::JointKind::translational)
-    hold_on_lines(s, j);
+    hold_on_lines(s, j, force);
   else
-    hold_points(s, j);
+    hold_points(s, j, force);
 }
 
 // A generalized joint stiffness: the rotation that takes A's local axes to B's, as a rotation
@@ -169,9 +169,9 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
   bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
     return sensors::switch_in(s.joints, model::SensedEntity::joint, kind, id, on);
   }
-  void forces(State& s, ForceReport& /*report*/) override {
+  void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
     for (JointState& j : s.joints)
-      joint_forces(s, j);
+      joint_forces(s, j, f.force);
     for (JointStiffnessState& j : s.joint_stiffnesses)
       joint_stiffness(s, j);
   }

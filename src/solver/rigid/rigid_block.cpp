@@ -26,9 +26,9 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
     ar(s.rigid_bodies, s.welds);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
-  Index advance_velocities(State& s, const StepTimes& t) override {
-    const Index bad = advance_rigid_bodies(s, t);
-    if (!s.welds.empty()) check_welds(s, t);
+  Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
+    const Index bad = advance_rigid_bodies(s, f, t);
+    if (!s.welds.empty()) check_welds(s, f.force, t);
     return bad;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }

@@ -79,14 +79,15 @@ Mat3 rotation_increment(const Vec3& omega, double dt) {
 // The resultant force and moment (about the centre) of the forces on a body's nodes, as exact
 // sums (core::ExactSum): each node on the process that owns it, then over the processes, so
 // the bits do not depend on their number (issue 25). Nodes without force are skipped.
-std::pair<Vec3, Vec3> node_resultants(const State& state, const RigidBody& b) {
+std::pair<Vec3, Vec3> node_resultants(const State& state, const NodalForces& forces,
+                                      const RigidBody& b) {
   const Nodes& nd = state.nodes;
   const parallel::Ownership& own = state.ownership;
   std::vector<core::ExactSum> sums(6);
-  const bool rotations = nd.moment.cols() > 0;  // shell nodes carry moments too
+  const bool rotations = forces.rotations();  // shell nodes carry moments too
   for (const Index n : b.nodes) {
-    const Vec3 f = nd.force.col(n);
-    const Vec3 couple = rotations ? Vec3(nd.moment.col(n)) : Vec3::Zero();
+    const Vec3 f = forces.force.col(n);
+    const Vec3 couple = rotations ? Vec3(forces.moment.col(n)) : Vec3::Zero();
     if (!own.owns_node(n) || (f.isZero(0.0) && couple.isZero(0.0))) continue;
     const Vec3 m = (Vec3(nd.position.col(n)) - b.center).cross(f) + couple;
     for (int k = 0; k < 3; ++k) {
@@ -100,12 +101,12 @@ std::pair<Vec3, Vec3> node_resultants(const State& state, const RigidBody& b) {
 
 }  // namespace
 
-Index advance_rigid_bodies(State& state, const StepTimes& t) {
+Index advance_rigid_bodies(State& state, const NodalForces& forces, const StepTimes& t) {
   Nodes& nd = state.nodes;
   Index bad = -1;  // the first node of the first body whose motion is not finite
   for (RigidBody& b : state.rigid_bodies) {
     if (b.released) continue;
-    auto [force, moment] = node_resultants(state, b);
+    auto [force, moment] = node_resultants(state, forces, b);
     force += b.body_force + b.load_force;  // at the centre of mass: no moment
     moment += b.load_moment;
     b.load_force.setZero();  // this cycle's loads and damping, taken

@@ -3,6 +3,7 @@
 /// momentum L as the integrated variable and omega = I(t)^-1 L, so a free body keeps L to
 /// round-off whatever its inertia. Constraints and prescribed motion fix velocity components in
 /// chosen directions; the free components follow from the momentum equations of the rest.
+#include "solver/nodal_forces.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -16,7 +17,7 @@ struct StepTimes {
 /// Sums nodal forces into each body, integrates its velocities under constraints and prescribed
 /// motion, then sets its nodes' velocities (half step) and accelerations. Returns the first node
 /// of the first body whose velocities are not finite, or -1.
-Index advance_rigid_bodies(State& state, const StepTimes& t);
+Index advance_rigid_bodies(State& state, const NodalForces& forces, const StepTimes& t);
 
 /// The least mass rigid body `b` answers a force at `point` with, over the force's directions:
 /// 1 / lambda_max(W), dv = W f, W = P_t / M + [r]x^T P_r J^-1 P_r [r]x at the current geometry

@@ -53,12 +53,12 @@ double node_plastic_strain(const State& s, Index node) {
 
 // The force the weld's body puts on node `n` this cycle, summed over the processes (the force
 // is whole on the node's owner only), so every process decides the same.
-Vec3 constraint_force(const State& s, Index n) {
+Vec3 constraint_force(const State& s, const Eigen::Matrix3Xd& force, Index n) {
   const Nodes& nd = s.nodes;
   std::vector<core::ExactSum> sums(3);
   if (s.ownership.owns_node(n)) {
     const Vec3 f =
-        nd.mass[static_cast<std::size_t>(n)] * Vec3(nd.acceleration.col(n)) - Vec3(nd.force.col(n));
+        nd.mass[static_cast<std::size_t>(n)] * Vec3(nd.acceleration.col(n)) - Vec3(force.col(n));
     for (int k = 0; k < 3; ++k)
       sums[static_cast<std::size_t>(k)].add(f[k]);
   }
@@ -80,10 +80,10 @@ void release(State& s, WeldState& w, double time) {
 
 }  // namespace
 
-void check_welds(State& state, const StepTimes& t) {
+void check_welds(State& state, const Eigen::Matrix3Xd& force, const StepTimes& t) {
   for (WeldState& w : state.welds) {
     if (w.failed_at >= 0.0) continue;
-    const Vec3 f = constraint_force(state, w.last);
+    const Vec3 f = constraint_force(state, force, w.last);
     const Vec3 axis =
         (Vec3(state.nodes.position.col(w.last)) - Vec3(state.nodes.position.col(w.first)))
             .normalized();

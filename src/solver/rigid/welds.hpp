@@ -10,6 +10,7 @@ namespace mcdyna::solver {
 
 /// After the rigid bodies' update: each holding weld's force, and the welds that fail this
 /// cycle (force criterion, TF, or the plastic strain EP of an element at their nodes) released.
-void check_welds(State& state, const StepTimes& t);
+/// `force`: the nodal forces of the cycle (the weld's force is m a - f at its N2).
+void check_welds(State& state, const Eigen::Matrix3Xd& force, const StepTimes& t);
 
 }  // namespace mcdyna::solver

@@ -74,10 +74,10 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
     }
   }
 
-  void forces(State& s, ForceReport& r) override {
+  void forces(State& s, NodalForces& f, ForceReport& r) override {
     const ElementPassResult e = shell_element_pass(
         s, ShellPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
-    gather_shell_forces(s);
+    gather_shell_forces(s, f);
     if (e.mass_changed) refresh_added_mass(s);
     // Elements are numbered solids first, then shells (block.hpp).
     const Index offset = s.solids.count();

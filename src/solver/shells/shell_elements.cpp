@@ -189,9 +189,9 @@ ElementPassResult shell_element_pass(State& state, const ShellPassInput& input) 
   return totals.result();
 }
 
-void gather_shell_forces(State& state) {
+void gather_shell_forces(const State& state, NodalForces& f) {
   fe::gather_forces_and_moments(state, state.shells.corner_force, state.nodes.shell_corner_offsets,
-                                state.nodes.shell_corners);
+                                state.nodes.shell_corners, f);
 }
 
 }  // namespace mcdyna::solver

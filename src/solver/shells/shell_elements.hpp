@@ -21,7 +21,7 @@ ElementPassResult shell_element_pass(State& state, const ShellPassInput& input);
 
 /// Sums the shells' corner forces into the nodal forces and their corner moments into the
 /// nodal moments (gather over Nodes::shell_corners).
-void gather_shell_forces(State& state);
+void gather_shell_forces(const State& state, NodalForces& f);
 
 /// The element's corotational axes at the current geometry, as columns e1 e2 e3 (e3 the normal):
 /// its stored stresses are components on these.

@@ -67,10 +67,10 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
     }
   }
 
-  void forces(State& s, ForceReport& r) override {
+  void forces(State& s, NodalForces& f, ForceReport& r) override {
     const ElementPassResult e = solid_element_pass(
         s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
-    gather_solid_forces(s);
+    gather_solid_forces(s, f);
     if (e.mass_changed) refresh_added_mass(s);
     if (e.critical_step < r.critical_step) {
       r.critical_step = e.critical_step;

@@ -324,10 +324,10 @@ ElementPassResult solid_element_pass(State& state, const ElementPassInput& input
   return totals.result();
 }
 
-void gather_solid_forces(State& state) {
+void gather_solid_forces(const State& state, NodalForces& forces) {
   const Nodes& nd = state.nodes;
   const double* cf = state.solids.corner_force.data();
-  double* f = state.nodes.force.data();
+  double* f = forces.force.data();
   // Another process gathers the nodes this one does not move.
   const std::size_t count = state.ownership.moved_count(nd.count());
 #pragma omp parallel for schedule(static) if (count > 4 * kParallelMinimum)

@@ -15,7 +15,7 @@ struct ElementPassInput {
 
 ElementPassResult solid_element_pass(State& state, const ElementPassInput& input);
 
-/// Sums corner forces into nodal forces (gather over Nodes::corners). Adds to `force`.
-void gather_solid_forces(State& state);
+/// Sums corner forces into nodal forces (gather over Nodes::corners). Adds to `f.force`.
+void gather_solid_forces(const State& state, NodalForces& f);
 
 }  // namespace mcdyna::solver

@@ -4,8 +4,8 @@
 
 namespace mcdyna::solver::spg {
 
-void AngularBudget::record(const State& s, const Domain& d, double position_step,
-                           double velocity_step) {
+void AngularBudget::record(const State& s, const Domain& d, const Eigen::Matrix3Xd& force,
+                           double position_step, double velocity_step) {
   Vec3 l = Vec3::Zero(), a = Vec3::Zero(), b = Vec3::Zero(), c = Vec3::Zero();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
@@ -15,7 +15,7 @@ void AngularBudget::record(const State& s, const Domain& d, double position_step
     if (d.kernel.pinned[jj]) pinned = true;
     const Index node = d.particles.nodes[jj];
     const Vec3 x = positions.col(j);
-    const Vec3 f = s.nodes.force.col(node);
+    const Vec3 f = force.col(node);
     // A pinned particle keeps a plain velocity: its force is taken at its own position (its
     // gather may be 0/0 where it reaches no smoothed row, as on the FDS plate's FE coupling).
     const Vec3 xbar = d.kernel.pinned[jj] ? x : gathered(d, j, positions);

@@ -24,7 +24,9 @@ struct AngularBudget {
 
   /// Records cycle n: called after the velocities advanced to n+1/2 and before the positions
   /// move; `position_step` = dt^{n+1/2}, `velocity_step` = dt^n.
-  void record(const State& s, const Domain& d, double position_step, double velocity_step);
+  /// `force`: the nodal forces f^n.
+  void record(const State& s, const Domain& d, const Eigen::Matrix3Xd& force, double position_step,
+              double velocity_step);
   /// A + B - C summed so far: the scheme's own contribution to the angular momentum.
   [[nodiscard]] Vec3 defect() const { return sum_a + sum_b - sum_c; }
 };

@@ -14,8 +14,11 @@ namespace {
 
 // The values of particle j that a synchronisation carries (distribution.hpp, Scope), as
 // (first value, count); one list serves packing and unpacking. A byte flag travels as a double.
+// `force`: the cycle's nodal forces, carried with `everything` where given (a migration in the
+// force pass; a dump takes them from the time loop).
 template <class Visit>
-void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit) {
+void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit,
+                     Eigen::Matrix3Xd* force = nullptr) {
   const auto jj = static_cast<std::size_t>(j);
   ParticleSet& p = d.particles;
   ParticleFields& f = d.fields;
@@ -52,9 +55,8 @@ void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit) {
     visit(&(*v)[jj], 1);
   visit(s.nodes.position.col(node).data(), 3);
   visit(s.nodes.velocity.col(node).data(), 3);
-  // The force at the top of a cycle (a restart dump's, which the next cycle starts from) and
-  // the acceleration of the last.
-  visit(s.nodes.force.col(node).data(), 3);
+  // The force summed so far in this force pass, and the acceleration of the last cycle.
+  if (force) visit(force->col(node).data(), 3);
   visit(s.nodes.acceleration.col(node).data(), 3);
   for (std::vector<double>* v : {&f.volume, &f.step, &f.pressure, &f.eos_energy, &f.temperature,
                                  &f.viscosity, &f.internal_energy, &f.mode_stiffness,
@@ -175,7 +177,8 @@ void synchronise(State& s, std::size_t domain, Scope scope) {
       scope == Scope::to_root || scope == Scope::histories);
 }
 
-void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner) {
+void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner,
+             Eigen::Matrix3Xd& force) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   Domain& d = s.spg[domain];
   const int me = s.ownership.comm.rank();
@@ -190,18 +193,23 @@ void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owne
   for (std::size_t j = 0; j < n; ++j)
     if (previous_owner[j] == me) wanted[j] = 0;  // held whole here until now
   int width = 0;
-  particle_values(s, d, 0, Scope::everything, [&](const double*, int count) { width += count; });
+  particle_values(
+      s, d, 0, Scope::everything, [&](const double*, int count) { width += count; }, &force);
   parallel::ExchangePlan plan(s.ownership.comm, previous_owner, wanted, width);
   plan.exchange(
       [&](Index j, double* out) {
-        particle_values(s, d, j, Scope::everything,
-                        [&](const double* v, int count) { out = std::copy(v, v + count, out); });
+        particle_values(
+            s, d, j, Scope::everything,
+            [&](const double* v, int count) { out = std::copy(v, v + count, out); }, &force);
       },
       [&](Index j, const double* in) {
-        particle_values(s, d, j, Scope::everything, [&](double* v, int count) {
-          std::copy(in, in + count, v);
-          in += count;
-        });
+        particle_values(
+            s, d, j, Scope::everything,
+            [&](double* v, int count) {
+              std::copy(in, in + count, v);
+              in += count;
+            },
+            &force);
       });
 }
 

@@ -65,8 +65,10 @@ void synchronise(State& s, std::size_t domain, Scope scope);
 
 /// After the share was rebuilt with new owners or rows: each process receives every value of
 /// the particles it now reads (its stressed rows and the particles in them) from their
-/// `previous_owner`, who held them whole. Collective.
-void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner);
+/// `previous_owner`, who held them whole, with their nodes' forces summed so far in `force`.
+/// Collective.
+void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner,
+             Eigen::Matrix3Xd& force);
 
 /// `width` values per particle, stored one particle after the other from `values`: every
 /// process receives those of each particle from its owner. Collective.

@@ -292,7 +292,7 @@ void carry_stabilization(const State& s, Domain& d, const std::vector<std::uint8
   }
 }
 
-void strain_gradient_stabilization(State& s, Domain& d) {
+void strain_gradient_stabilization(const State& s, Domain& d, Eigen::Matrix3Xd& force) {
   const Index n = d.count();
   GradientStabilization& g = d.fields.gradient;
   const Eigen::Matrix3Xd x = particle_positions(s, d);
@@ -316,7 +316,7 @@ void strain_gradient_stabilization(State& s, Domain& d) {
   stabilization_forces(d, g.work_stress, &g.curvature_stress, g.own_hessian, g.own_gradient,
                        g.force);
   for (Index k = 0; k < n; ++k)
-    s.nodes.force.col(d.particles.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
+    force.col(d.particles.nodes[static_cast<std::size_t>(k)]) += g.force.col(k);
 }
 
 void stabilization_operator(const Domain& d, const Material& mat, const Eigen::Matrix3Xd& x,

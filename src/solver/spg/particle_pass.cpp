@@ -279,7 +279,7 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
   return k;
 }
 
-ParticlePassResult particle_pass(State& s, Domain& d, double step) {
+ParticlePassResult particle_pass(State& s, Domain& d, double step, Eigen::Matrix3Xd& force) {
   const std::size_t domain = domain_index(s, d);
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
   if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
@@ -302,7 +302,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       d.kernel.steps_since_renewal = 0;
     if (due == 0) renewed.clear();
     if (split) {
-      timed_exchange(s, domain, [&] { migrate(s, domain, previous_owner); });
+      timed_exchange(s, domain, [&] { migrate(s, domain, previous_owner, force); });
       ++s.ownership.generation;  // the halo follows the new rows and owners
     }
   }
@@ -399,7 +399,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
       seconds_since(start) - (share ? share->exchange_seconds - exchanged_before : 0.0);
   if (d.settings.stabilization == Stabilization::strain_gradient) {
     start = Clock::now();
-    strain_gradient_stabilization(s, d);
+    strain_gradient_stabilization(s, d, force);
     d.times.stabilization += seconds_since(start);
   }
   start = Clock::now();
@@ -429,7 +429,7 @@ ParticlePassResult particle_pass(State& s, Domain& d, double step) {
           d.kernel.transpose.offsets[ii], d.kernel.transpose.offsets[ii + 1],
           [&](Index t) { return rows_of[t]; }, f.data());
     }
-    s.nodes.force.col(d.particles.nodes[ii]) += f;
+    force.col(d.particles.nodes[ii]) += f;
   }
   d.times.force += seconds_since(start);
 

@@ -79,7 +79,7 @@ const ParticleSubset* advanced_particles(const parallel::ParticleShare* share) {
 
 }  // namespace
 
-Index advance_velocities(State& s, Domain& d, double dt) {
+Index advance_velocities(State& s, Domain& d, const Eigen::Matrix3Xd& force, double dt) {
   const auto start = std::chrono::steady_clock::now();
   Nodes& nd = s.nodes;
   const Index n = d.count();
@@ -109,7 +109,7 @@ Index advance_velocities(State& s, Domain& d, double dt) {
         acc.col(i).setZero();
         continue;
       }
-      acc.col(i) = nd.force.col(d.particles.nodes[ii]) /
+      acc.col(i) = force.col(d.particles.nodes[ii]) /
                    (mc ? d.kernel.smoothed_mass[ii] : d.particles.mass[ii]);
       nd.acceleration.col(d.particles.nodes[ii]) = acc.col(i);
     }

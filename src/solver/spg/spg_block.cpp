@@ -83,8 +83,8 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
       added += a;
   }
 
-  void forces(State& s, ForceReport& r) override {
-    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[domain_], s.step);
+  void forces(State& s, NodalForces& f, ForceReport& r) override {
+    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[domain_], s.step, f.force);
     if (p.critical_step < r.critical_step) {
       r.critical_step = p.critical_step;
       r.controlling_element = -1;
@@ -98,8 +98,8 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
              false);
   }
 
-  Index advance_velocities(State& s, const StepTimes& t) override {
-    return spg::advance_velocities(s, s.spg[domain_], t.mean);
+  Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
+    return spg::advance_velocities(s, s.spg[domain_], f.force, t.mean);
   }
 
   void after_constraints(State& s) override { spg::absorb_constraints(s, s.spg[domain_]); }

@@ -28,9 +28,10 @@ struct ParticlePassResult {
   Index non_finite = -1;       ///< particle with a NaN/Inf state
 };
 
-/// Renews the kernel when due, then stress update and internal forces (added to nodes.force).
-/// `step` is the step the current velocities were integrated over (0 at the start).
-ParticlePassResult particle_pass(State& s, Domain& d, double step);
+/// Renews the kernel when due, then stress update and internal forces (added to `force`, the
+/// cycle's nodal forces). `step` is the step the current velocities were integrated over (0 at
+/// the start).
+ParticlePassResult particle_pass(State& s, Domain& d, double step, Eigen::Matrix3Xd& force);
 
 /// The particles' node positions, in particle order (3 x count).
 Eigen::Matrix3Xd particle_positions(const State& s, const Domain& d);
@@ -50,10 +51,10 @@ struct ParticleKinematics {
 ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
                                        double half_step = 0.0);
 
-/// Velocity update of the domain's particles over `dt` from the nodal forces, after the FE
-/// velocity update (which integrated the pinned particles' own force). Returns the lowest node
-/// with a non-finite velocity, or -1.
-Index advance_velocities(State& s, Domain& d, double dt);
+/// Velocity update of the domain's particles over `dt` from the nodal forces `force`, after the
+/// FE velocity update (which integrated the pinned particles' own force). Returns the lowest
+/// node with a non-finite velocity, or -1.
+Index advance_velocities(State& s, Domain& d, const Eigen::Matrix3Xd& force, double dt);
 
 /// After constraints and walls changed node velocities: carry the change into the unsmoothed
 /// velocities (MC-SPG: m_I / m-hat_I times the change, so momentum is the wall's impulse).
@@ -167,8 +168,8 @@ void stabilization_moments(const State& s, Domain& d, const std::vector<std::uin
 
 /// ITB 1, after the stress pass (which left F-hat, K and G-tilde per particle): the
 /// stabilisation stresses (Eq. 10) from the strain gradient of the current positions in each
-/// row's reference, their forces (Eq. 9) added to the nodes, their work to d.fields.mode_energy.
-void strain_gradient_stabilization(State& s, Domain& d);
+/// row's reference, their forces (Eq. 9) added to `force`, their work to d.fields.mode_energy.
+void strain_gradient_stabilization(const State& s, Domain& d, Eigen::Matrix3Xd& force);
 
 /// ITB 1's stabilisation linearised with the elastic tangent (for the power iteration of
 /// frequency.cpp): the forces of a displacement field x (3 x count, per particle). With `rows`

@@ -268,9 +268,9 @@ struct DeformedBlock {
       d.fields.gradient.stress.setZero();
       d.fields.gradient.strain.setZero();
     }
-    s.nodes.force.setZero();
-    spg::strain_gradient_stabilization(s, d);
-    return s.nodes.force;
+    Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, s.nodes.count());
+    spg::strain_gradient_stabilization(s, d, force);
+    return force;
   }
   // The stored energy 1/2 sum V0 sigma-tilde_a : e_a (exact after a fresh pass).
   [[nodiscard]] double energy() const {

@@ -22,6 +22,12 @@ using solver::Index;
 using solver::Vec3;
 namespace spg = solver::spg;
 
+// The nodal forces a cycle starts from, as the time loop holds them (solver/nodal_forces.hpp):
+// none, for the particle passes called here one by one.
+Eigen::Matrix3Xd zero_forces(const solver::State& s) {
+  return Eigen::Matrix3Xd::Zero(3, s.nodes.count());
+}
+
 const char* kSpgSection =
     "*SECTION_SOLID_SPG\n1,47\n1.5,1.5,1.5,0,0,,15,0.0\n1,1.0E+11,1.0E+10,3,1.0,0,0,-0.001\n";
 
@@ -115,7 +121,7 @@ TEST_CASE("MC-SPG free body: linear momentum kept to round-off over 1000 steps")
   double scale = 0.0;
   const Vec3 p0 = conserved_momentum(*sim.state, scale);
   // Eq. 24: in the reference configuration the smoothing keeps angular momentum exactly.
-  spg::advance_velocities(*sim.state, sim.state->spg.front(), 0.0);
+  spg::advance_velocities(*sim.state, sim.state->spg.front(), zero_forces(*sim.state), 0.0);
   const Vec3 l0 = angular(*sim.state, false);
   CHECK((angular(*sim.state, true) - l0).norm() <= 1e-12 * l0.norm());
   run(sim);
@@ -146,8 +152,9 @@ struct BudgetHooks {
   spg::AngularBudget budget;
   [[nodiscard]] solver::RunHooks hooks() {
     solver::RunHooks h;
-    h.velocities_advanced = [this](const solver::State& s, const solver::StepTimes& t) {
-      budget.record(s, s.spg.front(), t.step, t.mean);
+    h.velocities_advanced = [this](const solver::State& s, const solver::NodalForces& f,
+                                   const solver::StepTimes& t) {
+      budget.record(s, s.spg.front(), f.force, t.step, t.mean);
     };
     return h;
   }
@@ -347,7 +354,8 @@ TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and s
   // The initial arrangement is the reference of the bound: no row is shortened.
   for (const double m : d.kernel.mobility)
     CHECK(m == 1.0);
-  const double natural = spg::particle_pass(*sim.state, d, 0.0).critical_step;
+  Eigen::Matrix3Xd force = zero_forces(*sim.state);
+  const double natural = spg::particle_pass(*sim.state, d, 0.0, force).critical_step;
   const Index centre = tear_shape_function(*sim.state, d);
   const auto cc = static_cast<std::size_t>(centre);
   REQUIRE(d.kernel.pinned[cc] == 0);
@@ -367,7 +375,7 @@ TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and s
     if (apart.cwiseAbs().maxCoeff() > 3.5) CHECK(d.kernel.mobility[ii] == 1.0);
     largest = std::max(largest, d.kernel.mobility[ii]);
   }
-  const double shortened = spg::particle_pass(*sim.state, d, 0.0).critical_step;
+  const double shortened = spg::particle_pass(*sim.state, d, 0.0, force).critical_step;
   MESSAGE("largest mobility ", largest, ", critical step before / after ", natural, " / ",
           shortened);
   CHECK(shortened < natural / std::sqrt(2.0));
@@ -415,8 +423,7 @@ TEST_CASE("MC-SPG smoothing: an affine velocity field gives the exact strain rat
   spg::Domain& d = s.spg.front();
   d.settings.damping = 0.0;  // PDAMP acts on velocity differences; this checks Eq. 13 alone
   spg::initialise(s, d);
-  s.nodes.force.setZero();
-  REQUIRE(spg::advance_velocities(s, d, 0.0) == -1);  // smoothing only (Eq. 13)
+  REQUIRE(spg::advance_velocities(s, d, zero_forces(s), 0.0) == -1);  // smoothing only (Eq. 13)
   int checked = 0;
   double worst = 0.0, boundary_worst = 0.0;
   for (Index i = 0; i < d.count(); ++i) {
@@ -534,7 +541,8 @@ TEST_CASE("MSC 1: mode-control forces vanish for affine motion and keep both mom
   spg::Domain& d = s.spg.front();
   d.settings.mode_control = spg::kModeControl;
   spg::initialise(s, d);
-  spg::particle_pass(s, d, 0.0);  // stiffnesses k_J from the stress update
+  Eigen::Matrix3Xd force = zero_forces(s);
+  spg::particle_pass(s, d, 0.0, force);  // stiffnesses k_J from the stress update
   // A finite rotation, stretch and shear of the reference: every residual is round-off.
   Eigen::Matrix3d f = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
   f = f * (Eigen::Matrix3d() << 1.3, 0.2, 0.0, 0.0, 0.8, 0.1, 0.0, 0.0, 1.1).finished();
@@ -623,7 +631,8 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
     spg::Domain& d = sim.state->spg.front();
     spg::initialise(*sim.state, d);
     invert_neighbourhood(*sim.state, d, centre);
-    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
+    Eigen::Matrix3Xd force = zero_forces(*sim.state);
+    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3, force);
     CHECK(r.inverted >= 0);
     CHECK(r.critical_step > 0.0);  // the particles that did not invert still give a step
     CHECK(d.diagnostics.released == 0);
@@ -643,7 +652,8 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
           .broken[static_cast<std::size_t>(d.kernel.bonds.offsets[static_cast<std::size_t>(i)])] =
           1;
     invert_neighbourhood(*sim.state, d, centre);
-    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3);
+    Eigen::Matrix3Xd force = zero_forces(*sim.state);
+    const spg::ParticlePassResult r = spg::particle_pass(*sim.state, d, 1e-3, force);
     CHECK(r.inverted == -1);
     CHECK(d.fields.debris[static_cast<std::size_t>(centre)] == 1);
     CHECK(d.diagnostics.released > 0);
