@@ -167,15 +167,18 @@ TEST_CASE("sensor control: a run continued from a dump between two switches ends
                 r.output);
 }
 
-TEST_CASE("sensor keywords: what cannot be run is an error at its field") {
+TEST_CASE("sensor keywords: what cannot be run is an error at its field, in check as in run") {
   test::TempDir dir;
   const std::string base = test::source_text("tests/regression/sensor_release/sensor_release.k");
   auto check = [&](const std::string& from, const std::string& to, const std::string& expected) {
-    const std::string deck = test::with(base, from, to);
-    const test::Run r = test::run_mcdyna("run " + dir.write("bad.k", deck).string() + " --out " +
-                                         (dir.path() / "out").string());
+    const std::string deck = dir.write("bad.k", test::with(base, from, to)).string();
+    const test::Run r = test::run_mcdyna("run " + deck + " --out " + (dir.path() / "out").string());
     CHECK(r.exit_code != 0);
     CHECK_MESSAGE(contains(r.output, expected), r.output);
+    // `check` compiles the model as `run` does, so it finds the same error (exit 1, deck errors).
+    const test::Run c = test::run_mcdyna("check " + deck);
+    CHECK(c.exit_code == 1);
+    CHECK_MESSAGE(contains(c.output, expected), c.output);
   };
   check("         1 PRESC-MOT         7         X", "         1    AIRBAG         7         X",
         "bad.k:91:11-20: error: *SENSOR_DEFINE_FORCE: FTYPE AIRBAG is not supported");
