@@ -43,7 +43,7 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                b.part_id, b.mass, b.center[0], b.center[1], b.center[2], b.nodes.size());
   }
   fmt::print(log, "  total mass {:.6e}; constrained nodes {}; rigid walls {}\n", mass,
-             s.constraints.nodes.size(), solver::wall_records(s).size());
+             s.constraints.nodes.size(), solver::history_records(s).walls.size());
   if (s.mass_scaling_dt > 0.0) {
     fmt::print(log, "  mass scaling: target step {:.4e}, added mass so far {:.6e} ({:.3f} %)\n",
                s.mass_scaling_dt, added, mass > 0.0 ? 100.0 * added / mass : 0.0);

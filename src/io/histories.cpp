@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "core/exact_sum.hpp"
 #include "io/history_file.hpp"
 #include "solver/block.hpp"
 #include "solver/element_ref.hpp"
@@ -65,7 +66,7 @@ class Glstat final : public HistoryFile {
     line("time step", s.step);
     line("kinetic energy", e.kinetic);
     line("internal energy", e.internal);
-    const std::vector<solver::WallRecord> walls = solver::wall_records(s);
+    const std::vector<solver::WallRecord> walls = solver::history_records(s).walls;
     for (std::size_t w = 0; w < walls.size(); ++w)
       ascii(" {:.<31}{:14.5E} wall#{:2d}\n", "stonewall energy", walls[w].energy,
             static_cast<int>(w + 1));
@@ -81,7 +82,7 @@ class Glstat final : public HistoryFile {
     line("global y velocity", v[1]);
     line("global z velocity", v[2]);
     ascii(" {:.<31}{:14d}\n", "number of nodes", s.nodes.count());
-    ascii(" {:.<31}{:14d}\n", "number of elements", s.solids.count());
+    ascii(" {:.<31}{:14d}\n", "number of elements", solver::numbered_elements(s));
     ascii(" {:.<31}{:14d}\n", "time per zone cycle.(nanosec)",
           static_cast<long long>(c.nanoseconds_per_zone_cycle));
     if (s.mass_scaling_dt > 0.0) {
@@ -195,12 +196,11 @@ class Spcforc final : public HistoryFile {
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
-    const solver::NodalConstraints& nc = s.constraints;
     ascii(" single point constraint forces\n\n output at time ={:14.5E}\n", s.time);
     Vec3 total = Vec3::Zero();
-    for (std::size_t k = 0; k < nc.nodes.size(); ++k) {
-      const Vec3 r = nc.reaction.col(static_cast<Index>(k));
-      const long long id = s.nodes.ids[static_cast<std::size_t>(nc.nodes[k])];
+    for (const solver::ReactionRecord& reaction : solver::history_records(s).reactions) {
+      const Vec3& r = reaction.force;
+      const long long id = reaction.node;
       total += r;
       ascii(" node={:8d} local x,y,z forces ={:14.4E}{:14.4E}{:14.4E}\n", id, r[0], r[1], r[2]);
       csv("{:.9e},{},{:.9e},{:.9e},{:.9e}\n", s.time, id, r[0], r[1], r[2]);
@@ -225,7 +225,7 @@ class Rwforc final : public HistoryFile {
   void write(const OutputContext& c) override {
     const State& s = c.state;
     // Force of the structure on the wall; the normal force is positive in contact.
-    for (const solver::WallRecord& w : solver::wall_records(s)) {
+    for (const solver::WallRecord& w : solver::history_records(s).walls) {
       ascii("{:12.5E}{:8d}{:15.6E}{:15.6E}{:15.6E}{:15.6E}\n", s.time, w.id, w.normal_force,
             w.force[0], w.force[1], w.force[2]);
       csv("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, w.id, w.normal_force, w.force[0],
@@ -245,7 +245,7 @@ class Rcforc final : public HistoryFile {
                     "time,contact,side,x_force,y_force,z_force,mass,x_moment,y_moment,z_moment") {
     ascii("\n r e s u l t a n t   i n t e r f a c e   f o r c e s\n\n");
     ascii(" {:>12}  {}\n", "contact", "title");
-    for (const solver::contact::Interface& c : s.contacts)
+    for (const solver::ContactRecord& c : solver::history_records(s).contacts)
       ascii(" {:12d}  {}\n", c.id, c.heading);
     ascii("\n");
     flush();
@@ -253,7 +253,7 @@ class Rcforc final : public HistoryFile {
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
-    for (const solver::contact::Interface& in : s.contacts) {
+    for (const solver::ContactRecord& in : solver::history_records(s).contacts) {
       side("slave ", s.time, in.id, in.force_a, in.moment_a, in.mass_in_contact);
       side("master", s.time, in.id, in.force_b, in.moment_b, in.mass_in_contact);
     }
@@ -283,37 +283,32 @@ class Bndout final : public HistoryFile {
     ascii("\n\n\n\n\n n o d a l   f o r c e/e n e r g y    o u t p u t   t={:9.3E}\n\n\n\n\n\n",
           s.time);
     ascii(" velocity boundary condition forces/rigid body moments\n");
-    Vec3 total = Vec3::Zero();
-    double etotal = 0.0;
-    // One nd# line per prescribed node, as LS-DYNA prints them.
-    for (const solver::NodalMotion& m : s.nodal_motions) {
-      for (std::size_t k = 0; k < m.nodes.size(); ++k) {
-        const auto f = m.node_force.col(static_cast<Index>(k));
-        const model::Id id = s.nodes.ids[static_cast<std::size_t>(m.nodes[k])];
+    // The totals are exact sums of the lines (core::ExactSum): the force of a part pulled from
+    // both ends cancels to round-off, whose digits then depend on no order of the terms.
+    std::vector<core::ExactSum> sums(4);
+    // One nd# line per prescribed node, as LS-DYNA prints them, then the rigid parts.
+    for (const solver::BoundaryRecord& b : solver::history_records(s).boundaries) {
+      const Vec3& f = b.force;
+      if (b.kind == solver::BoundaryRecord::Kind::node) {
         ascii(" nd#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",
-              id, f[0], f[1], f[2], m.node_work[k]);
-        csv("{:.9e},node,{},{:.9e},{:.9e},{:.9e},0,0,0,{:.9e}\n", s.time, id, f[0], f[1], f[2],
-            m.node_work[k]);
+              b.id, f[0], f[1], f[2], b.energy);
+        csv("{:.9e},node,{},{:.9e},{:.9e},{:.9e},0,0,0,{:.9e}\n", s.time, b.id, f[0], f[1], f[2],
+            b.energy);
+      } else {
+        const Vec3& m = b.moment;
+        ascii("mat#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",
+              b.id, f[0], f[1], f[2], b.energy);
+        ascii("             xmoment={:13.4E}  ymoment={:13.4E} zmoment={:13.4E}\n", m[0], m[1],
+              m[2]);
+        csv("{:.9e},rigid_part,{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, b.id,
+            f[0], f[1], f[2], m[0], m[1], m[2], b.energy);
       }
-      total += m.force();
-      etotal += m.work();
-    }
-    for (const solver::RigidBody& b : s.rigid_bodies) {
-      if (b.motions.empty() && b.fixed_translation == std::array<bool, 3>{} &&
-          b.fixed_rotation == std::array<bool, 3>{})
-        continue;
-      const Vec3& f = b.constraint_force;
-      const Vec3& m = b.constraint_moment;
-      ascii("mat#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",
-            b.part_id, f[0], f[1], f[2], b.constraint_work);
-      ascii("             xmoment={:13.4E}  ymoment={:13.4E} zmoment={:13.4E}\n", m[0], m[1], m[2]);
-      csv("{:.9e},rigid_part,{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time,
-          b.part_id, f[0], f[1], f[2], m[0], m[1], m[2], b.constraint_work);
-      total += f;
-      etotal += b.constraint_work;
+      for (int k = 0; k < 3; ++k)
+        sums[static_cast<std::size_t>(k)].add(f[k]);
+      sums[3].add(b.energy);
     }
     ascii("              xtotal={:13.4E}   ytotal={:13.4E}  ztotal={:13.4E}   etotal={:13.4E}\n",
-          total[0], total[1], total[2], etotal);
+          sums[0].value(), sums[1].value(), sums[2].value(), sums[3].value());
     flush();
   }
 };

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "solver/compile.hpp"
+#include "solver/history_records.hpp"
 
 namespace mcdyna::io {
 
@@ -79,7 +80,7 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
       notes.push_back("nodout requested but no *DATABASE_HISTORY_NODE nodes: not written");
       continue;
     }
-    if (name == "rcforc" && s.contacts.empty()) {
+    if (name == "rcforc" && solver::history_records(s).contacts.empty()) {
       notes.push_back("rcforc requested but the deck has no contact: not written");
       continue;
     }

@@ -19,6 +19,7 @@
 #include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
+#include "solver/history_records.hpp"
 #include "solver/nodal_forces.hpp"
 #include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
@@ -41,15 +42,6 @@ struct ForceReport {
     failure = std::move(what);
     inverted = inverted_entity;
   }
-};
-
-/// A rigid wall's line in rwforc and glstat: its ID, the normal force on it (positive in contact),
-/// the force on it from the nodes, last step, and the work it has taken.
-struct WallRecord {
-  model::Id id = 0;
-  double normal_force = 0.0;
-  Vec3 force = Vec3::Zero();
-  double energy = 0.0;
 };
 
 class Block {
@@ -115,8 +107,9 @@ class Block {
   virtual void spread_added_mass(const State& /*s*/, std::vector<double>& /*nodal*/) const {}
   /// Adds to `added` the mass DT2MS mass scaling gave it beyond the nodes' (SPG particles).
   virtual void add_added_mass(const State& /*s*/, double& /*added*/) const {}
-  /// Its rigid walls' lines (rwforc, glstat), in the blocks' order.
-  virtual void add_wall_records(const State& /*s*/, std::vector<WallRecord>& /*walls*/) const {}
+  /// Its lines of the ASCII histories (rwforc and glstat's walls, rcforc, bndout, spcforc:
+  /// history_records.hpp), at the state's time.
+  virtual void add_history_records(const State& /*s*/, HistoryRecords& /*records*/) const {}
   /// Once compile() has made every block: resolves what it reads or drives in the other blocks'
   /// entities (a sensor's contact, a control's wall), reporting what it cannot find at its deck
   /// location. Runs again when a run restarts, before the dump is read.
@@ -178,9 +171,9 @@ void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
 
 /// The number of block `b`'s first element: the elements the blocks before it number.
 Index first_element(const State& s, const Block& b);  // fe/element_names.cpp
-
-/// Every block's rigid walls, in the blocks' order (energy.cpp).
-std::vector<WallRecord> wall_records(const State& s);
+/// The elements every block numbers (deformable solids, shells, beams, discrete elements):
+/// glstat's "number of elements".
+Index numbered_elements(const State& s);  // fe/element_names.cpp
 
 /// Names for diagnostics: "solid element 12 (part 1)", "SPG particle at node 7 (part 2)".
 std::string element_name(const State& s, Index element);

@@ -30,13 +30,6 @@ EnergySummary energy_summary(const State& s, const Eigen::Matrix3Xd& previous) {
   return e;
 }
 
-std::vector<WallRecord> wall_records(const State& s) {
-  std::vector<WallRecord> out;
-  for (const auto& b : s.blocks)
-    b->add_wall_records(s, out);
-  return out;
-}
-
 double total_added_mass(const State& s) {
   double added = 0.0;
   for (const double a : s.nodes.added_mass)

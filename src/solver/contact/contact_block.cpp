@@ -59,6 +59,12 @@ class InterfaceBlock : public DumpedBlock<Derived> {
     return sensors::switch_in(std::span(&s.contacts[interface_], 1), model::SensedEntity::contact,
                               kind, id, on);
   }
+  // rcforc: side A is the slave line, side B the master line.
+  void add_history_records(const State& s, HistoryRecords& out) const override {
+    const contact::Interface& c = s.contacts[interface_];
+    out.contacts.push_back({c.id, c.heading, interface_, c.force_a, c.moment_a, c.force_b,
+                            c.moment_b, c.mass_in_contact});
+  }
 
  protected:
   std::size_t interface_;

@@ -25,6 +25,13 @@ Index first_element(const State& s, const Block& b) {
   return first;
 }
 
+Index numbered_elements(const State& s) {
+  Index count = 0;
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    count += b->numbered_elements();
+  return count;
+}
+
 std::string element_name(const State& s, Index e) {
   const ElementRef r = element_ref(s, e);
   return fmt::format("{} element {} (part {})", r.kind, r.id, r.part);

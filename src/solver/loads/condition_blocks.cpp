@@ -36,6 +36,21 @@ bool switch_held(std::vector<NodalMotion>& v, model::SensedEntity kind, model::I
   return sensors::switch_in(v, model::SensedEntity::prescribed_motion, kind, id, on);
 }
 
+// Their history lines: spcforc's reaction per constrained node, bndout's force and work per
+// prescribed node (one line per node, as LS-DYNA prints them).
+void held_records(const State& s, const NodalConstraints& c, HistoryRecords& out) {
+  for (std::size_t k = 0; k < c.nodes.size(); ++k)
+    out.reactions.push_back(
+        {s.nodes.ids[static_cast<std::size_t>(c.nodes[k])], c.reaction.col(static_cast<Index>(k))});
+}
+void held_records(const State& s, const std::vector<NodalMotion>& v, HistoryRecords& out) {
+  for (const NodalMotion& m : v)
+    for (std::size_t k = 0; k < m.nodes.size(); ++k)
+      out.boundaries.push_back(
+          {BoundaryRecord::Kind::node, s.nodes.ids[static_cast<std::size_t>(m.nodes[k])],
+           m.node_force.col(static_cast<Index>(k)), Vec3::Zero(), m.node_work[k]});
+}
+
 // A condition applied by one of loads.hpp's functions in the constraint phase; its state is
 // the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
 template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr>
@@ -54,6 +69,9 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
   }
   bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
     return switch_held(s.*Held, kind, id, on);
+  }
+  void add_history_records(const State& s, HistoryRecords& out) const override {
+    held_records(s, s.*Held, out);
   }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {

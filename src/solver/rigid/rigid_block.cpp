@@ -44,6 +44,18 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
     }
   }
 
+  // bndout: the constraint force, moment and work of each body whose motion is prescribed or
+  // fixed.
+  void add_history_records(const State& s, HistoryRecords& out) const override {
+    for (const RigidBody& b : s.rigid_bodies) {
+      if (b.motions.empty() && b.fixed_translation == std::array<bool, 3>{} &&
+          b.fixed_rotation == std::array<bool, 3>{})
+        continue;
+      out.boundaries.push_back({BoundaryRecord::Kind::rigid_part, b.part_id, b.constraint_force,
+                                b.constraint_moment, b.constraint_work});
+    }
+  }
+
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                          std::vector<PartSummary>& parts) const override {
     for (std::size_t p = 0; p < s.parts.size(); ++p) {

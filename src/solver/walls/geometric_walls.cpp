@@ -78,9 +78,9 @@ class GeometricWallsBlock final : public walls::WallsBlock<GeometricWall, Geomet
     for (GeometricWall& w : walls_)
       apply_wall(s, w, t);
   }
-  void add_wall_records(const State& /*s*/, std::vector<WallRecord>& out) const override {
+  void add_history_records(const State& /*s*/, HistoryRecords& out) const override {
     for (const GeometricWall& w : walls_)
-      out.push_back({w.id, w.normal_force, w.force, w.energy});
+      out.walls.push_back({w.id, w.normal_force, w.force, w.energy});
   }
   [[nodiscard]] std::string dump_name() const override { return "geometric rigid walls"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kWallDumpedSizes); }

@@ -86,9 +86,9 @@ class PlanarWallsBlock final : public walls::WallsBlock<PlanarWall, PlanarWallsB
   using WallsBlock::WallsBlock;
   void constrain(State& s, const StepTimes& t) override { apply_walls(s, walls_, t); }
   // The force on the wall along its normal is minus the structure's push: positive in contact.
-  void add_wall_records(const State& /*s*/, std::vector<WallRecord>& out) const override {
+  void add_history_records(const State& /*s*/, HistoryRecords& out) const override {
     for (const PlanarWall& w : walls_)
-      out.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
+      out.walls.push_back({w.id, -w.force.dot(w.normal), w.force, w.energy});
   }
   [[nodiscard]] std::string dump_name() const override { return "rigid walls"; }
   [[nodiscard]] std::string dump_layout() const override {

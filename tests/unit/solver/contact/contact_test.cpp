@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "solver/energy.hpp"
+#include "solver/history_records.hpp"
 #include "solver_support.hpp"
 
 namespace mcdyna::test {
@@ -406,6 +407,12 @@ TEST_CASE("contact: a force transducer reports the other contacts' forces and ap
   CHECK(c[0].id == 1);  // numbered in deck order, as rcforc lists them
   CHECK(c[3].id == 4);
   CHECK(c[0].passes.empty());
+  // rcforc's lines come in the deck's order though the transducers' blocks run after the
+  // contacts' (history_records.hpp).
+  std::vector<model::Id> listed;
+  for (const solver::ContactRecord& r : solver::history_records(*sim.state).contacts)
+    listed.push_back(r.id);
+  CHECK(listed == std::vector<model::Id>{1, 2, 3, 4});
   double peak_low = 0.0, peak_high = 0.0;
   long cycles_checked = 0;
   solver::RunHooks hooks;

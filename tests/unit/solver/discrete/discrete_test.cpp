@@ -185,3 +185,20 @@ TEST_CASE("discrete elements: a run continued from a dump ends with the same byt
   const auto [through, resumed] = test::run_through_and_resumed(dir, dir.write("osc.k", deck));
   CHECK(test::read_text(through / "glstat") == test::read_text(resumed / "glstat"));
 }
+
+TEST_CASE("glstat's number of elements counts the discrete elements as elements") {
+  // The rigid cube's solid is not integrated (it only gives the body its mass); the spring and
+  // the damper are: 2, as LS-DYNA counts the deformable elements it updates.
+  test::TempDir dir;
+  const std::string deck =
+      oscillator_deck(kSpring +
+                          "*PART\ndamper\n3,3,3\n*SECTION_DISCRETE\n3\n*MAT_DAMPER_VISCOUS\n3,2\n"
+                          "*ELEMENT_DISCRETE\n2,3,1,11\n*DATABASE_GLSTAT\n0.01\n",
+                      0.02);
+  const test::Run r = test::run_mcdyna("run " + dir.write("osc.k", deck).string() + " --out " +
+                                       (dir.path() / "out").string());
+  REQUIRE(r.exit_code == 0);
+  const std::string glstat = test::read_text(dir.path() / "out" / "glstat");
+  CHECK_MESSAGE(
+      glstat.find(" number of elements.............             2\n") != std::string::npos, glstat);
+}
