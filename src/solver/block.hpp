@@ -160,12 +160,8 @@ void add_hexahedra_blocks(State& s, Blocks& blocks);         // solids/hexahedra
 void add_shell_blocks(State& s, Blocks& blocks);             // shells/shell_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
-void add_joint_blocks(State& s, Blocks& blocks);             // rigid/joints.cpp
 void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp
 void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_blocks.cpp
-void add_body_load_blocks(State& s, Blocks& blocks);         // loads/condition_blocks.cpp
-void add_applied_load_blocks(State& s, Blocks& blocks);      // loads/applied_loads.cpp
-void add_global_damping_blocks(State& s, Blocks& blocks);    // loads/global_damping.cpp
 void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
 void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
 

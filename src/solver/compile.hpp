@@ -67,16 +67,18 @@ void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia);
 void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 /// *CONSTRAINED_JOINT_* and *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: after the rigid bodies (a
 /// joint node's mass may be a body's).
-void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_joints(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
 /// The rigid body of part `id` (merged parts share their lead's) or of the nodal rigid body
 /// `id`; -1 for neither.
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);
 void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_body_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_body_loads(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
 /// *LOAD_NODE, *LOAD_RIGID_BODY, *LOAD_SEGMENT (after the rigid bodies and shells).
-void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_applied_loads(const model::ModelDatabase& m, State& s, Blocks& own,
+                           core::Diagnostics& d);
+void compile_global_damping(const model::ModelDatabase& m, State& s, Blocks& own,
+                            core::Diagnostics& d);
 void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
 void compile_planar_walls(const model::ModelDatabase& m, State& s, Blocks& own,
                           core::Diagnostics& d);  // walls/planar_walls.cpp

@@ -22,7 +22,7 @@ const std::vector<Formulation>& formulations() {
       {"beams", nullptr, nullptr, {"shells"}, false, compile_beams},
       {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
       {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},
-      {"joints", compile_joints, add_joint_blocks, {"rigid bodies"}},
+      {"joints", nullptr, nullptr, {"rigid bodies"}, false, compile_joints},
       {"rigid bodies",
        compile_rigid_bodies,
        add_rigid_body_blocks,
@@ -36,9 +36,9 @@ const std::vector<Formulation>& formulations() {
       // Walls track the nodes that have mass, particles included.
       {"rigid walls", nullptr, nullptr, {"spg"}, false, compile_planar_walls},
       {"geometric walls", nullptr, nullptr, {"spg"}, false, compile_geometric_walls},
-      {"body loads", compile_body_loads, add_body_load_blocks, {}},
-      {"applied loads", compile_applied_loads, add_applied_load_blocks, {"rigid bodies", "shells"}},
-      {"global damping", compile_global_damping, add_global_damping_blocks, {}},
+      {"body loads", nullptr, nullptr, {}, false, compile_body_loads},
+      {"applied loads", nullptr, nullptr, {"rigid bodies", "shells"}, false, compile_applied_loads},
+      {"global damping", nullptr, nullptr, {}, false, compile_global_damping},
       // Particles are slave nodes.
       {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies"}},
       {"ties", nullptr, add_tie_blocks, {"contact"}},

@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "model/conditions.hpp"  // JointKind
 #include "model/entities.hpp"
 #include "solver/contact/interface.hpp"
 #include "solver/curve.hpp"
@@ -227,39 +226,6 @@ struct RigidBody {
   [[nodiscard]] Mat3 inertia() const { return rotation * inertia0 * rotation.transpose(); }
 };
 
-/// A joint (*CONSTRAINED_JOINT_*): a penalty spring on each node pair (body A's node first)
-/// along the directions the joint holds (all three, or those normal to the axis N1 -> N3).
-struct JointState {
-  model::Id id = 0;
-  std::string heading;
-  model::JointKind kind = model::JointKind::spherical;
-  std::array<Index, 6> nodes{};
-  int pairs = 1;
-  double relative_stiffness = 1.0;  ///< RPS
-  /// The smallest reduced mass of a pair, each node's mass as the force on it sees it (for a
-  /// rigid body's node, the least over the directions of the mass its point answers with).
-  double reduced_mass = 0.0;
-  double stiffness = 0.0;     ///< RPS m* / (4 dt0^2) with the first cycle's step; 0 until then
-  double initial_step = 0.0;  ///< dt0
-  double energy = 0.0;        ///< stored in the springs, 1/2 k |d|^2
-  Vec3 force = Vec3::Zero();  ///< on body B, summed over the pairs, this cycle
-  bool switched_off = false;  ///< by *SENSOR_CONTROL (sensors/): no force
-};
-
-/// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between rigid bodies A and B about
-/// the axes of A's local system, the angles those of B's system turned from A's.
-struct JointStiffnessState {
-  model::Id id = 0;
-  Index body_a = -1, body_b = -1;
-  Mat3 frame_a = Mat3::Identity(), frame_b = Mat3::Identity();  ///< local axes at t = 0
-  std::array<Index, 3> curves{-1, -1, -1};  ///< moment against angle, about x y z
-  Vec3 elastic = Vec3::Zero(), friction = Vec3::Zero();
-  Vec3 friction_moment = Vec3::Zero();  ///< the elastic-plastic part, carried
-  Vec3 angles = Vec3::Zero();           ///< last cycle's
-  Vec3 moment = Vec3::Zero();           ///< last cycle's, on B about A's axes
-  double work = 0.0;                    ///< done on the springs (stored and dissipated)
-};
-
 /// A slave node of a tied contact (*CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE) held
 /// on its master segment at the point `weights` name (contact/ties.cpp).
 struct Tie {
@@ -313,40 +279,6 @@ struct NodalMotion {
   }
 };
 
-/// *LOAD_BODY_X / _Y / _Z: base acceleration scale x curve(t) along `axis`; force -m a.
-struct BodyLoadState {
-  int axis = 2;
-  Index curve = -1;
-  double scale = 1.0;
-};
-
-/// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: SF x curve(t) along `axis`, a force or a moment,
-/// on each node or on a rigid body at its centre (body >= 0).
-struct PointLoadState {
-  std::vector<Index> nodes;
-  Index body = -1;
-  int axis = 0;
-  bool moment = false;
-  Index curve = -1;
-  double scale = 1.0;
-  double last = 0.0;  ///< the load last cycle, for its work
-};
-
-/// *LOAD_SEGMENT / _SET: pressure SF x curve(t - AT) on segments (a triangle repeats N3).
-struct PressureLoadState {
-  std::vector<std::array<Index, 4>> segments;
-  Index curve = -1;
-  double scale = 1.0, arrival = 0.0;
-  Eigen::Matrix3Xd last;  ///< the force on each segment's corners last cycle, 4 per segment
-};
-
-/// *DAMPING_GLOBAL, compiled (curve < 0: the constant D).
-struct GlobalDampingState {
-  Index curve = -1;
-  double value = 0.0;
-  std::array<double, 6> scale{};
-};
-
 /// Elements drawn but not integrated: those of rigid parts (solids and shells).
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
@@ -389,20 +321,12 @@ struct State {
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
   std::vector<WeldState> welds;
-  std::vector<JointState> joints;
-  std::vector<JointStiffnessState> joint_stiffnesses;
   DisplayCells rigid_cells;
   std::vector<LoadCurve> curves;
   NodalConstraints constraints;
   std::vector<NodalMotion> nodal_motions;
   std::vector<contact::Interface> contacts;
   std::vector<Tie> ties;  ///< tied contacts' slave nodes, by slave node (deck data)
-  std::vector<BodyLoadState> body_loads;
-  std::vector<PointLoadState> point_loads;
-  std::vector<PressureLoadState> pressure_loads;
-  double load_work = 0.0;  ///< work of the point and pressure loads so far (glstat external work)
-  std::vector<GlobalDampingState> damping;  ///< none or one
-  double damping_work = 0.0;                ///< taken by *DAMPING_GLOBAL so far
   TimeControl time_control;
 
   double time = 0.0;

@@ -17,9 +17,10 @@ double value(const State& s, Index curve, double scale, double shift) {
   return scale * s.curves[static_cast<std::size_t>(curve)](s.time - shift);
 }
 
-void apply_point_loads(State& s, NodalForces& f) {
+// Adds to `work` what the loads did over the step just taken.
+void apply_point_loads(State& s, std::vector<PointLoadState>& loads, NodalForces& f, double& work) {
   const Nodes& nd = s.nodes;
-  for (PointLoadState& l : s.point_loads) {
+  for (PointLoadState& l : loads) {
     const double now = value(s, l.curve, l.scale, 0.0);
     // Work of last cycle's load and this one over the step just taken, at v^{n+1/2}.
     double speed = 0.0;
@@ -29,7 +30,7 @@ void apply_point_loads(State& s, NodalForces& f) {
     }
     for (const Index n : l.nodes)
       speed += l.moment ? nd.angular_velocity(l.axis, n) : nd.velocity(l.axis, n);
-    s.load_work += 0.5 * s.step * (l.last + now) * speed;
+    work += 0.5 * s.step * (l.last + now) * speed;
     l.last = now;
     if (l.body >= 0) {
       RigidBody& b = s.rigid_bodies[static_cast<std::size_t>(l.body)];
@@ -40,9 +41,10 @@ void apply_point_loads(State& s, NodalForces& f) {
   }
 }
 
-void apply_pressure_loads(State& s, Eigen::Matrix3Xd& force) {
+void apply_pressure_loads(const State& s, std::vector<PressureLoadState>& loads,
+                          Eigen::Matrix3Xd& force, double& work) {
   const Nodes& nd = s.nodes;
-  for (PressureLoadState& l : s.pressure_loads) {
+  for (PressureLoadState& l : loads) {
     const double p = s.time >= l.arrival ? value(s, l.curve, l.scale, l.arrival) : 0.0;
     for (std::size_t k = 0; k < l.segments.size(); ++k) {
       const std::array<Index, 4>& seg = l.segments[k];
@@ -56,7 +58,7 @@ void apply_pressure_loads(State& s, Eigen::Matrix3Xd& force) {
       for (int c = 0; c < corners; ++c) {
         const Index n = seg[static_cast<std::size_t>(c)];
         const auto col = static_cast<Index>(4 * k + static_cast<std::size_t>(c));
-        s.load_work += 0.5 * s.step * (Vec3(l.last.col(col)) + f).dot(nd.velocity.col(n));
+        work += 0.5 * s.step * (Vec3(l.last.col(col)) + f).dot(nd.velocity.col(n));
         l.last.col(col) = f;
         force.col(n) += f;
       }
@@ -64,39 +66,47 @@ void apply_pressure_loads(State& s, Eigen::Matrix3Xd& force) {
   }
 }
 
+// Owns its loads and their work so far (glstat's external work).
 class AppliedLoadsBlock final : public DumpedBlock<AppliedLoadsBlock> {
  public:
+  AppliedLoadsBlock(std::vector<PointLoadState> points, std::vector<PressureLoadState> pressures)
+      : points_(std::move(points)), pressures_(std::move(pressures)) {}
   [[nodiscard]] std::string dump_name() const override { return "applied loads"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kLoadDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.point_loads, s.pressure_loads, s.load_work);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(points_, pressures_, work_);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    for (const PointLoadState& l : s.point_loads)
+  void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& nodes) const override {
+    for (const PointLoadState& l : points_)
       for (const Index n : l.nodes)
         nodes[static_cast<std::size_t>(n)] = 1;
-    for (const PressureLoadState& l : s.pressure_loads)
+    for (const PressureLoadState& l : pressures_)
       for (const auto& seg : l.segments)
         for (const Index n : seg)
           nodes[static_cast<std::size_t>(n)] = 1;
   }
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    e.external_work += s.load_work;
+    e.external_work += work_;
   }
   void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
-    apply_point_loads(s, f);
-    apply_pressure_loads(s, f.force);
+    apply_point_loads(s, points_, f, work_);
+    apply_pressure_loads(s, pressures_, f.force, work_);
   }
+
+ private:
+  std::vector<PointLoadState> points_;
+  std::vector<PressureLoadState> pressures_;
+  double work_ = 0.0;  ///< of the point and pressure loads so far
 };
 
 }  // namespace
 
-void add_applied_load_blocks(State& s, Blocks& blocks) {
-  if (!s.point_loads.empty() || !s.pressure_loads.empty())
-    blocks.push_back(std::make_unique<AppliedLoadsBlock>());
+std::unique_ptr<Block> make_applied_loads_block(std::vector<PointLoadState> points,
+                                                std::vector<PressureLoadState> pressures) {
+  return std::make_unique<AppliedLoadsBlock>(std::move(points), std::move(pressures));
 }
 
 }  // namespace mcdyna::solver

@@ -1,30 +1,39 @@
-// *LOAD_BODY_X/Y/Z -> the body loads of loads/condition_blocks.cpp; *LOAD_NODE_POINT / _SET,
-// *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure loads loads/applied_loads.cpp
-// applies; *DAMPING_GLOBAL -> loads/global_damping.cpp.
+// *LOAD_BODY_X/Y/Z -> the body loads' block (loads/condition_blocks.cpp); *LOAD_NODE_POINT /
+// _SET, *LOAD_RIGID_BODY and *LOAD_SEGMENT / _SET -> the point and pressure loads' block
+// (loads/applied_loads.cpp); *DAMPING_GLOBAL -> its block (loads/global_damping.cpp). Each block
+// owns what it applies (load_state.hpp).
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
+#include "solver/loads/load_state.hpp"
 
 namespace mcdyna::solver::detail {
 
-void compile_body_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& /*d*/) {
+void compile_body_loads(const model::ModelDatabase& m, State& /*s*/, Blocks& own,
+                        core::Diagnostics& /*d*/) {
+  std::vector<BodyLoadState> loads;
   for (const model::BodyLoad& b : m.body_loads) {
     const Index curve = curve_index(m, b.curve);
     if (curve < 0) continue;  // reported by the reference checks
-    s.body_loads.push_back(BodyLoadState{b.axis, curve, b.scale});
+    loads.push_back(BodyLoadState{b.axis, curve, b.scale});
   }
+  if (!loads.empty()) own.push_back(make_body_loads_block(std::move(loads)));
 }
 
-void compile_global_damping(const model::ModelDatabase& m, State& s, core::Diagnostics& /*d*/) {
-  if (m.controls.damping) {
-    const model::GlobalDamping& g = *m.controls.damping;
-    GlobalDampingState ds;
-    ds.curve = g.curve > 0 ? curve_index(m, g.curve) : -1;
-    ds.value = g.value;
-    ds.scale = g.scale;
-    if (g.curve == 0 || ds.curve >= 0) s.damping.push_back(ds);
-  }
+void compile_global_damping(const model::ModelDatabase& m, State& /*s*/, Blocks& own,
+                            core::Diagnostics& /*d*/) {
+  if (!m.controls.damping) return;
+  const model::GlobalDamping& g = *m.controls.damping;
+  GlobalDampingState ds;
+  ds.curve = g.curve > 0 ? curve_index(m, g.curve) : -1;
+  ds.value = g.value;
+  ds.scale = g.scale;
+  if (g.curve == 0 || ds.curve >= 0) own.push_back(make_global_damping_block(ds));
 }
 
-void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_applied_loads(const model::ModelDatabase& m, State& s, Blocks& own,
+                           core::Diagnostics& d) {
+  std::vector<PointLoadState> points;
+  std::vector<PressureLoadState> pressures;
   for (const model::PointLoad& p : m.point_loads) {
     PointLoadState l;
     l.curve = curve_index(m, p.curve);
@@ -56,7 +65,7 @@ void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagno
         }
       }
     }
-    s.point_loads.push_back(std::move(l));
+    points.push_back(std::move(l));
   }
   for (const model::SegmentLoad& g : m.segment_loads) {
     PressureLoadState l;
@@ -79,8 +88,10 @@ void compile_applied_loads(const model::ModelDatabase& m, State& s, core::Diagno
       l.segments.push_back(conn);
     }
     l.last.setZero(3, 4 * static_cast<Index>(l.segments.size()));
-    s.pressure_loads.push_back(std::move(l));
+    pressures.push_back(std::move(l));
   }
+  if (!points.empty() || !pressures.empty())
+    own.push_back(make_applied_loads_block(std::move(points), std::move(pressures)));
 }
 
 }  // namespace mcdyna::solver::detail

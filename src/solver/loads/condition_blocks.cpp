@@ -86,12 +86,17 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddT
   std::string name_;
 };
 
+// Owns its loads (deck data: nothing to dump).
 class BodyLoadsBlock final : public Block {
  public:
+  explicit BodyLoadsBlock(std::vector<BodyLoadState> loads) : loads_(std::move(loads)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
   void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
-    apply_body_loads(s, f.force);
+    apply_body_loads(s, loads_, f.force);
   }
+
+ private:
+  std::vector<BodyLoadState> loads_;
 };
 
 }  // namespace
@@ -109,8 +114,8 @@ void add_nodal_motion_blocks(State& s, Blocks& blocks) {
             "prescribed nodal motions"));
 }
 
-void add_body_load_blocks(State& s, Blocks& blocks) {
-  if (!s.body_loads.empty()) blocks.push_back(std::make_unique<BodyLoadsBlock>());
+std::unique_ptr<Block> make_body_loads_block(std::vector<BodyLoadState> loads) {
+  return std::make_unique<BodyLoadsBlock>(std::move(loads));
 }
 
 }  // namespace mcdyna::solver

@@ -6,14 +6,16 @@
 #include "core/exact_sum.hpp"
 #include "solver/block.hpp"
 #include "solver/dump.hpp"
+#include "solver/loads/load_state.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
-void apply_global_damping(State& s, const GlobalDampingState& g, NodalForces& forces) {
+// Returns the work the damping took out over the step just taken.
+double apply_global_damping(State& s, const GlobalDampingState& g, NodalForces& forces) {
   const double d = g.curve >= 0 ? s.curves[static_cast<std::size_t>(g.curve)](s.time) : g.value;
-  if (d == 0.0) return;
+  if (d == 0.0) return 0.0;
   const Nodes& nd = s.nodes;
   const bool rotations = nd.rotates();
   core::ExactSum taken;
@@ -47,34 +49,39 @@ void apply_global_damping(State& s, const GlobalDampingState& g, NodalForces& fo
       if (s.ownership.comm.rank() == 0) taken.add(-(f * b.velocity[a] + m * b.omega[a]) * s.step);
     }
   }
-  s.damping_work += s.ownership.comm.sum(std::vector<core::ExactSum>{taken})[0];
+  return s.ownership.comm.sum(std::vector<core::ExactSum>{taken})[0];
 }
 
+// Owns the compiled *DAMPING_GLOBAL and the work it has taken (glstat's damping energy).
 class GlobalDampingBlock final : public DumpedBlock<GlobalDampingBlock> {
  public:
+  explicit GlobalDampingBlock(GlobalDampingState damping) : damping_(damping) {}
   [[nodiscard]] std::string dump_name() const override { return "global damping"; }
   [[nodiscard]] std::string dump_layout() const override {
     return sizes_text(std::array<std::size_t, 0>{});
   }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.damping_work);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(work_);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    e.damping += s.damping_work;
+    e.damping += work_;
   }
   void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
-    for (const GlobalDampingState& g : s.damping)
-      apply_global_damping(s, g, f);
+    work_ += apply_global_damping(s, damping_, f);
   }
+
+ private:
+  GlobalDampingState damping_;
+  double work_ = 0.0;  ///< taken so far
 };
 
 }  // namespace
 
-void add_global_damping_blocks(State& s, Blocks& blocks) {
-  if (!s.damping.empty()) blocks.push_back(std::make_unique<GlobalDampingBlock>());
+std::unique_ptr<Block> make_global_damping_block(GlobalDampingState damping) {
+  return std::make_unique<GlobalDampingBlock>(damping);
 }
 
 }  // namespace mcdyna::solver

@@ -6,10 +6,11 @@
 
 namespace mcdyna::solver {
 
-void apply_body_loads(State& state, Eigen::Matrix3Xd& force) {
-  if (state.body_loads.empty()) return;
+void apply_body_loads(State& state, const std::vector<BodyLoadState>& loads,
+                      Eigen::Matrix3Xd& force) {
+  if (loads.empty()) return;
   Vec3 a = Vec3::Zero();
-  for (const BodyLoadState& b : state.body_loads)
+  for (const BodyLoadState& b : loads)
     a[b.axis] += b.scale * state.curves[static_cast<std::size_t>(b.curve)](state.time);
   const Nodes& nd = state.nodes;
 #pragma omp parallel for schedule(static) if (nd.count() > 2048)

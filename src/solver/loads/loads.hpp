@@ -2,6 +2,7 @@
 /// Velocity-level boundary conditions applied after the free velocity update, in this order:
 /// nodal constraints (SPC, *NODE TC), prescribed nodal motion (then the walls, walls/). Each
 /// records the force it applied (m dv / dt) for spcforc and bndout.
+#include "solver/loads/load_state.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
 #include "solver/state.hpp"
 
@@ -10,7 +11,8 @@ namespace mcdyna::solver {
 /// *LOAD_BODY: adds -m a(t) to every deformable node's force (SPG particles with the mass their
 /// velocity update divides by, so every particle gets the same acceleration) and sets each rigid
 /// body's body_force to -M a(t).
-void apply_body_loads(State& state, Eigen::Matrix3Xd& force);
+void apply_body_loads(State& state, const std::vector<BodyLoadState>& loads,
+                      Eigen::Matrix3Xd& force);
 
 void apply_nodal_constraints(State& state, const StepTimes& t);
 void apply_nodal_motions(State& state, const StepTimes& t);

@@ -2,6 +2,7 @@
 /// The conditions' and loads' restart dumps: the member lists of what changes during a run
 /// (dump.hpp).
 #include "solver/dump.hpp"
+#include "solver/loads/load_state.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

@@ -1,11 +1,13 @@
 // *CONSTRAINED_JOINT_* -> joints: node indices and the reduced mass that sizes their penalty
-// springs, and the generalized stiffness joints' frames and curves (rigid/joints.cpp applies
-// both).
+// springs, and the generalized stiffness joints' frames and curves, into the joints' block
+// (rigid/joints.cpp applies both).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
+#include "solver/rigid/joint_state.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
 
 namespace mcdyna::solver::detail {
@@ -13,7 +15,8 @@ namespace mcdyna::solver::detail {
 namespace {
 
 // *CONSTRAINED_JOINT_SPHERICAL / REVOLUTE / ...: the penalty springs on the node pairs.
-void compile_joint_pairs(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_joint_pairs(const model::ModelDatabase& m, const State& s, core::Diagnostics& d,
+                         std::vector<JointState>& out) {
   for (std::size_t k = 0; k < m.joints.size(); ++k) {
     const model::Joint& j = m.joints[k];
     JointState js;
@@ -73,7 +76,7 @@ void compile_joint_pairs(const model::ModelDatabase& m, State& s, core::Diagnost
       d.note(j.loc, "joint {}: DAMP = {:g} has no effect (mcdyna's joint springs are undamped)",
              js.id, j.damping);
     }
-    s.joints.push_back(js);
+    out.push_back(js);
   }
 }
 
@@ -96,7 +99,8 @@ Mat3 coordinate_axes(const model::ModelDatabase& m, const State& s, model::Id ci
 }
 
 // *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: rotational springs between two rigid bodies.
-void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_joint_stiffnesses(const model::ModelDatabase& m, const State& s, core::Diagnostics& d,
+                               std::vector<JointStiffnessState>& out) {
   for (const model::JointStiffness& j : m.joint_stiffnesses) {
     JointStiffnessState js;
     js.id = j.id;
@@ -121,15 +125,19 @@ void compile_joint_stiffnesses(const model::ModelDatabase& m, State& s, core::Di
       js.elastic[static_cast<Index>(k)] = j.friction[k] > 0.0 ? j.elastic[k] : 0.0;
       js.friction[static_cast<Index>(k)] = j.friction[k];
     }
-    s.joint_stiffnesses.push_back(js);
+    out.push_back(js);
   }
 }
 
 }  // namespace
 
-void compile_joints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
-  compile_joint_pairs(m, s, d);
-  compile_joint_stiffnesses(m, s, d);
+void compile_joints(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d) {
+  std::vector<JointState> joints;
+  std::vector<JointStiffnessState> stiffnesses;
+  compile_joint_pairs(m, s, d, joints);
+  compile_joint_stiffnesses(m, s, d, stiffnesses);
+  if (!joints.empty() || !stiffnesses.empty())
+    own.push_back(make_joints_block(std::move(joints), std::move(stiffnesses)));
 }
 
 }  // namespace mcdyna::solver::detail

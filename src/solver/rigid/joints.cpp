@@ -17,6 +17,7 @@
 
 #include "model/conditions.hpp"
 #include "solver/block.hpp"
+#include "solver/rigid/joint_state.hpp"
 #include "solver/rigid/rigid_bodies.hpp"
 #include "solver/rigid/rigid_dump.hpp"
 #include "solver/sensors/switchable.hpp"
@@ -139,49 +140,64 @@ void joint_stiffness(State& s, JointStiffnessState& j) {
   a.load_moment -= global;
 }
 
+// The block owns its joints (joint_state.hpp).
 class JointsBlock final : public DumpedBlock<JointsBlock> {
  public:
+  JointsBlock(std::vector<JointState> joints, std::vector<JointStiffnessState> stiffnesses)
+      : joints_(std::move(joints)), stiffnesses_(std::move(stiffnesses)) {}
   [[nodiscard]] std::string dump_name() const override { return "joints"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kJointsDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.joints, s.joint_stiffnesses);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(joints_, stiffnesses_);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    for (const JointState& j : s.joints)
+  void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& nodes) const override {
+    for (const JointState& j : joints_)
       for (int k = 0; k < 2 * j.pairs; ++k)
         nodes[static_cast<std::size_t>(j.nodes[static_cast<std::size_t>(k)])] = 1;
   }
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    for (const JointState& j : s.joints)
+    for (const JointState& j : joints_)
       e.internal += j.energy;
-    for (const JointStiffnessState& j : s.joint_stiffnesses)
+    for (const JointStiffnessState& j : stiffnesses_)
       e.internal += j.work;
   }
-  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
                     Vec3& force) const override {
     return sensors::sensed_force_in(
-        s.joints, model::SensedEntity::joint, kind, id, [](const JointState& j) { return j.force; },
+        joints_, model::SensedEntity::joint, kind, id, [](const JointState& j) { return j.force; },
         force);
   }
-  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
-    return sensors::switch_in(s.joints, model::SensedEntity::joint, kind, id, on);
+  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
+    return sensors::switch_in(joints_, model::SensedEntity::joint, kind, id, on);
   }
   void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
-    for (JointState& j : s.joints)
+    for (JointState& j : joints_)
       joint_forces(s, j, f.force);
-    for (JointStiffnessState& j : s.joint_stiffnesses)
+    for (JointStiffnessState& j : stiffnesses_)
       joint_stiffness(s, j);
   }
+  [[nodiscard]] const std::vector<JointStiffnessState>& stiffnesses() const { return stiffnesses_; }
+
+ private:
+  std::vector<JointState> joints_;
+  std::vector<JointStiffnessState> stiffnesses_;
 };
 
 }  // namespace
 
-void add_joint_blocks(State& s, Blocks& blocks) {
-  if (!s.joints.empty() || !s.joint_stiffnesses.empty())
-    blocks.push_back(std::make_unique<JointsBlock>());
+const std::vector<JointStiffnessState>& joint_stiffnesses_of(const State& s) {
+  static const std::vector<JointStiffnessState> kNone;
+  for (const auto& b : s.blocks)
+    if (const auto* j = dynamic_cast<const JointsBlock*>(b.get())) return j->stiffnesses();
+  return kNone;
+}
+
+std::unique_ptr<Block> make_joints_block(std::vector<JointState> joints,
+                                         std::vector<JointStiffnessState> stiffnesses) {
+  return std::make_unique<JointsBlock>(std::move(joints), std::move(stiffnesses));
 }
 
 }  // namespace mcdyna::solver

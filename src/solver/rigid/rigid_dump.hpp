@@ -2,6 +2,7 @@
 /// The rigid bodies', welds' and joints' restart dumps: the member lists of what changes during
 /// a run (dump.hpp).
 #include "solver/dump.hpp"
+#include "solver/rigid/joint_state.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

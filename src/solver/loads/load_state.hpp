@@ -1,0 +1,54 @@
+#pragma once
+/// The loads' data (*LOAD_BODY, *LOAD_NODE, *LOAD_RIGID_BODY, *LOAD_SEGMENT, *DAMPING_GLOBAL),
+/// each kind owned by its block (condition_blocks.cpp, applied_loads.cpp, global_damping.cpp),
+/// which compile_loads.cpp makes.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// *LOAD_BODY_X / _Y / _Z: base acceleration scale x curve(t) along `axis`; force -m a.
+struct BodyLoadState {
+  int axis = 2;
+  Index curve = -1;
+  double scale = 1.0;
+};
+
+/// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: SF x curve(t) along `axis`, a force or a moment,
+/// on each node or on a rigid body at its centre (body >= 0).
+struct PointLoadState {
+  std::vector<Index> nodes;
+  Index body = -1;
+  int axis = 0;
+  bool moment = false;
+  Index curve = -1;
+  double scale = 1.0;
+  double last = 0.0;  ///< the load last cycle, for its work
+};
+
+/// *LOAD_SEGMENT / _SET: pressure SF x curve(t - AT) on segments (a triangle repeats N3).
+struct PressureLoadState {
+  std::vector<std::array<Index, 4>> segments;
+  Index curve = -1;
+  double scale = 1.0, arrival = 0.0;
+  Eigen::Matrix3Xd last;  ///< the force on each segment's corners last cycle, 4 per segment
+};
+
+/// *DAMPING_GLOBAL, compiled (curve < 0: the constant D).
+struct GlobalDampingState {
+  Index curve = -1;
+  double value = 0.0;
+  std::array<double, 6> scale{};
+};
+
+class Block;
+
+std::unique_ptr<Block> make_body_loads_block(std::vector<BodyLoadState> loads);
+std::unique_ptr<Block> make_applied_loads_block(std::vector<PointLoadState> points,
+                                                std::vector<PressureLoadState> pressures);
+std::unique_ptr<Block> make_global_damping_block(GlobalDampingState damping);
+
+}  // namespace mcdyna::solver
