@@ -141,212 +141,266 @@ void check_ties(State& s, core::Diagnostics& d) {
   }
 }
 
+// What every interface's passes read of the model's surfaces: the parts' outer faces, each
+// node's penalty stiffness and the half thickness of the thickest shell on it (for
+// single-surface contacts capped as capped_thickness says), the faces' owners (segment sets).
+struct ContactSurfaces {
+  std::vector<PartSurface> parts;
+  std::vector<double> node_k;
+  std::vector<double> shell_half, shell_half_single;
+  FaceOwners face_owner;
+  bool cap_single = true;  ///< SSTHK 0
+  double slsfac = 0.1;
+};
+
+// Single-surface contacts touch a shell at min(t, 0.4 x its shortest edge) unless SSTHK = 1
+// (LS-DYNA's default: a fold's crest then never touches the segments next to it).
+double capped_thickness(const State& s, const std::array<Index, 4>& seg, double t) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double edge =
+        (s.nodes.position.col(seg[(k + 1) % 4]) - s.nodes.position.col(seg[k])).norm();
+    if (edge > 0.0) shortest = std::min(shortest, edge);
+  }
+  return std::min(t, 0.4 * shortest);
+}
+
+ContactSurfaces contact_surfaces(const model::ModelDatabase& m, const State& s,
+                                 const model::ContactControl& control) {
+  ContactSurfaces cs;
+  cs.parts = part_surfaces(m, s);
+  cs.node_k = node_stiffness(s, cs.parts);
+  cs.cap_single = control.single_surface_thickness == 0;
+  // Half the thickest shell (rigid or deformable) on each node, and the same capped for
+  // single-surface contacts.
+  const auto node_count = static_cast<std::size_t>(s.nodes.count());
+  cs.shell_half.assign(node_count, 0.0);
+  cs.shell_half_single.assign(node_count, 0.0);
+  for (const PartSurface& ps : cs.parts)
+    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
+      const double t = ps.shell_thickness[j];
+      const double t_single = cs.cap_single ? capped_thickness(s, ps.surface.segments[j], t) : t;
+      for (const Index n : ps.surface.segments[j]) {
+        const auto nn = static_cast<std::size_t>(n);
+        cs.shell_half[nn] = std::max(cs.shell_half[nn], 0.5 * t);
+        cs.shell_half_single[nn] = std::max(cs.shell_half_single[nn], 0.5 * t_single);
+      }
+    }
+  for (std::size_t p = 0; p < cs.parts.size(); ++p)
+    for (std::size_t j = 0; j < cs.parts[p].surface.segments.size(); ++j)
+      cs.face_owner.emplace(sorted(cs.parts[p].surface.segments[j]), std::make_pair(p, j));
+  cs.slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
+  return cs;
+}
+
+// The contact's kind as its passes need it: single surface (the nodes of side A against its
+// own segments; SURFA 0 is every part), automatic (shells touched on both faces), both ways.
+struct ContactKind {
+  bool single = false, automatic = false, two_way = false;
+};
+
+ContactKind contact_kind(const model::Contact& c) {
+  ContactKind k;
+  k.single = c.kind == model::ContactKind::automatic_single_surface;
+  k.automatic = k.single || c.kind == model::ContactKind::automatic_nodes_to_surface ||
+                c.kind == model::ContactKind::automatic_surface_to_surface;
+  k.two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
+              c.kind == model::ContactKind::surface_to_surface || (c.soft == 2 && !k.single);
+  return k;
+}
+
+// IGNORE: the contact's own, else *CONTROL_CONTACT's.
+int ignore_option(const model::Contact& c, const model::ContactControl& control) {
+  return c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
+}
+
+// The interface's settings from its keyword and *CONTROL_CONTACT (no passes yet).
+Interface interface_settings(const model::Contact& c, const model::ContactControl& control,
+                             model::Id number, const ContactKind& kind, double slsfac,
+                             core::Diagnostics& d) {
+  Interface in;
+  in.id = number;
+  in.heading = c.heading;
+  in.static_friction = c.static_friction * c.friction_scale;
+  in.dynamic_friction = c.dynamic_friction * c.friction_scale;
+  in.decay = c.decay;
+  in.viscous_friction = c.viscous_friction * c.viscous_friction_scale;
+  in.damping = c.viscous_damping / 100.0;
+  in.birth = c.birth;
+  in.death = c.death > 0.0 ? c.death : 1.0e20;
+  in.soft_constraint = c.soft == 1;
+  in.segment_based = c.soft == 2;
+  in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
+  in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
+  // SOFT 2 keeps an initial penetration as the baseline contact pushes beyond (LS-DYNA's
+  // segment-based contact does not move nodes out).
+  in.initial_penetration = ignore_option(c, control) == 0 && !in.segment_based
+                               ? contact::InitialPenetration::move
+                               : contact::InitialPenetration::keep_offset;
+  switch (control.penalty_option) {
+    case 2:
+      in.penalty_scale = contact::PenaltyScale::segment;
+      break;
+    case 3:
+      in.penalty_scale = contact::PenaltyScale::node;
+      break;
+    case 1:
+      in.penalty_scale = contact::PenaltyScale::smaller;
+      break;
+    default:
+      d.warning(control.loc,
+                "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
+                "segment's stiffness); 2 and 3 are also available",
+                control.penalty_option);
+      in.penalty_scale = contact::PenaltyScale::smaller;
+  }
+  // SOFT 4 and 6 are refused by the reader (forming contacts are not there); other values
+  // above 2 are not LS-DYNA's and run as 1.
+  if (c.soft > 2) {
+    in.soft_constraint = true;
+    d.warning(c.loc, "contact {}: SOFT = {} runs as SOFT = 1 (the soft-constraint stiffness)",
+              number, c.soft);
+  }
+  // SOFT 2 (segment-based): its stiffness and its baseline rule for initial penetrations,
+  // with the penetrations found node on segment both ways (two passes whatever the keyword:
+  // the segments of either side can be the ones penetrated). Edge-to-edge crossings with
+  // no node through a segment are not found.
+  in.segment_based_scale = {0.5 * slsfac * (kind.single ? c.penalty_scale_a : c.penalty_scale_b),
+                            0.5 * slsfac * c.penalty_scale_a};
+  if (in.segment_based && c.depth >= 3) {
+    d.note(c.loc,
+           "contact {}: SOFT 2 DEPTH = {}: edge-to-edge checks are not done (penetrations are "
+           "found node on segment, both ways)",
+           number, static_cast<int>(c.depth));
+  }
+  return in;
+}
+
+// One direction of a contact: the nodes of one side on the segments of the other (`nodes`
+// with their scale factor and SST, 0: the shells'; `segments` with theirs).
+struct PassSide {
+  const Side& side;
+  double scale = 1.0, thickness = 0.0;
+};
+
+Pass make_pass(const State& s, const ContactSurfaces& cs, const ContactKind& kind,
+               const PassSide& nodes, const PassSide& segments, bool nodes_on_a) {
+  Pass p;
+  p.nodes = kind.two_way ? nodes.side.nodes : nodes.side.slave_nodes;
+  p.nodes_on_side_a = nodes_on_a;
+  p.stiffness.resize(p.nodes.size());
+  p.node_half_thickness.assign(p.nodes.size(), 0.0);
+  for (std::size_t i = 0; i < p.nodes.size(); ++i) {
+    const auto n = static_cast<std::size_t>(p.nodes[i]);
+    p.stiffness[i] = cs.slsfac * nodes.scale * cs.node_k[n];
+    // Automatic contact: a shell node touches at half its shell's thickness (or SST).
+    if (kind.automatic && cs.shell_half[n] > 0.0)
+      p.node_half_thickness[i] = nodes.thickness > 0.0 ? 0.5 * nodes.thickness
+                                 : kind.single         ? cs.shell_half_single[n]
+                                                       : cs.shell_half[n];
+  }
+  p.surface = segments.side.surface;
+  for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
+    p.surface.stiffness[j] *= cs.slsfac * segments.scale;
+    const double shell = segments.side.shell_thickness[j];
+    const double t = segments.thickness > 0.0 ? segments.thickness
+                     : kind.single && cs.cap_single && shell > 0.0
+                         ? capped_thickness(s, p.surface.segments[j], shell)
+                         : shell;
+    // Automatic contact touches shells on both faces at half their thickness.
+    if (segments.side.shell_thickness[j] > 0.0 || segments.thickness > 0.0) {
+      p.surface.two_sided[j] = kind.automatic ? 1 : 0;
+      p.surface.half_thickness[j] = kind.automatic ? 0.5 * t : 0.0;
+    }
+    if (!std::isinf(p.surface.smallest_node_mass[j])) {
+      double lightest = std::numeric_limits<double>::infinity();
+      for (const Index n : p.surface.segments[j])
+        lightest = std::min(lightest, s.nodes.mass[static_cast<std::size_t>(n)]);
+      p.surface.smallest_node_mass[j] = lightest;
+    }
+  }
+  p.friction.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
+  p.side.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
+  return p;
+}
+
+// Search margin: half the largest segment plus the largest contact thickness; nodes tracked for
+// an early re-sort are those of both sides.
+void set_search_margin(Interface& in, const Side& a, const Side& b, bool two_way) {
+  double largest = 0.0, thickest = 0.0, thickest_node = 0.0;
+  for (const Pass& p : in.passes) {
+    for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
+      largest = std::max(largest, std::sqrt(p.surface.area[j]));
+      thickest = std::max(thickest, p.surface.half_thickness[j]);
+    }
+    for (const double h : p.node_half_thickness)
+      thickest_node = std::max(thickest_node, h);
+  }
+  in.capture = 0.5 * largest + thickest + thickest_node;
+  in.tracked = two_way ? a.nodes : a.slave_nodes;
+  in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
+  std::sort(in.tracked.begin(), in.tracked.end());
+  in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());
+}
+
+// A penalty contact (node on segment, one or both ways).
+void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurfaces& cs,
+                             const model::ContactControl& control, const model::Contact& c,
+                             model::Id number, State& s, core::Diagnostics& d) {
+  const ContactKind kind = contact_kind(c);
+  bool ok = true;
+  model::ContactSide side_a = c.a;
+  if (kind.single && side_a.id == 0) side_a.type = 5;
+  const Side a = resolve_side(m, cs.parts, cs.face_owner, d, c, number, side_a, "A (slave)", ok);
+  const Side b =
+      kind.single ? a
+                  : resolve_side(m, cs.parts, cs.face_owner, d, c, number, c.b, "B (master)", ok);
+  if (!ok) return;
+  if (b.surface.segments.empty()) {
+    d.error(c.loc,
+            "contact {}: side B (master) has no segments (an SPG part or a node set cannot be "
+            "the master surface: make it side A)",
+            number);
+    return;
+  }
+  Interface in = interface_settings(c, control, number, kind, cs.slsfac, d);
+  // Single surface: side A's scale factors and thickness on both ends.
+  in.passes.push_back(make_pass(s, cs, kind, PassSide{a, c.penalty_scale_a, c.thickness_a},
+                                PassSide{b, kind.single ? c.penalty_scale_a : c.penalty_scale_b,
+                                         kind.single ? c.thickness_a : c.thickness_b},
+                                true));
+  if (kind.two_way) {
+    if (a.surface.segments.empty()) {
+      d.note(c.loc,
+             "contact {}: side A has no segments ({}): surface-to-surface runs one way, A "
+             "nodes on B segments",
+             number, a.has_particles ? "SPG particles" : "a node set");
+    } else {
+      in.passes.push_back(make_pass(s, cs, kind, PassSide{b, c.penalty_scale_b, c.thickness_b},
+                                    PassSide{a, c.penalty_scale_a, c.thickness_a}, false));
+    }
+  }
+  set_search_margin(in, a, b, kind.two_way);
+  report_initial_penetrations(s, in, c, ignore_option(c, control), d);
+  s.contacts.push_back(std::move(in));
+}
+
 }  // namespace
 
 void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
   if (m.contacts.empty()) return;
-  const std::vector<PartSurface> parts = part_surfaces(m, s);
-  const std::vector<double> node_k = node_stiffness(s, parts);
   const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
-  // Single-surface contacts touch a shell at min(t, 0.4 x its shortest edge) unless SSTHK = 1
-  // (LS-DYNA's default: a fold's crest then never touches the segments next to it).
-  const bool cap_single = control.single_surface_thickness == 0;
-  auto capped = [&](const std::array<Index, 4>& seg, double t) {
-    double shortest = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < 4; ++k) {
-      const double edge =
-          (s.nodes.position.col(seg[(k + 1) % 4]) - s.nodes.position.col(seg[k])).norm();
-      if (edge > 0.0) shortest = std::min(shortest, edge);
-    }
-    return std::min(t, 0.4 * shortest);
-  };
-  // Half the thickest shell (rigid or deformable) on each node, and the same capped for
-  // single-surface contacts.
-  const auto node_count = static_cast<std::size_t>(s.nodes.count());
-  std::vector<double> shell_half(node_count, 0.0), shell_half_single(node_count, 0.0);
-  for (const PartSurface& ps : parts)
-    for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
-      const double t = ps.shell_thickness[j];
-      const double t_single = cap_single ? capped(ps.surface.segments[j], t) : t;
-      for (const Index n : ps.surface.segments[j]) {
-        const auto nn = static_cast<std::size_t>(n);
-        shell_half[nn] = std::max(shell_half[nn], 0.5 * t);
-        shell_half_single[nn] = std::max(shell_half_single[nn], 0.5 * t_single);
-      }
-    }
-  FaceOwners face_owner;  // for segment sets
-  for (std::size_t p = 0; p < parts.size(); ++p)
-    for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
-      face_owner.emplace(sorted(parts[p].surface.segments[j]), std::make_pair(p, j));
-  const double slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
-
+  const ContactSurfaces cs = contact_surfaces(m, s, control);
   for (std::size_t order = 0; order < m.contacts.size(); ++order) {
     const model::Contact& c = m.contacts[order];
     // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.
     const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
-    // Single surface: the nodes of side A against its own segments (one pass; a node never
-    // meets a segment it belongs to). SURFA 0 is every part.
-    const bool single = c.kind == model::ContactKind::automatic_single_surface;
-    const bool automatic = single || c.kind == model::ContactKind::automatic_nodes_to_surface ||
-                           c.kind == model::ContactKind::automatic_surface_to_surface;
-    const bool two_way = c.kind == model::ContactKind::automatic_surface_to_surface ||
-                         c.kind == model::ContactKind::surface_to_surface ||
-                         (c.soft == 2 && !single);
-    if (c.kind == model::ContactKind::force_transducer) {
-      compile_transducer(m, parts, face_owner, d, c, number, s);
-      continue;
-    }
-    if (c.kind == model::ContactKind::tied) {
-      compile_tie(m, parts, face_owner, d, c, number, s);
-      continue;
-    }
-    bool ok = true;
-    model::ContactSide side_a = c.a;
-    if (single && side_a.id == 0) side_a.type = 5;
-    Side a = resolve_side(m, parts, face_owner, d, c, number, side_a, "A (slave)", ok);
-    Side b = single ? a : resolve_side(m, parts, face_owner, d, c, number, c.b, "B (master)", ok);
-    if (!ok) continue;
-    if (b.surface.segments.empty()) {
-      d.error(c.loc,
-              "contact {}: side B (master) has no segments (an SPG part or a node set cannot be "
-              "the master surface: make it side A)",
-              number);
-      continue;
-    }
-
-    Interface in;
-    in.id = number;
-    in.heading = c.heading;
-    in.static_friction = c.static_friction * c.friction_scale;
-    in.dynamic_friction = c.dynamic_friction * c.friction_scale;
-    in.decay = c.decay;
-    in.viscous_friction = c.viscous_friction * c.viscous_friction_scale;
-    in.damping = c.viscous_damping / 100.0;
-    in.birth = c.birth;
-    in.death = c.death > 0.0 ? c.death : 1.0e20;
-    in.soft_constraint = c.soft == 1;
-    in.segment_based = c.soft == 2;
-    in.soft_scale = c.soft_scale > 0.0 ? c.soft_scale : 0.1;
-    in.sort_interval = control.bucket_interval > 0 ? control.bucket_interval : 10;
-    const int ignore =
-        c.ignore_penetration != 0 ? c.ignore_penetration : control.ignore_penetration;
-    // SOFT 2 keeps an initial penetration as the baseline contact pushes beyond (LS-DYNA's
-    // segment-based contact does not move nodes out).
-    in.initial_penetration = ignore == 0 && !in.segment_based
-                                 ? contact::InitialPenetration::move
-                                 : contact::InitialPenetration::keep_offset;
-    switch (control.penalty_option) {
-      case 2:
-        in.penalty_scale = contact::PenaltyScale::segment;
-        break;
-      case 3:
-        in.penalty_scale = contact::PenaltyScale::node;
-        break;
-      case 1:
-        in.penalty_scale = contact::PenaltyScale::smaller;
-        break;
-      default:
-        d.warning(control.loc,
-                  "*CONTROL_CONTACT: PENOPT = {} runs as 1 (the smaller of the node's and the "
-                  "segment's stiffness); 2 and 3 are also available",
-                  control.penalty_option);
-        in.penalty_scale = contact::PenaltyScale::smaller;
-    }
-    // SOFT 4 and 6 are refused by the reader (forming contacts are not there); other values
-    // above 2 are not LS-DYNA's and run as 1.
-    if (c.soft > 2) {
-      in.soft_constraint = true;
-      d.warning(c.loc, "contact {}: SOFT = {} runs as SOFT = 1 (the soft-constraint stiffness)",
-                number, c.soft);
-    }
-    // SOFT 2 (segment-based): its stiffness and its baseline rule for initial penetrations,
-    // with the penetrations found node on segment both ways (two passes whatever the keyword:
-    // the segments of either side can be the ones penetrated). Edge-to-edge crossings with
-    // no node through a segment are not found.
-    in.segment_based_scale = {0.5 * slsfac * (single ? c.penalty_scale_a : c.penalty_scale_b),
-                              0.5 * slsfac * c.penalty_scale_a};
-    if (in.segment_based && c.depth >= 3) {
-      d.note(c.loc,
-             "contact {}: SOFT 2 DEPTH = {}: edge-to-edge checks are not done (penetrations are "
-             "found node on segment, both ways)",
-             number, static_cast<int>(c.depth));
-    }
-    // One direction: the nodes of one side on the segments of the other. `node_thickness` is
-    // the nodes' side's SST (0: the shells').
-    auto make_pass = [&](const Side& nodes, double node_scale, double node_thickness,
-                         const Side& segments, double segment_scale, double thickness,
-                         bool nodes_on_a) {
-      Pass p;
-      p.nodes = two_way ? nodes.nodes : nodes.slave_nodes;
-      p.nodes_on_side_a = nodes_on_a;
-      p.stiffness.resize(p.nodes.size());
-      p.node_half_thickness.assign(p.nodes.size(), 0.0);
-      for (std::size_t i = 0; i < p.nodes.size(); ++i) {
-        const auto n = static_cast<std::size_t>(p.nodes[i]);
-        p.stiffness[i] = slsfac * node_scale * node_k[n];
-        // Automatic contact: a shell node touches at half its shell's thickness (or SST).
-        if (automatic && shell_half[n] > 0.0)
-          p.node_half_thickness[i] = node_thickness > 0.0 ? 0.5 * node_thickness
-                                     : single             ? shell_half_single[n]
-                                                          : shell_half[n];
-      }
-      p.surface = segments.surface;
-      for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
-        p.surface.stiffness[j] *= slsfac * segment_scale;
-        const double shell = segments.shell_thickness[j];
-        const double t = thickness > 0.0 ? thickness
-                         : single && cap_single && shell > 0.0
-                             ? capped(p.surface.segments[j], shell)
-                             : shell;
-        // Automatic contact touches shells on both faces at half their thickness.
-        if (segments.shell_thickness[j] > 0.0 || thickness > 0.0) {
-          p.surface.two_sided[j] = automatic ? 1 : 0;
-          p.surface.half_thickness[j] = automatic ? 0.5 * t : 0.0;
-        }
-        if (!std::isinf(p.surface.smallest_node_mass[j])) {
-          double lightest = std::numeric_limits<double>::infinity();
-          for (const Index n : p.surface.segments[j])
-            lightest = std::min(lightest, s.nodes.mass[static_cast<std::size_t>(n)]);
-          p.surface.smallest_node_mass[j] = lightest;
-        }
-      }
-      p.friction.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
-      p.side.setZero(3, static_cast<Eigen::Index>(p.nodes.size()));
-      return p;
-    };
-    // Single surface: side A's scale factors and thickness on both ends.
-    in.passes.push_back(make_pass(a, c.penalty_scale_a, c.thickness_a, b,
-                                  single ? c.penalty_scale_a : c.penalty_scale_b,
-                                  single ? c.thickness_a : c.thickness_b, true));
-    if (two_way) {
-      if (a.surface.segments.empty()) {
-        d.note(c.loc,
-               "contact {}: side A has no segments ({}): surface-to-surface runs one way, A "
-               "nodes on B segments",
-               number, a.has_particles ? "SPG particles" : "a node set");
-      } else {
-        in.passes.push_back(make_pass(b, c.penalty_scale_b, c.thickness_b, a, c.penalty_scale_a,
-                                      c.thickness_a, false));
-      }
-    }
-    // Search margin: half the largest segment plus the largest contact thickness; nodes
-    // tracked for an early re-sort are those of both sides.
-    double largest = 0.0, thickest = 0.0, thickest_node = 0.0;
-    for (const Pass& p : in.passes) {
-      for (std::size_t j = 0; j < p.surface.segments.size(); ++j) {
-        largest = std::max(largest, std::sqrt(p.surface.area[j]));
-        thickest = std::max(thickest, p.surface.half_thickness[j]);
-      }
-      for (const double h : p.node_half_thickness)
-        thickest_node = std::max(thickest_node, h);
-    }
-    in.capture = 0.5 * largest + thickest + thickest_node;
-    in.tracked = two_way ? a.nodes : a.slave_nodes;
-    in.tracked.insert(in.tracked.end(), b.nodes.begin(), b.nodes.end());
-    std::sort(in.tracked.begin(), in.tracked.end());
-    in.tracked.erase(std::unique(in.tracked.begin(), in.tracked.end()), in.tracked.end());
-    report_initial_penetrations(s, in, c, ignore, d);
-    s.contacts.push_back(std::move(in));
+    if (c.kind == model::ContactKind::force_transducer)
+      compile_transducer(m, cs.parts, cs.face_owner, d, c, number, s);
+    else if (c.kind == model::ContactKind::tied)
+      compile_tie(m, cs.parts, cs.face_owner, d, c, number, s);
+    else
+      compile_penalty_contact(m, cs, control, c, number, s, d);
   }
   check_ties(s, d);
 }
