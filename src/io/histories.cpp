@@ -66,7 +66,7 @@ class Glstat final : public HistoryFile {
     line("time step", s.step);
     line("kinetic energy", e.kinetic);
     line("internal energy", e.internal);
-    const std::vector<solver::WallRecord> walls = solver::history_records(s).walls;
+    const std::vector<solver::WallRecord>& walls = c.records.walls;
     for (std::size_t w = 0; w < walls.size(); ++w)
       ascii(" {:.<31}{:14.5E} wall#{:2d}\n", "stonewall energy", walls[w].energy,
             static_cast<int>(w + 1));
@@ -198,7 +198,7 @@ class Spcforc final : public HistoryFile {
     const State& s = c.state;
     ascii(" single point constraint forces\n\n output at time ={:14.5E}\n", s.time);
     Vec3 total = Vec3::Zero();
-    for (const solver::ReactionRecord& reaction : solver::history_records(s).reactions) {
+    for (const solver::ReactionRecord& reaction : c.records.reactions) {
       const Vec3& r = reaction.force;
       const long long id = reaction.node;
       total += r;
@@ -225,7 +225,7 @@ class Rwforc final : public HistoryFile {
   void write(const OutputContext& c) override {
     const State& s = c.state;
     // Force of the structure on the wall; the normal force is positive in contact.
-    for (const solver::WallRecord& w : solver::history_records(s).walls) {
+    for (const solver::WallRecord& w : c.records.walls) {
       ascii("{:12.5E}{:8d}{:15.6E}{:15.6E}{:15.6E}{:15.6E}\n", s.time, w.id, w.normal_force,
             w.force[0], w.force[1], w.force[2]);
       csv("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, w.id, w.normal_force, w.force[0],
@@ -253,7 +253,7 @@ class Rcforc final : public HistoryFile {
 
   void write(const OutputContext& c) override {
     const State& s = c.state;
-    for (const solver::ContactRecord& in : solver::history_records(s).contacts) {
+    for (const solver::ContactRecord& in : c.records.contacts) {
       side("slave ", s.time, in.id, in.force_a, in.moment_a, in.mass_in_contact);
       side("master", s.time, in.id, in.force_b, in.moment_b, in.mass_in_contact);
     }
@@ -287,7 +287,7 @@ class Bndout final : public HistoryFile {
     // both ends cancels to round-off, whose digits then depend on no order of the terms.
     std::vector<core::ExactSum> sums(4);
     // One nd# line per prescribed node, as LS-DYNA prints them, then the rigid parts.
-    for (const solver::BoundaryRecord& b : solver::history_records(s).boundaries) {
+    for (const solver::BoundaryRecord& b : c.records.boundaries) {
       const Vec3& f = b.force;
       if (b.kind == solver::BoundaryRecord::Kind::node) {
         ascii(" nd#{:8d}  xforce={:13.4E}   yforce={:13.4E}  zforce={:13.4E}   energy={:13.4E}\n",

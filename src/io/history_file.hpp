@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/checked_file.hpp"
+#include "solver/history_records.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::io {
@@ -24,6 +25,8 @@ struct OutputContext {
   const solver::State& state;
   const Eigen::Matrix3Xd& previous;  ///< v^{n-1/2} (the state holds v^{n+1/2})
   const Eigen::Matrix3Xd& velocity;  ///< nodal velocities at t^n (mean of the half steps)
+  /// The blocks' lines of the histories at t^n, collected once for every file written.
+  const solver::HistoryRecords& records;
   double nanoseconds_per_zone_cycle = 0.0;
 };
 

@@ -130,7 +130,9 @@ bool Outputs::state_due(const solver::State& s) const {
 void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bool final,
                     double ns_per_cycle) {
   const Eigen::Matrix3Xd velocity = 0.5 * (previous + s.nodes.velocity);
-  const OutputContext c{s, previous, velocity, ns_per_cycle};
+  const solver::HistoryRecords records =
+      histories_.empty() ? solver::HistoryRecords{} : solver::history_records(s);
+  const OutputContext c{s, previous, velocity, records, ns_per_cycle};
   auto wanted = [&](const Schedule& sc) {
     return sc.due(s.time) || (final && sc.last_written != s.time);
   };

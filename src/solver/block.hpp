@@ -165,6 +165,15 @@ void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_
 void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
 void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
 
+/// The state's first block of type B, or nullptr: how the accessors for tests reach a block's
+/// own data (beams_of, planar_walls_of, joint_stiffnesses_of).
+template <class B>
+const B* find_block(const State& s) {
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    if (const auto* found = dynamic_cast<const B*>(b.get())) return found;
+  return nullptr;
+}
+
 /// The number of block `b`'s first element: the elements the blocks before it number.
 Index first_element(const State& s, const Block& b);  // fe/element_names.cpp
 /// The elements every block numbers (deformable solids, shells, beams, discrete elements):

@@ -116,9 +116,8 @@ std::unique_ptr<Block> make_beams_block(Beams beams) {
 }
 
 const Beams* beams_of(const State& s) {
-  for (const auto& b : s.blocks)
-    if (const auto* beams = dynamic_cast<const BeamsBlock*>(b.get())) return &beams->beams();
-  return nullptr;
+  const BeamsBlock* b = find_block<BeamsBlock>(s);
+  return b ? &b->beams() : nullptr;
 }
 
 }  // namespace mcdyna::solver

@@ -190,9 +190,8 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
 
 const std::vector<JointStiffnessState>& joint_stiffnesses_of(const State& s) {
   static const std::vector<JointStiffnessState> kNone;
-  for (const auto& b : s.blocks)
-    if (const auto* j = dynamic_cast<const JointsBlock*>(b.get())) return j->stiffnesses();
-  return kNone;
+  const JointsBlock* b = find_block<JointsBlock>(s);
+  return b ? b->stiffnesses() : kNone;
 }
 
 std::unique_ptr<Block> make_joints_block(std::vector<JointState> joints,

@@ -104,9 +104,8 @@ class PlanarWallsBlock final : public walls::WallsBlock<PlanarWall, PlanarWallsB
 
 const std::vector<walls::PlanarWall>& walls::planar_walls_of(const State& s) {
   static const std::vector<PlanarWall> kNone;
-  for (const auto& b : s.blocks)
-    if (const auto* p = dynamic_cast<const PlanarWallsBlock*>(b.get())) return p->walls();
-  return kNone;
+  const PlanarWallsBlock* b = find_block<PlanarWallsBlock>(s);
+  return b ? b->walls() : kNone;
 }
 
 namespace detail {
