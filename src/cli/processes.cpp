@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <ostream>
 
+#include <string>
+
 #include "solver/block.hpp"
 
 namespace mcdyna::cli {
@@ -39,10 +41,13 @@ std::string process_problem(const solver::State& s, const core::Communicator& co
     return "--spg-angular-budget runs on one process only; run it without mpirun";
   if (step_log && comm.size() > 1)
     return "--step-log runs on one process only; run it without mpirun";
-  // A tie moves force and mass between nodes any process may own; the ties are not split yet.
-  if (!s.ties.empty() && comm.size() > 1)
-    return "tied contacts (*CONTACT_TIED_...) run on one process only; run without mpirun "
-           "(--threads N uses the cores of one machine)";
+  if (comm.size() > 1)
+    for (const auto& b : s.blocks)
+      if (const std::string what = b->one_process_only(); !what.empty())
+        return fmt::format(
+            "{} run on one process only; run without mpirun (--threads N uses the cores of one "
+            "machine)",
+            what);
   long entities = 0;
   for (const auto& b : s.blocks)
     entities += b->elements() + b->particles();

@@ -42,8 +42,10 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
     fmt::print(log, "  rigid part {:>8}: mass {:.6e}, centre ({:.6g}, {:.6g}, {:.6g}), {} nodes\n",
                b.part_id, b.mass, b.center[0], b.center[1], b.center[2], b.nodes.size());
   }
+  // One spcforc line per constrained node, one record per wall.
+  const solver::HistoryRecords records = solver::history_records(s);
   fmt::print(log, "  total mass {:.6e}; constrained nodes {}; rigid walls {}\n", mass,
-             s.constraints.nodes.size(), solver::history_records(s).walls.size());
+             records.reactions.size(), records.walls.size());
   if (s.mass_scaling_dt > 0.0) {
     fmt::print(log, "  mass scaling: target step {:.4e}, added mass so far {:.6e} ({:.3f} %)\n",
                s.mass_scaling_dt, added, mass > 0.0 ? 100.0 * added / mass : 0.0);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/block.hpp"
 #include "solver/energy.hpp"
 #include "solver/material/constitutive.hpp"
 
@@ -23,9 +24,11 @@ double driven_speed(const solver::State& s) {
     if (!body.motions.empty())
       for (solver::Index n : body.nodes)
         take(n);
-  for (const solver::NodalMotion& motion : s.nodal_motions)
-    for (solver::Index n : motion.nodes)
-      take(n);
+  std::vector<std::uint8_t> held(static_cast<std::size_t>(s.nodes.count()), 0);
+  for (const std::unique_ptr<solver::Block>& b : s.blocks)
+    b->mark_held(held);
+  for (solver::Index n = 0; n < s.nodes.count(); ++n)
+    if (held[static_cast<std::size_t>(n)] & 8U) take(n);  // a prescribed motion's direction
   return fastest;
 }
 

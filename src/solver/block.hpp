@@ -73,6 +73,14 @@ class Block {
   /// marks the nodes it reads or moves, which every process then moves itself. Blocks split
   /// over the processes (hexahedra) and node-wise conditions mark nothing.
   virtual void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& /*nodes*/) const {}
+  /// ORs into `held` (one mask per node) the translations whose velocity it prescribes whatever
+  /// the node's forces: bit 0 x, 1 y, 2 z (SPC, *NODE TC), bit 3 a direction of its own (a
+  /// prescribed motion). An SPG particle on a held node is pinned (compile_spg.cpp); a discrete
+  /// element's massless node must be held in x, y and z (compile_discrete).
+  virtual void mark_held(std::vector<std::uint8_t>& /*held*/) const {}
+  /// What it is for the user when it cannot run over several processes ("tied contacts
+  /// (*CONTACT_TIED_...)"), or empty.
+  [[nodiscard]] virtual std::string one_process_only() const { return {}; }
   /// Over several processes, after the decomposition and initialise (or a restart): what a
   /// block split over the processes needs beyond the node owners (an SPG part's share of
   /// particles, spg/distribution.hpp). Collective.
@@ -126,6 +134,10 @@ class Block {
                              bool /*on*/) {
     return false;
   }
+  /// Marks in `nodes` the nodes of its entity `kind` `id` (a prescribed motion's: the sensor that
+  /// reads its force has every process move them).
+  virtual void mark_entity_nodes(model::SensedEntity /*kind*/, model::Id /*id*/,
+                                 std::vector<std::uint8_t>& /*nodes*/) const {}
   /// Lines for the end-of-run summary (a control's switches: what turned off, when).
   virtual void add_notes(const State& /*s*/, std::vector<std::string>& /*notes*/) const {}
   /// Its section of a restart dump (restart.hpp), named for the user ("beams", "contact 3"), or
@@ -156,14 +168,12 @@ class DumpedBlock : public Block {
 Blocks make_blocks(State& s, std::vector<Blocks> compiled);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
-void add_hexahedra_blocks(State& s, Blocks& blocks);         // solids/hexahedra_block.cpp
-void add_shell_blocks(State& s, Blocks& blocks);             // shells/shell_block.cpp
-void add_spg_blocks(State& s, Blocks& blocks);               // spg/spg_block.cpp
-void add_rigid_body_blocks(State& s, Blocks& blocks);        // rigid/rigid_block.cpp
-void add_nodal_constraint_blocks(State& s, Blocks& blocks);  // loads/condition_blocks.cpp
-void add_nodal_motion_blocks(State& s, Blocks& blocks);      // loads/condition_blocks.cpp
-void add_contact_blocks(State& s, Blocks& blocks);           // contact/contact_block.cpp
-void add_tie_blocks(State& s, Blocks& blocks);               // contact/ties.cpp
+void add_hexahedra_blocks(State& s, Blocks& blocks);   // solids/hexahedra_block.cpp
+void add_shell_blocks(State& s, Blocks& blocks);       // shells/shell_block.cpp
+void add_spg_blocks(State& s, Blocks& blocks);         // spg/spg_block.cpp
+void add_rigid_body_blocks(State& s, Blocks& blocks);  // rigid/rigid_block.cpp
+void add_contact_blocks(State& s, Blocks& blocks);     // contact/contact_block.cpp
+void add_tie_blocks(State& s, Blocks& blocks);         // contact/ties.cpp
 
 /// The state's first block of type B, or nullptr: how the accessors for tests reach a block's
 /// own data (beams_of, planar_walls_of, joint_stiffnesses_of).
@@ -173,6 +183,25 @@ const B* find_block(const State& s) {
     if (const auto* found = dynamic_cast<const B*>(b.get())) return found;
   return nullptr;
 }
+
+/// The blocks the compile passes made so far, line by line (formulations.hpp): what a pass reads
+/// of the formulations compiled before it (an SPG part's pinned particles, the nodes a discrete
+/// element may leave without mass) is what their blocks give.
+class CompiledBlocks {
+ public:
+  explicit CompiledBlocks(const std::vector<Blocks>& lines) : lines_(lines) {}
+  /// `held` for every node (Block::mark_held), sized for `nodes`.
+  [[nodiscard]] std::vector<std::uint8_t> held_nodes(Index nodes) const {
+    std::vector<std::uint8_t> held(static_cast<std::size_t>(nodes), 0);
+    for (const Blocks& line : lines_)
+      for (const std::unique_ptr<Block>& b : line)
+        b->mark_held(held);
+    return held;
+  }
+
+ private:
+  const std::vector<Blocks>& lines_;
+};
 
 /// The number of block `b`'s first element: the elements the blocks before it number.
 Index first_element(const State& s, const Block& b);  // fe/element_names.cpp

@@ -196,9 +196,11 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   detail::compile_nodes_and_parts(m, *s);
   const std::vector<Formulation>& lines = formulations();
   std::vector<Blocks> compiled(lines.size());
+  const CompiledBlocks before(compiled);
   for (const std::size_t k : compile_order(lines)) {
-    if (lines[k].compile != nullptr) lines[k].compile(m, *s, diags);
-    if (lines[k].compile_blocks != nullptr) lines[k].compile_blocks(m, *s, compiled[k], diags);
+    if (lines[k].compile != nullptr) lines[k].compile(m, *s, before, diags);
+    if (lines[k].compile_blocks != nullptr)
+      lines[k].compile_blocks(m, *s, before, compiled[k], diags);
     if (lines[k].stop_on_errors && diags.error_count() > errors) return nullptr;
   }
 

@@ -16,6 +16,8 @@ std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnost
 /// Solver indices of the nodes of a node set (sorted, unique); empty if the set is unknown.
 std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
 
+class CompiledBlocks;  // block.hpp: the blocks of the passes before
+
 namespace detail {
 /// Node -> (element * N + corner) lists of a connectivity in element order (CSR: `offsets` per
 /// node, then `corners`): the fixed order the force gathers sum in. `corners_of(e)` says how
@@ -57,30 +59,41 @@ std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabas
 // them).
 /// The nodes (positions, zero velocities and masses) and one PartInfo per part, in deck order.
 void compile_nodes_and_parts(const model::ModelDatabase& m, State& s);
-void compile_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_beams(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
-void compile_discrete(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
+void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                    core::Diagnostics& d);
+void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                    core::Diagnostics& d);
+void compile_beams(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                   Blocks& own, core::Diagnostics& d);
+void compile_discrete(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                      Blocks& own, core::Diagnostics& d);
 /// Adds `inertia` (per node) to the nodes' rotary inertia, giving the nodes rotations (angular
 /// velocity, moment) the first time.
 void add_rotary_inertia(Nodes& nd, const std::vector<double>& inertia);
-void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
+void compile_rigid_bodies(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                          Blocks& own, core::Diagnostics& d);
 /// *CONSTRAINED_JOINT_* and *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: after the rigid bodies (a
 /// joint node's mass may be a body's).
-void compile_joints(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
+void compile_joints(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                    Blocks& own, core::Diagnostics& d);
 /// The rigid body of part `id` (merged parts share their lead's) or of the nodal rigid body
 /// `id`; -1 for neither.
 Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id);
-void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_body_loads(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d);
+void compile_constraints(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                         Blocks& own, core::Diagnostics& d);
+void compile_motions(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                     Blocks& own, core::Diagnostics& d);
+void compile_body_loads(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                        Blocks& own, core::Diagnostics& d);
 /// *LOAD_NODE, *LOAD_RIGID_BODY, *LOAD_SEGMENT (after the rigid bodies and shells).
-void compile_applied_loads(const model::ModelDatabase& m, State& s, Blocks& own,
-                           core::Diagnostics& d);
-void compile_global_damping(const model::ModelDatabase& m, State& s, Blocks& own,
-                            core::Diagnostics& d);
-void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_planar_walls(const model::ModelDatabase& m, State& s, Blocks& own,
+void compile_applied_loads(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                           Blocks& own, core::Diagnostics& d);
+void compile_global_damping(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                            Blocks& own, core::Diagnostics& d);
+void compile_initial_velocities(const model::ModelDatabase& m, State& s,
+                                const CompiledBlocks& before, core::Diagnostics& d);
+void compile_planar_walls(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                          Blocks& own,
                           core::Diagnostics& d);  // walls/planar_walls.cpp
 /// The nodes a rigid wall tracks: its node set (0: every node), less the exempted set, inside
 /// its box, with mass and not of a rigid body; for NSID 0 within OFFSET of the plane (point,
@@ -90,11 +103,17 @@ std::vector<Index> wall_nodes(const model::ModelDatabase& m, const State& s,
 /// The unit direction of *DEFINE_VECTOR `id`, reported at `loc` when it is missing or zero.
 Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::SourceLoc& loc,
                       core::Diagnostics& d);
-void compile_geometric_walls(const model::ModelDatabase& m, State& s, Blocks& own,
-                             core::Diagnostics& d);
-void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d);
-void compile_sensors(const model::ModelDatabase& m, State& s, Blocks& own,
+void compile_geometric_walls(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                             Blocks& own, core::Diagnostics& d);
+void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                       core::Diagnostics& d);
+/// *CONTACT_TIED_...: the tied nodes moved onto their surfaces (contact/compile_ties.cpp).
+void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                  Blocks& own, core::Diagnostics& d);
+void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                      core::Diagnostics& d);
+void compile_sensors(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                     Blocks& own,
                      core::Diagnostics& d);  // sensors/sensor_block.cpp
 /// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one
 /// element across) when TSSFAC is above their breathing mode's bound (compile.cpp).

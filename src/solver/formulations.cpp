@@ -23,13 +23,9 @@ const std::vector<Formulation>& formulations() {
       {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
       {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},
       {"joints", nullptr, nullptr, {"rigid bodies"}, false, compile_joints},
-      {"rigid bodies",
-       compile_rigid_bodies,
-       add_rigid_body_blocks,
-       {"solids", "shells", "beams"},
-       true},
-      {"constraints", compile_constraints, add_nodal_constraint_blocks, {"rigid bodies"}},
-      {"motions", compile_motions, add_nodal_motion_blocks, {"rigid bodies"}},
+      {"rigid bodies", nullptr, nullptr, {"solids", "shells", "beams"}, true, compile_rigid_bodies},
+      {"constraints", nullptr, nullptr, {"rigid bodies"}, false, compile_constraints},
+      {"motions", nullptr, nullptr, {"rigid bodies"}, false, compile_motions},
       // Nodes given a velocity move with it, rigid bodies with the fit of theirs; particles
       // take it once they exist.
       {"initial velocities", compile_initial_velocities, nullptr, {"spg", "rigid bodies"}},
@@ -40,8 +36,10 @@ const std::vector<Formulation>& formulations() {
       {"applied loads", nullptr, nullptr, {"rigid bodies", "shells"}, false, compile_applied_loads},
       {"global damping", nullptr, nullptr, {}, false, compile_global_damping},
       // Particles are slave nodes.
-      {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies"}},
-      {"ties", nullptr, add_tie_blocks, {"contact"}},
+      {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies", "ties"}},
+      // After every force (the slaves' go to their masters); compiled before the contacts, which
+      // see the tied nodes where the ties moved them.
+      {"ties", nullptr, nullptr, {"spg", "rigid bodies"}, false, compile_ties},
       // Last: reads the cycle's results and switches the blocks before it (Block::link).
       {"sensors", nullptr, nullptr, {}, false, compile_sensors},
   };

@@ -13,10 +13,14 @@
 
 namespace mcdyna::solver {
 
-using CompilePass = void (*)(const model::ModelDatabase&, State&, core::Diagnostics&);
+/// A pass reads the model, the state compiled so far and the blocks of the lines before it (its
+/// `after` lines among them).
+using CompilePass = void (*)(const model::ModelDatabase&, State&, const CompiledBlocks&,
+                             core::Diagnostics&);
 using AddBlocks = void (*)(State&, Blocks&);
 /// A pass that makes blocks owning their data (design.md §7), into the line's own list.
-using CompileBlocks = void (*)(const model::ModelDatabase&, State&, Blocks&, core::Diagnostics&);
+using CompileBlocks = void (*)(const model::ModelDatabase&, State&, const CompiledBlocks&, Blocks&,
+                               core::Diagnostics&);
 
 struct Formulation {
   const char* name = "";

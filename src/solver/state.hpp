@@ -226,59 +226,6 @@ struct RigidBody {
   [[nodiscard]] Mat3 inertia() const { return rotation * inertia0 * rotation.transpose(); }
 };
 
-/// A slave node of a tied contact (*CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE) held
-/// on its master segment at the point `weights` name (contact/ties.cpp).
-struct Tie {
-  Index slave = 0;
-  std::array<Index, 4> masters{};
-  std::array<double, 4> weights{};
-};
-
-/// A spot weld (*CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT): the rigid body of
-/// its two nodes until it fails (rigid/welds.cpp).
-struct WeldState {
-  model::Id id = 0;  ///< WID or its number among the welds
-  Index body = -1;
-  Index first = -1, last = -1;                         ///< N1 and N2: the normal runs N1 -> N2
-  double normal_force = 0.0, shear_force = 0.0;        ///< SN, SS (0: no term)
-  double normal_exponent = 0.0, shear_exponent = 0.0;  ///< N, M
-  double failure_time = 1.0e20, plastic_strain = 1.0e20;
-  Vec3 force = Vec3::Zero();  ///< the weld's force on N2 this cycle
-  double normal = 0.0;        ///< its tension along the normal (compression negative)
-  double shear = 0.0;         ///< its magnitude across the normal
-  double failed_at = -1.0;    ///< time it failed, -1 while it holds
-};
-
-/// Constrained nodal degrees of freedom (SPC and *NODE TC), merged per node.
-struct NodalConstraints {
-  std::vector<Index> nodes;  ///< ascending
-  /// bit 0 x, 1 y, 2 z; 3 rx, 4 ry, 5 rz (acting on nodes with rotations only)
-  std::vector<std::uint8_t> masks;
-  std::vector<double> birth, death;
-  Eigen::Matrix3Xd reaction;  ///< force the constraint applies, this cycle
-};
-
-/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET line expanded to nodes.
-struct NodalMotion {
-  model::Id id = 0;
-  std::vector<Index> nodes;
-  Vec3 axis = Vec3::UnitX();  ///< x, y, z (DOF 1-3) or the VID direction (DOF 4), unit
-  MotionKind kind = MotionKind::velocity;
-  Index curve = -1;
-  double scale = 1.0;
-  double birth = 0.0, death = 1.0e28;
-  bool switched_off = false;      ///< by *SENSOR_CONTROL (sensors/)
-  Eigen::Matrix3Xd node_force;    ///< per node of `nodes`, this cycle (bndout nd# lines)
-  std::vector<double> node_work;  ///< per node of `nodes`, accumulated
-  [[nodiscard]] Vec3 force() const { return node_force.rowwise().sum(); }
-  [[nodiscard]] double work() const {
-    double w = 0.0;
-    for (double x : node_work)
-      w += x;
-    return w;
-  }
-};
-
 /// Elements drawn but not integrated: those of rigid parts (solids and shells).
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
@@ -320,13 +267,9 @@ struct State {
   std::vector<PartInfo> parts;
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
-  std::vector<WeldState> welds;
   DisplayCells rigid_cells;
   std::vector<LoadCurve> curves;
-  NodalConstraints constraints;
-  std::vector<NodalMotion> nodal_motions;
   std::vector<contact::Interface> contacts;
-  std::vector<Tie> ties;  ///< tied contacts' slave nodes, by slave node (deck data)
   TimeControl time_control;
 
   double time = 0.0;

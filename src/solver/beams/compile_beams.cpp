@@ -191,7 +191,8 @@ double end_inertia(bool resultant, double e, double g, double density, double ka
 
 }  // namespace
 
-void compile_beams(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d) {
+void compile_beams(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                   Blocks& own, core::Diagnostics& d) {
   Nodes& nd = s.nodes;
   Beams bm;
   const std::vector<std::vector<std::size_t>> by_part = elements_by_part(m, m.beams);

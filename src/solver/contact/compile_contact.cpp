@@ -1,6 +1,7 @@
 // *CONTACT_... -> contact::Interface: the passes of the penalty contacts (node-on-segment, their
-// stiffness scaled by SLSFAC and SFS / SFM), the force transducers and the ties, from the sides
-// contact_sides.hpp resolves. Runs after the SPG parts: their particles are slave nodes.
+// stiffness scaled by SLSFAC and SFS / SFM) and the force transducers, from the sides
+// contact_sides.hpp resolves. Runs after the SPG parts (their particles are slave nodes) and
+// the ties (compile_ties.cpp: the tied nodes are moved onto their surfaces first).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,7 +11,6 @@
 #include "solver/compile.hpp"
 #include "solver/contact/contact.hpp"
 #include "solver/contact/contact_sides.hpp"
-#include "solver/contact/ties.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -62,85 +62,6 @@ void compile_transducer(const model::ModelDatabase& m, const std::vector<PartSur
   s.contacts.push_back(std::move(in));
 }
 
-// *CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE: side A's nodes tied to side B's
-// segments within max(0.05 sqrt(A), t) of a segment (t its shell thickness, or SBST), moved
-// onto them. Refused: rigid or SPG nodes on either side, a node tied twice or tied and a
-// master at once (checked over all ties in compile_contacts).
-void compile_tie(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
-                 const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
-                 model::Id number, State& s) {
-  bool ok = true;
-  const Side a = resolve_side(m, parts, face_owner, d, c, number, c.a, "A (slave)", ok);
-  const Side b = resolve_side(m, parts, face_owner, d, c, number, c.b, "B (master)", ok);
-  if (!ok) return;
-  if (b.surface.segments.empty()) {
-    d.error(c.loc, "contact {}: side B (master) of a tied contact has no segments", number);
-    return;
-  }
-  const std::vector<Index> nodes = all_nodes(a);
-  auto refused = [&](Index n) {
-    const auto i = static_cast<std::size_t>(n);
-    return s.nodes.rigid_body[i] >= 0 || s.nodes.smoothed[i] != 0;
-  };
-  for (const auto& seg : b.surface.segments)
-    for (const Index n : seg)
-      if (refused(n)) {
-        d.error(c.loc,
-                "contact {}: side B of a tied contact has node {} of a rigid body or SPG part; "
-                "tie to rigid parts with *CONSTRAINED_EXTRA_NODES",
-                number, s.nodes.ids[static_cast<std::size_t>(n)]);
-        return;
-      }
-  for (const Index n : nodes)
-    if (refused(n)) {
-      d.error(c.loc, "contact {}: side A of a tied contact has node {} of a rigid body or SPG part",
-              number, s.nodes.ids[static_cast<std::size_t>(n)]);
-      return;
-    }
-  std::vector<double> tolerance(b.surface.segments.size());
-  for (std::size_t j = 0; j < tolerance.size(); ++j) {
-    const double t = c.thickness_b > 0.0 ? c.thickness_b : b.shell_thickness[j];
-    tolerance[j] = std::max(0.05 * std::sqrt(b.surface.area[j]), t);
-  }
-  const contact::TieResult r = contact::tie_nodes(s, nodes, b.surface, tolerance);
-  if (!r.ties.empty()) {
-    d.note(c.loc, "contact {}: {} node(s) tied{}", number, r.ties.size(),
-           r.farthest > 0.0
-               ? fmt::format(", moved onto the surface by up to {:.4g} (node {})", r.farthest,
-                             s.nodes.ids[static_cast<std::size_t>(r.farthest_node)])
-               : std::string());
-  }
-  if (!r.untied.empty()) {
-    d.note(c.loc,
-           "contact {}: {} node(s) of side A have no segment of side B within the tie "
-           "tolerance (max(0.05 sqrt(A), t) or SBST) and are not tied, e.g. node {}",
-           number, r.untied.size(), s.nodes.ids[static_cast<std::size_t>(r.untied.front())]);
-  }
-  s.ties.insert(s.ties.end(), r.ties.begin(), r.ties.end());
-}
-
-// Ties in slave order; a node tied twice, or tied and carrying another tie, is refused (the
-// block passes each force once, one level deep).
-void check_ties(State& s, core::Diagnostics& d) {
-  std::sort(s.ties.begin(), s.ties.end(),
-            [](const Tie& a, const Tie& b) { return a.slave < b.slave; });
-  std::vector<std::uint8_t> master(static_cast<std::size_t>(s.nodes.count()), 0);
-  for (const Tie& t : s.ties)
-    for (std::size_t k = 0; k < 4; ++k)
-      if (t.weights[k] != 0.0) master[static_cast<std::size_t>(t.masters[k])] = 1;
-  for (std::size_t k = 0; k < s.ties.size(); ++k) {
-    const Index n = s.ties[k].slave;
-    const model::Id id = s.nodes.ids[static_cast<std::size_t>(n)];
-    if (k > 0 && s.ties[k - 1].slave == n)
-      d.error(core::SourceLoc{}, "node {} is tied by two tied contacts", id);
-    if (master[static_cast<std::size_t>(n)])
-      d.error(core::SourceLoc{},
-              "node {} is tied to a surface and carries a tied node itself (chained ties are "
-              "not supported)",
-              id);
-  }
-}
-
 // What every interface's passes read of the model's surfaces: the parts' outer faces, each
 // node's penalty stiffness and the half thickness of the thickest shell on it (for
 // single-surface contacts capped as capped_thickness says), the faces' owners (segment sets).
@@ -186,9 +107,7 @@ ContactSurfaces contact_surfaces(const model::ModelDatabase& m, const State& s,
         cs.shell_half_single[nn] = std::max(cs.shell_half_single[nn], 0.5 * t_single);
       }
     }
-  for (std::size_t p = 0; p < cs.parts.size(); ++p)
-    for (std::size_t j = 0; j < cs.parts[p].surface.segments.size(); ++j)
-      cs.face_owner.emplace(sorted(cs.parts[p].surface.segments[j]), std::make_pair(p, j));
+  cs.face_owner = face_owners(cs.parts);
   cs.slsfac = control.penalty_scale > 0.0 ? control.penalty_scale : 0.1;
   return cs;
 }
@@ -387,7 +306,8 @@ void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurface
 
 }  // namespace
 
-void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                      core::Diagnostics& d) {
   if (m.contacts.empty()) return;
   const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
   const ContactSurfaces cs = contact_surfaces(m, s, control);
@@ -397,12 +317,9 @@ void compile_contacts(const model::ModelDatabase& m, State& s, core::Diagnostics
     const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
     if (c.kind == model::ContactKind::force_transducer)
       compile_transducer(m, cs.parts, cs.face_owner, d, c, number, s);
-    else if (c.kind == model::ContactKind::tied)
-      compile_tie(m, cs.parts, cs.face_owner, d, c, number, s);
-    else
+    else if (c.kind != model::ContactKind::tied)  // the ties' own pass (compile_ties.cpp)
       compile_penalty_contact(m, cs, control, c, number, s, d);
   }
-  check_ties(s, d);
 }
 
 }  // namespace mcdyna::solver::detail

@@ -305,6 +305,14 @@ Side resolve_side(const model::ModelDatabase& m, const std::vector<PartSurface>&
   return out;
 }
 
+FaceOwners face_owners(const std::vector<PartSurface>& parts) {
+  FaceOwners owners;
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t j = 0; j < parts[p].surface.segments.size(); ++j)
+      owners.emplace(sorted(parts[p].surface.segments[j]), std::make_pair(p, j));
+  return owners;
+}
+
 std::vector<Index> all_nodes(const Side& side) {
   std::vector<Index> nodes = side.nodes;
   nodes.insert(nodes.end(), side.slave_nodes.begin(), side.slave_nodes.end());

@@ -38,6 +38,7 @@ Face sorted(Face f);
 
 /// Part and segment index of every part's segment, by its sorted nodes (for segment sets).
 using FaceOwners = std::map<Face, std::pair<std::size_t, std::size_t>>;
+FaceOwners face_owners(const std::vector<PartSurface>& parts);
 
 /// One side of a contact.
 struct Side {

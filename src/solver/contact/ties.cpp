@@ -77,8 +77,8 @@ namespace {
 // x_s = sum w x_i stays true step after step.
 class TieBlock final : public Block {
  public:
-  explicit TieBlock(const State& s) {
-    for (const Tie& t : s.ties)
+  explicit TieBlock(std::vector<Tie> ties) : ties_(std::move(ties)) {
+    for (const Tie& t : ties_)
       for (std::size_t k = 0; k < 4; ++k)
         if (t.weights[k] != 0.0) masters_.push_back(t.masters[k]);
     std::sort(masters_.begin(), masters_.end());
@@ -86,15 +86,20 @@ class TieBlock final : public Block {
     carried_.assign(masters_.size(), 0.0);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
+  [[nodiscard]] const std::vector<Tie>& ties() const { return ties_; }
+  // A tie moves force and mass between nodes any process may own.
+  [[nodiscard]] std::string one_process_only() const override {
+    return "tied contacts (*CONTACT_TIED_...)";
+  }
 
   // The initial velocities made to agree with the ties, momentum kept: each corner takes the
   // mean of its own and its slaves' momenta over their masses, (m v + sum w m_s v_s) / (m + M),
   // and the slaves the weighted mean of their corners'.
   void initialise(State& s) override {
     Nodes& nd = s.nodes;
-    carry_masses(nd, s.ties);
+    carry_masses(nd, ties_);
     std::vector<Vec3> momentum(masters_.size(), Vec3::Zero());
-    for (const Tie& tie : s.ties) {
+    for (const Tie& tie : ties_) {
       const auto i = static_cast<std::size_t>(tie.slave);
       const double m = nd.mass[i] + nd.added_mass[i];
       for (std::size_t k = 0; k < 4; ++k)
@@ -112,7 +117,7 @@ class TieBlock final : public Block {
   }
 
   void forces(State& s, NodalForces& forces, ForceReport& /*report*/) override {
-    for (const Tie& t : s.ties) {
+    for (const Tie& t : ties_) {
       const Vec3 f = forces.force.col(t.slave);
       for (std::size_t k = 0; k < 4; ++k)
         if (t.weights[k] != 0.0) forces.force.col(t.masters[k]) += t.weights[k] * f;
@@ -122,7 +127,7 @@ class TieBlock final : public Block {
 
   Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
     Nodes& nd = s.nodes;
-    carry_masses(nd, s.ties);
+    carry_masses(nd, ties_);
     for (std::size_t j = 0; j < masters_.size(); ++j) {
       const Index n = masters_[j];
       const auto i = static_cast<std::size_t>(n);
@@ -135,7 +140,7 @@ class TieBlock final : public Block {
 
   void after_constraints(State& s) override {
     Nodes& nd = s.nodes;
-    for (const Tie& t : s.ties) {
+    for (const Tie& t : ties_) {
       Vec3 v = Vec3::Zero();
       for (std::size_t k = 0; k < 4; ++k)
         v += t.weights[k] * nd.velocity.col(t.masters[k]);
@@ -158,14 +163,25 @@ class TieBlock final : public Block {
     return static_cast<std::size_t>(std::lower_bound(masters_.begin(), masters_.end(), master) -
                                     masters_.begin());
   }
+  std::vector<Tie> ties_;       ///< by slave node (deck data: nothing to dump)
   std::vector<Index> masters_;  ///< every master corner with a weight, ascending
   std::vector<double> carried_;
 };
 
 }  // namespace
 
-void add_tie_blocks(State& s, Blocks& blocks) {
-  if (!s.ties.empty()) blocks.push_back(std::make_unique<TieBlock>(s));
+namespace contact {
+
+std::unique_ptr<Block> make_tie_block(std::vector<Tie> ties) {
+  return std::make_unique<TieBlock>(std::move(ties));
 }
+
+const std::vector<Tie>& ties_of(const State& s) {
+  static const std::vector<Tie> kNone;
+  const TieBlock* b = find_block<TieBlock>(s);
+  return b != nullptr ? b->ties() : kNone;
+}
+
+}  // namespace contact
 
 }  // namespace mcdyna::solver

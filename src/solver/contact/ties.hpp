@@ -4,9 +4,25 @@
 /// corners' weights it keeps; every cycle its force goes to those corners, which move with its
 /// mass as well as theirs, and it is carried at the weighted mean of their velocities. Only the
 /// translations are tied (a shell node keeps its own rotations).
+#include <array>
+#include <memory>
 #include <vector>
 
 #include "solver/state.hpp"
+
+namespace mcdyna::solver {
+
+/// A slave node of a tied contact (*CONTACT_TIED_NODES_TO_SURFACE / _SURFACE_TO_SURFACE) held
+/// on its master segment at the point `weights` name (contact/ties.cpp).
+struct Tie {
+  Index slave = 0;
+  std::array<Index, 4> masters{};
+  std::array<double, 4> weights{};
+};
+
+class Block;  // block.hpp
+
+}  // namespace mcdyna::solver
 
 namespace mcdyna::solver::contact {
 
@@ -22,5 +38,10 @@ struct TieResult {
 /// position).
 TieResult tie_nodes(State& s, const std::vector<Index>& nodes, const Surface& surface,
                     const std::vector<double>& tolerance);
+
+/// The block of every tie of the deck (`ties` by slave node, each slave tied once).
+std::unique_ptr<Block> make_tie_block(std::vector<Tie> ties);
+/// Its ties, or none (for tests).
+const std::vector<Tie>& ties_of(const State& s);
 
 }  // namespace mcdyna::solver::contact

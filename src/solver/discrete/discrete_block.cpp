@@ -164,21 +164,17 @@ bool compile_law(const model::ModelDatabase& m, const model::Material& mat, Spri
   }
 }
 
-// A node that carries a discrete element's force must answer it with a mass, or be held.
-bool held(const State& s, Index n) {
-  const auto& c = s.constraints;
-  const auto it = std::lower_bound(c.nodes.begin(), c.nodes.end(), n);
-  return it != c.nodes.end() && *it == n &&
-         (c.masks[static_cast<std::size_t>(it - c.nodes.begin())] & 7) == 7;
-}
-
 }  // namespace
 
 namespace detail {
 
-void compile_discrete(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d) {
+void compile_discrete(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                      Blocks& own, core::Diagnostics& d) {
   if (m.discretes.empty()) return;
   Springs sp;
+  // A node that carries a discrete element's force must answer it with a mass, or be held in x,
+  // y and z (Block::mark_held).
+  const std::vector<std::uint8_t> held = before.held_nodes(s.nodes.count());
   std::vector<Index> law_of_part(m.parts.size(), -2);  // -2 not compiled yet, -1 cannot run
   for (const model::DiscreteElement& e : m.discretes) {
     const auto p = m.index.parts.find(e.part);
@@ -203,8 +199,8 @@ void compile_discrete(const model::ModelDatabase& m, State& s, Blocks& own, core
       continue;
     }
     for (int k = 0; k < 2; ++k)
-      if (answering_mass(s, nodes[static_cast<std::size_t>(k)]) <= 0.0 &&
-          !held(s, nodes[static_cast<std::size_t>(k)]))
+      if (const Index n = nodes[static_cast<std::size_t>(k)];
+          answering_mass(s, n) <= 0.0 && (held[static_cast<std::size_t>(n)] & 7U) != 7U)
         d.error(e.loc,
                 "discrete element {}: node {} has no mass and is not held in x, y and z (discrete "
                 "elements carry none: attach the node to an element or a rigid body, or fix it)",

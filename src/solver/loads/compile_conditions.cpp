@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <map>
 
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
+#include "solver/loads/load_state.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -123,7 +125,8 @@ Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::S
   return Vec3::UnitX();
 }
 
-void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_constraints(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                         Blocks& own, core::Diagnostics& d) {
   struct Entry {
     std::uint8_t mask = 0;
     double birth = 0.0, death = 1.0e20;
@@ -169,7 +172,8 @@ void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnost
       add(static_cast<Index>(m.index.nodes.find(c.target)), mask, c.birth, c.death, c.loc);
     }
   }
-  NodalConstraints& nc = s.constraints;
+  if (merged.empty()) return;
+  NodalConstraints nc;
   for (const auto& [n, e] : merged) {
     nc.nodes.push_back(n);
     nc.masks.push_back(e.mask);
@@ -177,9 +181,12 @@ void compile_constraints(const model::ModelDatabase& m, State& s, core::Diagnost
     nc.death.push_back(e.death);
   }
   nc.reaction.setZero(3, static_cast<Index>(nc.nodes.size()));
+  own.push_back(make_nodal_constraints_block(std::move(nc)));
 }
 
-void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_motions(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                     Blocks& own, core::Diagnostics& d) {
+  std::vector<NodalMotion> motions;
   for (const model::PrescribedMotion& pm : m.prescribed_motions) {
     const int dof = pm.dof;
     if (pm.kind < 0 || pm.kind > 2) {
@@ -248,11 +255,13 @@ void compile_motions(const model::ModelDatabase& m, State& s, core::Diagnostics&
     nm.death = death;
     nm.node_force.setZero(3, static_cast<Index>(nm.nodes.size()));
     nm.node_work.assign(nm.nodes.size(), 0.0);
-    s.nodal_motions.push_back(std::move(nm));
+    motions.push_back(std::move(nm));
   }
+  if (!motions.empty()) own.push_back(make_nodal_motions_block(std::move(motions)));
 }
 
-void compile_initial_velocities(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_initial_velocities(const model::ModelDatabase& m, State& s,
+                                const CompiledBlocks& /*before*/, core::Diagnostics& d) {
   auto& v = s.nodes.velocity;
   const Nodes& nd = s.nodes;
   // The nodes a record gives a velocity: a rigid body's motion is fitted to those of its nodes

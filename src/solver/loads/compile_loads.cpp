@@ -8,8 +8,8 @@
 
 namespace mcdyna::solver::detail {
 
-void compile_body_loads(const model::ModelDatabase& m, State& /*s*/, Blocks& own,
-                        core::Diagnostics& /*d*/) {
+void compile_body_loads(const model::ModelDatabase& m, State& /*s*/,
+                        const CompiledBlocks& /*before*/, Blocks& own, core::Diagnostics& /*d*/) {
   std::vector<BodyLoadState> loads;
   for (const model::BodyLoad& b : m.body_loads) {
     const Index curve = curve_index(m, b.curve);
@@ -19,7 +19,8 @@ void compile_body_loads(const model::ModelDatabase& m, State& /*s*/, Blocks& own
   if (!loads.empty()) own.push_back(make_body_loads_block(std::move(loads)));
 }
 
-void compile_global_damping(const model::ModelDatabase& m, State& /*s*/, Blocks& own,
+void compile_global_damping(const model::ModelDatabase& m, State& /*s*/,
+                            const CompiledBlocks& /*before*/, Blocks& own,
                             core::Diagnostics& /*d*/) {
   if (!m.controls.damping) return;
   const model::GlobalDamping& g = *m.controls.damping;
@@ -30,8 +31,8 @@ void compile_global_damping(const model::ModelDatabase& m, State& /*s*/, Blocks&
   if (g.curve == 0 || ds.curve >= 0) own.push_back(make_global_damping_block(ds));
 }
 
-void compile_applied_loads(const model::ModelDatabase& m, State& s, Blocks& own,
-                           core::Diagnostics& d) {
+void compile_applied_loads(const model::ModelDatabase& m, State& s,
+                           const CompiledBlocks& /*before*/, Blocks& own, core::Diagnostics& d) {
   std::vector<PointLoadState> points;
   std::vector<PressureLoadState> pressures;
   for (const model::PointLoad& p : m.point_loads) {

@@ -1,20 +1,16 @@
 // The velocity-level conditions (SPC and *NODE TC, prescribed nodal motion) and the
 // body loads as blocks of the time loop (loads.hpp).
+#include <algorithm>
+
 #include "solver/block.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/loads/loads_dump.hpp"
+#include "solver/parallel/owned_gather.hpp"
 #include "solver/sensors/switchable.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
-
-using AddEnergies = void (*)(const State&, EnergySummary&);
-
-void motions_work(const State& s, EnergySummary& e) {
-  for (const NodalMotion& m : s.nodal_motions)
-    e.external_work += m.work();
-}
 
 // What the conditions give *SENSOR_DEFINE_FORCE and *SENSOR_CONTROL: a prescribed motion's force
 // on its nodes; the nodal constraints (merged per node) take no part.
@@ -36,6 +32,35 @@ bool switch_held(std::vector<NodalMotion>& v, model::SensedEntity kind, model::I
   return sensors::switch_in(v, model::SensedEntity::prescribed_motion, kind, id, on);
 }
 
+// The translations they hold (Block::mark_held): the constraints' masks, a motion's own
+// direction.
+void mark_held_nodes(const NodalConstraints& c, std::vector<std::uint8_t>& held) {
+  for (std::size_t k = 0; k < c.nodes.size(); ++k)
+    held[static_cast<std::size_t>(c.nodes[k])] |= static_cast<std::uint8_t>(c.masks[k] & 7U);
+}
+void mark_held_nodes(const std::vector<NodalMotion>& v, std::vector<std::uint8_t>& held) {
+  for (const NodalMotion& m : v)
+    for (const Index n : m.nodes)
+      held[static_cast<std::size_t>(n)] |= 8U;
+}
+
+void mark_motion_nodes(const NodalConstraints& /*c*/, model::SensedEntity /*kind*/,
+                       model::Id /*id*/, std::vector<std::uint8_t>& /*nodes*/) {}
+void mark_motion_nodes(const std::vector<NodalMotion>& v, model::SensedEntity kind, model::Id id,
+                       std::vector<std::uint8_t>& nodes) {
+  if (kind != model::SensedEntity::prescribed_motion) return;
+  for (const NodalMotion& m : v)
+    if (m.id == id)
+      for (const Index n : m.nodes)
+        nodes[static_cast<std::size_t>(n)] = 1;
+}
+
+void add_work(const NodalConstraints& /*c*/, EnergySummary& /*e*/) {}
+void add_work(const std::vector<NodalMotion>& v, EnergySummary& e) {
+  for (const NodalMotion& m : v)
+    e.external_work += m.work();
+}
+
 // Their history lines: spcforc's reaction per constrained node, bndout's force and work per
 // prescribed node (one line per node, as LS-DYNA prints them).
 void held_records(const State& s, const NodalConstraints& c, HistoryRecords& out) {
@@ -51,39 +76,83 @@ void held_records(const State& s, const std::vector<NodalMotion>& v, HistoryReco
            m.node_force.col(static_cast<Index>(k)), Vec3::Zero(), m.node_work[k]});
 }
 
-// A condition applied by one of loads.hpp's functions in the constraint phase; its state is
-// the member `Held` of State (its reactions, forces and work), its energy (if any) AddTo's.
-template <void (*Apply)(State&, const StepTimes&), auto Held, AddEnergies AddTo = nullptr>
-class ConditionBlock final : public DumpedBlock<ConditionBlock<Apply, Held, AddTo>> {
+// Over several processes a node's owner applies its condition (a node every process moves, on
+// process 0 too): what the histories print of it goes to process 0.
+int output_owner(const parallel::Ownership& own, Index n) {
+  return own.replicated_node(n) ? 0 : own.owner[static_cast<std::size_t>(n)];
+}
+void gather_records(const parallel::Ownership& own, NodalConstraints& c) {
+  parallel::gather_owned(
+      own.comm, c.nodes.size(), [&](std::size_t k) { return output_owner(own, c.nodes[k]); },
+      [&](std::size_t k, std::vector<double>& out) {
+        const auto r = c.reaction.col(static_cast<Index>(k));
+        out.insert(out.end(), r.data(), r.data() + 3);
+      },
+      [&](std::size_t k, const double*& in) {
+        std::copy(in, in + 3, c.reaction.col(static_cast<Index>(k)).data());
+        in += 3;
+      },
+      true);
+}
+void gather_records(const parallel::Ownership& own, std::vector<NodalMotion>& v) {
+  for (NodalMotion& m : v)
+    parallel::gather_owned(
+        own.comm, m.nodes.size(), [&](std::size_t k) { return output_owner(own, m.nodes[k]); },
+        [&](std::size_t k, std::vector<double>& out) {
+          const auto f = m.node_force.col(static_cast<Index>(k));
+          out.insert(out.end(), f.data(), f.data() + 3);
+          out.push_back(m.node_work[k]);
+        },
+        [&](std::size_t k, const double*& in) {
+          std::copy(in, in + 3, m.node_force.col(static_cast<Index>(k)).data());
+          m.node_work[k] = in[3];
+          in += 4;
+        },
+        true);
+}
+
+// A condition applied in the constraint phase by one of loads.hpp's functions to the data the
+// block owns, `Held` (its nodes, its reactions or forces, its work).
+template <class Held, void (*Apply)(State&, Held&, const StepTimes&)>
+class ConditionBlock final : public DumpedBlock<ConditionBlock<Held, Apply>> {
  public:
-  explicit ConditionBlock(std::string name) : name_(std::move(name)) {}
+  ConditionBlock(std::string name, Held held) : name_(std::move(name)), held_(std::move(held)) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::boundary; }
-  void constrain(State& s, const StepTimes& t) override { Apply(s, t); }
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void constrain(State& s, const StepTimes& t) override { Apply(s, held_, t); }
+  void mark_held(std::vector<std::uint8_t>& held) const override { mark_held_nodes(held_, held); }
+  void mark_entity_nodes(model::SensedEntity kind, model::Id id,
+                         std::vector<std::uint8_t>& nodes) const override {
+    mark_motion_nodes(held_, kind, id, nodes);
+  }
+  void synchronise(State& s, Block::Gather what) override {
+    if (what != Block::Gather::dump) gather_records(s.ownership, held_);
+  }
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    if constexpr (AddTo != nullptr) AddTo(s, e);
+    add_work(held_, e);
   }
-  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
                     Vec3& force) const override {
-    return held_force(s.*Held, kind, id, force);
+    return held_force(held_, kind, id, force);
   }
-  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
-    return switch_held(s.*Held, kind, id, on);
+  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
+    return switch_held(held_, kind, id, on);
   }
   void add_history_records(const State& s, HistoryRecords& out) const override {
-    held_records(s, s.*Held, out);
+    held_records(s, held_, out);
   }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {
     return sizes_text(kConditionDumpedSizes);
   }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.*Held);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(held_);
   }
 
  private:
   std::string name_;
+  Held held_;
 };
 
 // Owns its loads (deck data: nothing to dump).
@@ -101,17 +170,14 @@ class BodyLoadsBlock final : public Block {
 
 }  // namespace
 
-void add_nodal_constraint_blocks(State& s, Blocks& blocks) {
-  if (!s.constraints.nodes.empty())
-    blocks.push_back(std::make_unique<ConditionBlock<apply_nodal_constraints, &State::constraints>>(
-        "nodal constraints"));
+std::unique_ptr<Block> make_nodal_constraints_block(NodalConstraints c) {
+  return std::make_unique<ConditionBlock<NodalConstraints, apply_nodal_constraints>>(
+      "nodal constraints", std::move(c));
 }
 
-void add_nodal_motion_blocks(State& s, Blocks& blocks) {
-  if (!s.nodal_motions.empty())
-    blocks.push_back(
-        std::make_unique<ConditionBlock<apply_nodal_motions, &State::nodal_motions, motions_work>>(
-            "prescribed nodal motions"));
+std::unique_ptr<Block> make_nodal_motions_block(std::vector<NodalMotion> motions) {
+  return std::make_unique<ConditionBlock<std::vector<NodalMotion>, apply_nodal_motions>>(
+      "prescribed nodal motions", std::move(motions));
 }
 
 std::unique_ptr<Block> make_body_loads_block(std::vector<BodyLoadState> loads) {

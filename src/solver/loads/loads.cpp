@@ -56,8 +56,7 @@ WallLanding land_on_wall(Nodes& nd, Index n, const StepTimes& t, double gap, con
   return l;
 }
 
-void apply_nodal_constraints(State& state, const StepTimes& t) {
-  NodalConstraints& c = state.constraints;
+void apply_nodal_constraints(State& state, NodalConstraints& c, const StepTimes& t) {
   Nodes& nd = state.nodes;
   for (std::size_t k = 0; k < c.nodes.size(); ++k) {
     const Index n = c.nodes[k];
@@ -78,9 +77,9 @@ void apply_nodal_constraints(State& state, const StepTimes& t) {
   }
 }
 
-void apply_nodal_motions(State& state, const StepTimes& t) {
+void apply_nodal_motions(State& state, std::vector<NodalMotion>& motions, const StepTimes& t) {
   Nodes& nd = state.nodes;
-  for (NodalMotion& nm : state.nodal_motions) {
+  for (NodalMotion& nm : motions) {
     nm.node_force.setZero();
     if (nm.switched_off || t.time < nm.birth || t.time > nm.death) continue;
     const Vec3& axis = nm.axis;

@@ -14,8 +14,8 @@ namespace mcdyna::solver {
 void apply_body_loads(State& state, const std::vector<BodyLoadState>& loads,
                       Eigen::Matrix3Xd& force);
 
-void apply_nodal_constraints(State& state, const StepTimes& t);
-void apply_nodal_motions(State& state, const StepTimes& t);
+void apply_nodal_constraints(State& state, NodalConstraints& c, const StepTimes& t);
+void apply_nodal_motions(State& state, std::vector<NodalMotion>& motions, const StepTimes& t);
 
 /// What landing a node on a wall did (rigid walls, planar and geometric).
 struct WallLanding {

@@ -124,14 +124,6 @@ void Halo::rebuild(State& s) {
   for (Index e = 0; e < n_elements; ++e)
     if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
       output_[static_cast<std::size_t>(r)].elements.push_back(e);
-  for (std::size_t k = 0; k < s.constraints.nodes.size(); ++k)
-    if (const Index n = s.constraints.nodes[k]; !own.replicated_node(n) && owner(n) != 0)
-      output_[static_cast<std::size_t>(owner(n))].constraints.push_back(static_cast<Index>(k));
-  for (std::size_t m = 0; m < s.nodal_motions.size(); ++m)
-    for (std::size_t k = 0; k < s.nodal_motions[m].nodes.size(); ++k)
-      if (const Index n = s.nodal_motions[m].nodes[k]; !own.replicated_node(n) && owner(n) != 0)
-        output_[static_cast<std::size_t>(owner(n))].motions.emplace_back(static_cast<Index>(m),
-                                                                         static_cast<Index>(k));
 }
 
 void Halo::exchange_motion(State& s) {
@@ -162,13 +154,6 @@ void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) 
       visit(&eroded, 1);
       s.solids.eroded[static_cast<std::size_t>(e)] = static_cast<std::uint8_t>(eroded);
       element_fields(s, e, states, visit);
-    }
-    for (const Index k : share.constraints)
-      visit(s.constraints.reaction.col(k).data(), 3);
-    for (const auto& [m, k] : share.motions) {
-      NodalMotion& motion = s.nodal_motions[static_cast<std::size_t>(m)];
-      visit(motion.node_force.col(k).data(), 3);
-      visit(&motion.node_work[static_cast<std::size_t>(k)], 1);
     }
   };
   std::vector<double> mine;

@@ -69,11 +69,10 @@ class Halo {
  private:
   core::Communicator comm_;
   ExchangePlan motion_;  ///< x and v of the ghost nodes
-  /// Per process other than 0: the nodes, hexahedra, constrained nodes (index into
-  /// s.constraints.nodes) and prescribed-motion nodes (motion, index) it sends to process 0.
+  /// Per process other than 0: the nodes and hexahedra it sends to process 0 (the blocks that
+  /// own their data send theirs, Block::synchronise).
   struct OutputShare {
-    std::vector<Index> nodes, elements, constraints;
-    std::vector<std::pair<Index, Index>> motions;
+    std::vector<Index> nodes, elements;
   };
   std::vector<OutputShare> output_;  ///< indexed by process
   HaloSize size_;

@@ -131,7 +131,8 @@ void compile_joint_stiffnesses(const model::ModelDatabase& m, const State& s, co
 
 }  // namespace
 
-void compile_joints(const model::ModelDatabase& m, State& s, Blocks& own, core::Diagnostics& d) {
+void compile_joints(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                    Blocks& own, core::Diagnostics& d) {
   std::vector<JointState> joints;
   std::vector<JointStiffnessState> stiffnesses;
   compile_joint_pairs(m, s, d, joints);

@@ -5,7 +5,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
+#include "solver/rigid/welds.hpp"
 #include "solver/solids/hex_geometry.hpp"
 
 namespace mcdyna::solver::detail {
@@ -194,7 +196,7 @@ std::vector<Index> weld_nodes(const model::ModelDatabase& m, const model::SpotWe
 
 // The weld's failure state: two nodes apart (their line is its normal).
 void compile_weld(const model::ModelDatabase& m, const model::SpotWeld& w, Index body, State& s,
-                  core::Diagnostics& d) {
+                  std::vector<WeldState>& welds, core::Diagnostics& d) {
   const std::vector<Index> nodes = weld_nodes(m, w);
   const auto k = static_cast<std::size_t>(&w - m.spot_welds.data());
   if (nodes.size() != 2) {
@@ -224,7 +226,7 @@ void compile_weld(const model::ModelDatabase& m, const model::SpotWeld& w, Index
   ws.shear_exponent = w.shear_exponent;
   ws.failure_time = w.failure_time;
   ws.plastic_strain = w.plastic_strain;
-  s.welds.push_back(ws);
+  welds.push_back(ws);
 }
 
 }  // namespace
@@ -237,7 +239,8 @@ Index rigid_body_of(const model::ModelDatabase& m, const State& s, model::Id id)
   return -1;
 }
 
-void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_rigid_bodies(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                          Blocks& own, core::Diagnostics& d) {
   std::vector<MassMoments> moments;
   std::vector<std::vector<Index>> nodes;
   auto new_body = [&](model::Id id) {
@@ -390,8 +393,10 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, core::Diagnos
     for (std::size_t k = 0; k < body.nodes.size(); ++k)
       body.offsets.col(static_cast<Index>(k)) = s.nodes.initial.col(body.nodes[k]) - body.center;
   }
+  std::vector<WeldState> welds;
   for (std::size_t k = 0; k < m.spot_welds.size(); ++k)
-    compile_weld(m, m.spot_welds[k], static_cast<Index>(weld_bodies + k), s, d);
+    compile_weld(m, m.spot_welds[k], static_cast<Index>(weld_bodies + k), s, welds, d);
+  own.push_back(make_rigid_bodies_block(std::move(welds)));
 }
 
 }  // namespace mcdyna::solver::detail

@@ -17,18 +17,22 @@ double rigid_kinetic(const RigidBody& b) {
          0.5 * b.previous_omega.dot(b.inertia() * b.omega);
 }
 
+// The rigid bodies are the State's (loads, joints, contact and walls act on them as on the
+// nodes); the welds' failure state is the block's own.
 class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
  public:
+  explicit RigidBodiesBlock(std::vector<WeldState> welds) : welds_(std::move(welds)) {}
+  [[nodiscard]] const std::vector<WeldState>& welds() const { return welds_; }
   [[nodiscard]] std::string dump_name() const override { return "rigid bodies"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kRigidDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.rigid_bodies, s.welds);
+  void dumped(Ar& ar, State& s) {
+    ar(s.rigid_bodies, welds_);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::rigid; }
   Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
     const Index bad = advance_rigid_bodies(s, f, t);
-    if (!s.welds.empty()) check_welds(s, f.force, t);
+    if (!welds_.empty()) check_welds(s, welds_, f.force, t);
     return bad;
   }
   void advance_positions(State& s, double dt) override { place_rigid_nodes(s, dt); }
@@ -85,12 +89,21 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
       sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(), v);
     }
   }
+
+ private:
+  std::vector<WeldState> welds_;
 };
 
 }  // namespace
 
-void add_rigid_body_blocks(State& s, Blocks& blocks) {
-  if (!s.rigid_bodies.empty()) blocks.push_back(std::make_unique<RigidBodiesBlock>());
+std::unique_ptr<Block> make_rigid_bodies_block(std::vector<WeldState> welds) {
+  return std::make_unique<RigidBodiesBlock>(std::move(welds));
+}
+
+const std::vector<WeldState>& welds_of(const State& s) {
+  static const std::vector<WeldState> kNone;
+  const RigidBodiesBlock* b = find_block<RigidBodiesBlock>(s);
+  return b != nullptr ? b->welds() : kNone;
 }
 
 }  // namespace mcdyna::solver

@@ -3,6 +3,7 @@
 /// a run (dump.hpp).
 #include "solver/dump.hpp"
 #include "solver/rigid/joint_state.hpp"
+#include "solver/rigid/welds.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

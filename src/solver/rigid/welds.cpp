@@ -80,8 +80,9 @@ void release(State& s, WeldState& w, double time) {
 
 }  // namespace
 
-void check_welds(State& state, const Eigen::Matrix3Xd& force, const StepTimes& t) {
-  for (WeldState& w : state.welds) {
+void check_welds(State& state, std::vector<WeldState>& welds, const Eigen::Matrix3Xd& force,
+                 const StepTimes& t) {
+  for (WeldState& w : welds) {
     if (w.failed_at >= 0.0) continue;
     const Vec3 f = constraint_force(state, force, w.last);
     const Vec3 axis =

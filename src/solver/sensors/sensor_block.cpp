@@ -95,12 +95,10 @@ class SensorBlock final : public DumpedBlock<SensorBlock> {
   // The sensed nodes, and the nodes of a sensed prescribed motion, are moved by every process.
   void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
     for (const Sensor& x : sensors_) {
-      if (x.on_node) nodes[static_cast<std::size_t>(x.node)] = 1;
-      if (x.on_node || x.kind != model::SensedEntity::prescribed_motion) continue;
-      for (const NodalMotion& m : s.nodal_motions)
-        if (m.id == x.target)
-          for (const Index n : m.nodes)
-            nodes[static_cast<std::size_t>(n)] = 1;
+      if (x.on_node)
+        nodes[static_cast<std::size_t>(x.node)] = 1;
+      else
+        s.blocks[x.block]->mark_entity_nodes(x.kind, x.target, nodes);
     }
   }
 
@@ -185,8 +183,8 @@ Sensor make_sensor(const model::ModelDatabase& m, const model::SensorDirection& 
 
 namespace mcdyna::solver::detail {
 
-void compile_sensors(const model::ModelDatabase& m, State& /*s*/, Blocks& own,
-                     core::Diagnostics& d) {
+void compile_sensors(const model::ModelDatabase& m, State& /*s*/, const CompiledBlocks& /*before*/,
+                     Blocks& own, core::Diagnostics& d) {
   using namespace sensors;
   const model::Sensors& in = m.sensors;
   if (in.empty()) return;

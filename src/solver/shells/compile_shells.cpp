@@ -161,7 +161,8 @@ ThicknessUpdate thickness_update(const model::ModelDatabase& m, const model::Par
 
 }  // namespace
 
-void compile_shells(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                    core::Diagnostics& d) {
   const model::ShellControl control = m.controls.shell.value_or(model::ShellControl{});
   if (m.controls.shell) {
     note_shell_control(control, d);

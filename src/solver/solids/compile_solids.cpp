@@ -38,7 +38,8 @@ void allocate_solid_state(State& s, Index points, bool back_stress) {
 
 }  // namespace
 
-void compile_solids(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                    core::Diagnostics& d) {
   Nodes& nd = s.nodes;
   // Solids grouped per deformable part (parts in deck order) into blocks.
   std::vector<std::vector<std::size_t>> by_part(m.parts.size());

@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
 #include "solver/solids/hex_geometry.hpp"
 #include "solver/spg/particles.hpp"
@@ -65,7 +66,8 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
 
 }  // namespace
 
-void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostics& d) {
+void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
+                       core::Diagnostics& d) {
   Nodes& nd = s.nodes;
   nd.smoothed.assign(static_cast<std::size_t>(nd.count()), 0);
   // Nodes a particle shares with something else that moves them: FE solids, SPC, motions.
@@ -74,11 +76,9 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, core::Diagnostic
     if (nd.corner_offsets[static_cast<std::size_t>(n) + 1] >
         nd.corner_offsets[static_cast<std::size_t>(n)])
       shared[static_cast<std::size_t>(n)] = 1;
-  for (const Index n : s.constraints.nodes)
-    shared[static_cast<std::size_t>(n)] = 1;
-  for (const NodalMotion& motion : s.nodal_motions)
-    for (const Index n : motion.nodes)
-      shared[static_cast<std::size_t>(n)] = 1;
+  const std::vector<std::uint8_t> held = before.held_nodes(nd.count());
+  for (Index n = 0; n < nd.count(); ++n)
+    if (held[static_cast<std::size_t>(n)] != 0) shared[static_cast<std::size_t>(n)] = 1;
   std::vector<std::uint8_t> in_spg(static_cast<std::size_t>(nd.count()), 0);
 
   for (std::size_t p = 0; p < m.parts.size(); ++p) {

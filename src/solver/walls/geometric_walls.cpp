@@ -130,8 +130,8 @@ bool set_axes(const model::RigidWall& mw, GeometricWall& w, core::Diagnostics& d
 
 namespace detail {
 
-void compile_geometric_walls(const model::ModelDatabase& m, State& s, Blocks& own,
-                             core::Diagnostics& d) {
+void compile_geometric_walls(const model::ModelDatabase& m, State& s,
+                             const CompiledBlocks& /*before*/, Blocks& own, core::Diagnostics& d) {
   std::vector<GeometricWall> out;
   // Unnumbered walls are numbered after the planar ones, in deck order.
   const auto planar = std::count_if(m.rigid_walls.begin(), m.rigid_walls.end(), [](const auto& w) {

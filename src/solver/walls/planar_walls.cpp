@@ -110,8 +110,8 @@ const std::vector<walls::PlanarWall>& walls::planar_walls_of(const State& s) {
 
 namespace detail {
 
-void compile_planar_walls(const model::ModelDatabase& m, State& s, Blocks& own,
-                          core::Diagnostics& d) {
+void compile_planar_walls(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+                          Blocks& own, core::Diagnostics& d) {
   std::vector<PlanarWall> walls;
   for (const model::RigidWall& w : m.rigid_walls) {
     if (w.shape != model::WallShape::planar) continue;  // geometric walls: walls/

@@ -41,17 +41,14 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
   // The order the physics needs, as compile() ran it before the registry: elements, the rigid
   // bodies (whole before any condition reads them: the line that stops at errors), joints,
   // constraints, motions, then the SPG parts that these pin, their initial velocities, the
-  // walls that track their nodes, and contact, whose slave nodes they are; the sensors last,
+  // walls that track their nodes, the ties (which move their slave nodes onto the master
+  // surfaces) and contact, whose slave nodes they all are; the sensors last,
   // as they read the cycle's results and switch the blocks before them.
-  const char* const expected[] = {"solids",         "shells",
-                                  "beams",          "rigid bodies",
-                                  "joints",         "constraints",
-                                  "motions",        "spg",
-                                  "discrete",       "initial velocities",
-                                  "rigid walls",    "geometric walls",
-                                  "body loads",     "applied loads",
-                                  "global damping", "contact",
-                                  "ties",           "sensors"};
+  const char* const expected[] = {
+      "solids",      "shells",          "beams",      "rigid bodies",  "joints",
+      "constraints", "motions",         "spg",        "discrete",      "initial velocities",
+      "rigid walls", "geometric walls", "body loads", "applied loads", "global damping",
+      "ties",        "contact",         "sensors"};
   REQUIRE(order.size() == std::size(expected));
   for (std::size_t i = 0; i < order.size(); ++i)
     CHECK(order[i] == expected[i]);

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "solver/contact/ties.hpp"
 #include "solver/energy.hpp"
 #include "solver/history_records.hpp"
 #include "solver_support.hpp"
@@ -584,7 +585,7 @@ TEST_CASE("tied contact: two meshes that do not match move as one bar") {
     std::vector<double> lengths, times;
     solver::RunHooks hooks;
     hooks.progress = [&](const solver::State& s) {
-      for (const solver::Tie& t : s.ties) {
+      for (const solver::Tie& t : solver::contact::ties_of(s)) {
         Eigen::Vector3d on = Eigen::Vector3d::Zero();
         for (std::size_t k = 0; k < 4; ++k)
           on += t.weights[k] * s.nodes.position.col(t.masters[k]);
@@ -612,7 +613,7 @@ TEST_CASE("tied contact: two meshes that do not match move as one bar") {
   };
   TempDir dir;
   Simulation sim = prepare(dir, bar("*CONTACT_TIED_SURFACE_TO_SURFACE\n2,1,3,3\n"));
-  REQUIRE(sim.state->ties.size() == 16);  // part 2's bottom nodes
+  REQUIRE(solver::contact::ties_of(*sim.state).size() == 16);  // part 2's bottom nodes
   const Ring tied = ring(sim);
   const double period = tied.period, worst_gap = tied.worst_gap;
   const double worst_momentum = tied.worst_momentum;

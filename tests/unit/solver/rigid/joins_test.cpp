@@ -6,6 +6,7 @@
 
 #include "shell_decks.hpp"
 #include "solver/rigid/joint_state.hpp"
+#include "solver/rigid/welds.hpp"
 #include "solver_support.hpp"
 
 using namespace mcdyna;
@@ -296,17 +297,17 @@ LapJoint pulled_lap_joint(const std::string& weld, const std::string& direction,
                "*SET_NODE_LIST\n1\n2,3,4\n*BOUNDARY_SPC_SET\n1,0,1,1,1,1,1,1\n"
                "*SET_NODE_LIST\n2\n5,6,7,8\n*SET_NODE_LIST\n9\n1,5\n" +
                direction + "*DEFINE_CURVE\n1\n0,0\n1,10000\n" + weld + "*END\n");
-  REQUIRE(sim.state->welds.size() == 1);
+  REQUIRE(solver::welds_of(*sim.state).size() == 1);
   // Stopped 20 cycles after the weld lets go: then B's corner, pulled alone by the load on its
   // few grams, is no longer what the test is about.
   solver::RunHooks hooks;
   long cycles_since = 0;
   hooks.stop_requested = [&] {
-    return sim.state->welds[0].failed_at >= 0.0 && ++cycles_since > 20;
+    return solver::welds_of(*sim.state)[0].failed_at >= 0.0 && ++cycles_since > 20;
   };
   test::run(sim, hooks);
   REQUIRE((sim.result.reason == solver::StopReason::end_time || cycles_since > 20));
-  const solver::WeldState& w = sim.state->welds[0];
+  const solver::WeldState& w = solver::welds_of(*sim.state)[0];
   return {w.failed_at, sim.state->nodes.position(2, 4), w.normal, w.shear};  // node 5: index 4
 }
 
