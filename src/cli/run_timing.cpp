@@ -1,5 +1,7 @@
 #include "cli/run_timing.hpp"
 
+#include "solver/block.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 #include <omp.h>
@@ -37,7 +39,9 @@ void print_timing(std::ostream& summary, const solver::RunResult& result,
     const double sec = result.phases.seconds[static_cast<std::size_t>(p)];
     // SPG rows only for decks with SPG parts, the contact row only for decks with contact.
     if (p == solver::PhaseTimes::contact) {
-      if (state.contacts.empty()) continue;
+      if (std::none_of(state.blocks.begin(), state.blocks.end(),
+                       [](const auto& b) { return b->phase() == solver::PhaseTimes::contact; }))
+        continue;
     } else if (p == solver::PhaseTimes::exchange) {
       if (processes == 1) continue;
     } else if (p >= solver::PhaseTimes::spg_neighbours && state.spg.empty()) {

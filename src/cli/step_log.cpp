@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/contact/contact.hpp"
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
@@ -40,8 +41,8 @@ ParticleFacts facts(const solver::State& s, const solver::spg::Domain& d, solver
   f.nearest_now = std::isfinite(now) ? now : 0.0;
   f.nearest_initial = std::isfinite(initial) ? initial : 0.0;
   f.row_mass_factor = std::isfinite(factor) ? factor : 1.0;
-  for (const auto& c : s.contacts)
-    for (const auto& a : c.applied)
+  for (const solver::contact::Interface* c : solver::contact::interfaces_of(s))
+    for (const auto& a : c->applied)
       if (a.node == d.particles.nodes[jj]) f.in_contact = true;
   return f;
 }

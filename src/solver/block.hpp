@@ -78,6 +78,9 @@ class Block {
   /// prescribed motion). An SPG particle on a held node is pinned (compile_spg.cpp); a discrete
   /// element's massless node must be held in x, y and z (compile_discrete).
   virtual void mark_held(std::vector<std::uint8_t>& /*held*/) const {}
+  /// The slave nodes its contact passes visit every cycle, one entry per pass and node (the
+  /// decomposition's contact cost, parallel/decomposition.cpp).
+  virtual void add_contact_nodes(std::vector<Index>& /*nodes*/) const {}
   /// What it is for the user when it cannot run over several processes ("tied contacts
   /// (*CONTACT_TIED_...)"), or empty.
   [[nodiscard]] virtual std::string one_process_only() const { return {}; }

@@ -111,7 +111,7 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBl
 void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                   Blocks& own, core::Diagnostics& d);
 void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
-                      core::Diagnostics& d);
+                      Blocks& own, core::Diagnostics& d);
 void compile_sensors(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                      Blocks& own,
                      core::Diagnostics& d);  // sensors/sensor_block.cpp

@@ -36,7 +36,7 @@ const std::vector<Formulation>& formulations() {
       {"applied loads", nullptr, nullptr, {"rigid bodies", "shells"}, false, compile_applied_loads},
       {"global damping", nullptr, nullptr, {}, false, compile_global_damping},
       // Particles are slave nodes.
-      {"contact", compile_contacts, add_contact_blocks, {"spg", "rigid bodies", "ties"}},
+      {"contact", nullptr, nullptr, {"spg", "rigid bodies", "ties"}, false, compile_contacts},
       // After every force (the slaves' go to their masters); compiled before the contacts, which
       // see the tied nodes where the ties moved them.
       {"ties", nullptr, nullptr, {"spg", "rigid bodies"}, false, compile_ties},

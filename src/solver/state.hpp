@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "model/entities.hpp"
-#include "solver/contact/interface.hpp"
 #include "solver/curve.hpp"
 #include "solver/material/material.hpp"
 #include "solver/material/point_kinematics.hpp"
@@ -269,7 +268,6 @@ struct State {
   std::vector<RigidBody> rigid_bodies;
   DisplayCells rigid_cells;
   std::vector<LoadCurve> curves;
-  std::vector<contact::Interface> contacts;
   TimeControl time_control;
 
   double time = 0.0;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "solver/compile.hpp"
+#include "solver/contact/contact.hpp"
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
 #include "solver/spg/domain.hpp"
@@ -78,6 +79,11 @@ inline std::pair<std::filesystem::path, std::filesystem::path> run_through_and_r
 }
 
 /// Reads, checks and compiles a deck (REQUIREs no errors); run() then runs it.
+/// The state's contact interface `k` (deck order, ties left out), owned by its block.
+inline const solver::contact::Interface& contact_interface(const solver::State& s, std::size_t k) {
+  return *solver::contact::interfaces_of(s).at(k);
+}
+
 inline Simulation prepare(const TempDir& dir, const std::string& text) {
   Simulation sim;
   sim.loaded = load_file(dir.write("deck.k", text), true);

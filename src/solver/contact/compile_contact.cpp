@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "solver/block.hpp"
 #include "solver/compile.hpp"
 #include "solver/contact/contact.hpp"
 #include "solver/contact/contact_sides.hpp"
@@ -43,7 +44,7 @@ void report_initial_penetrations(State& s, Interface& in, const model::Contact& 
 // give, as a slave side has them), no passes.
 void compile_transducer(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
                         const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
-                        model::Id number, State& s) {
+                        model::Id number, State& s, std::vector<Interface>& out) {
   bool ok = true;
   auto nodes_of = [&](const model::ContactSide& side, const char* name) {
     return all_nodes(resolve_side(m, parts, face_owner, d, c, number, side, name, ok));
@@ -59,7 +60,7 @@ void compile_transducer(const model::ModelDatabase& m, const std::vector<PartSur
   in.birth = c.birth;
   in.death = c.death > 0.0 ? c.death : 1.0e20;
   in.sensor = std::move(sensor);
-  s.contacts.push_back(std::move(in));
+  out.push_back(std::move(in));
 }
 
 // What every interface's passes read of the model's surfaces: the parts' outer faces, each
@@ -265,7 +266,8 @@ void set_search_margin(Interface& in, const Side& a, const Side& b, bool two_way
 // A penalty contact (node on segment, one or both ways).
 void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurfaces& cs,
                              const model::ContactControl& control, const model::Contact& c,
-                             model::Id number, State& s, core::Diagnostics& d) {
+                             model::Id number, State& s, std::vector<Interface>& out,
+                             core::Diagnostics& d) {
   const ContactKind kind = contact_kind(c);
   bool ok = true;
   model::ContactSide side_a = c.a;
@@ -301,14 +303,15 @@ void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurface
   }
   set_search_margin(in, a, b, kind.two_way);
   report_initial_penetrations(s, in, c, ignore_option(c, control), d);
-  s.contacts.push_back(std::move(in));
+  out.push_back(std::move(in));
 }
 
 }  // namespace
 
 void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
-                      core::Diagnostics& d) {
+                      Blocks& own, core::Diagnostics& d) {
   if (m.contacts.empty()) return;
+  std::vector<Interface> interfaces;  // rcforc's order: the deck's, ties left out
   const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
   const ContactSurfaces cs = contact_surfaces(m, s, control);
   for (std::size_t order = 0; order < m.contacts.size(); ++order) {
@@ -316,10 +319,11 @@ void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlo
     // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.
     const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
     if (c.kind == model::ContactKind::force_transducer)
-      compile_transducer(m, cs.parts, cs.face_owner, d, c, number, s);
+      compile_transducer(m, cs.parts, cs.face_owner, d, c, number, s, interfaces);
     else if (c.kind != model::ContactKind::tied)  // the ties' own pass (compile_ties.cpp)
-      compile_penalty_contact(m, cs, control, c, number, s, d);
+      compile_penalty_contact(m, cs, control, c, number, s, interfaces, d);
   }
+  contact::add_interface_blocks(std::move(interfaces), own);
 }
 
 }  // namespace mcdyna::solver::detail

@@ -6,9 +6,25 @@
 /// per-node work runs in parallel, each slave node's hit on the process that owns it, and every
 /// node's forces are added in the order of one process (contact_block.cpp says how the processes
 /// share the work).
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "solver/contact/interface.hpp"
 #include "solver/state.hpp"
 
+namespace mcdyna::solver {
+class Block;  // block.hpp
+}  // namespace mcdyna::solver
+
 namespace mcdyna::solver::contact {
+
+/// The blocks of the deck's interfaces (`interfaces` in deck order, which rcforc keeps): the
+/// contacts in that order, then the force transducers, which read what the contacts applied.
+void add_interface_blocks(std::vector<Interface> interfaces,
+                          std::vector<std::unique_ptr<Block>>& blocks);
+/// The interfaces the blocks own, in deck order (the step log, tests).
+std::vector<const Interface*> interfaces_of(const State& s);
 
 /// Adds the interface's contact forces at t^n to `force` (positions at t^n, velocities at
 /// t^{n-1/2}) and updates its resultants and energy.
@@ -18,9 +34,10 @@ void interface_pass(State& s, Interface& c, bool sort, Eigen::Matrix3Xd& force,
                     double& exchange_seconds);
 
 /// A force transducer (*CONTACT_FORCE_TRANSDUCER_PENALTY): its resultants from the forces the
-/// other interfaces applied this cycle (their `applied` lists), applying none itself. Run after
-/// every other interface's pass.
-void transducer_pass(State& s, Interface& t, double& exchange_seconds);
+/// `contacts` applied this cycle (their `computed` lists), applying none itself. Run after every
+/// contact's pass.
+void transducer_pass(State& s, Interface& t, std::span<const Interface* const> contacts,
+                     double& exchange_seconds);
 
 /// Whether the interface's candidate lists must be rebuilt this cycle: NSBCS cycles since the
 /// last sort, or a node has moved more than half the search margin. Over several processes

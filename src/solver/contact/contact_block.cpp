@@ -27,54 +27,58 @@ void unpack_motion(State& s, Index n, const double* in) {
   std::copy_n(in + 3, 3, s.nodes.velocity.col(n).data());
 }
 
-// An interface's block: its dump section holds the interface (contact::Interface), named by its
-// place among the deck's contacts.
+// An interface's block: it owns the interface (contact::Interface), its dump section, named by
+// its place among the deck's contacts (`order_`, as rcforc lists them).
 template <class Derived>
 class InterfaceBlock : public DumpedBlock<Derived> {
  public:
-  explicit InterfaceBlock(std::size_t interface) : interface_(interface) {}
+  InterfaceBlock(contact::Interface interface, std::size_t order)
+      : interface_(std::move(interface)), order_(order) {}
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::contact; }
+  [[nodiscard]] const contact::Interface& interface() const { return interface_; }
+  [[nodiscard]] std::size_t order() const { return order_; }
   [[nodiscard]] std::string dump_name() const override {
-    return fmt::format("contact interface {}", interface_ + 1);
+    return fmt::format("contact interface {}", order_ + 1);
   }
   [[nodiscard]] std::string dump_layout() const override {
     return sizes_text(contact::kInterfaceDumpedSizes);
   }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.contacts[interface_]);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(interface_);
   }
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    e.sliding += s.contacts[interface_].energy;
+    e.sliding += interface_.energy;
   }
   // A contact's force is side A's (rcforc's slave line).
-  bool sensed_force(const State& s, model::SensedEntity kind, model::Id id,
+  bool sensed_force(const State& /*s*/, model::SensedEntity kind, model::Id id,
                     Vec3& force) const override {
     return sensors::sensed_force_in(
-        std::span(&s.contacts[interface_], 1), model::SensedEntity::contact, kind, id,
+        std::span(&interface_, 1), model::SensedEntity::contact, kind, id,
         [](const contact::Interface& c) { return c.force_a; }, force);
   }
-  bool switch_entity(State& s, model::SensedEntity kind, model::Id id, bool on) override {
-    return sensors::switch_in(std::span(&s.contacts[interface_], 1), model::SensedEntity::contact,
-                              kind, id, on);
+  bool switch_entity(State& /*s*/, model::SensedEntity kind, model::Id id, bool on) override {
+    return sensors::switch_in(std::span(&interface_, 1), model::SensedEntity::contact, kind, id,
+                              on);
   }
   // rcforc: side A is the slave line, side B the master line.
-  void add_history_records(const State& s, HistoryRecords& out) const override {
-    const contact::Interface& c = s.contacts[interface_];
-    out.contacts.push_back({c.id, c.heading, interface_, c.force_a, c.moment_a, c.force_b,
-                            c.moment_b, c.mass_in_contact});
+  void add_history_records(const State& /*s*/, HistoryRecords& out) const override {
+    const contact::Interface& c = interface_;
+    out.contacts.push_back(
+        {c.id, c.heading, order_, c.force_a, c.moment_a, c.force_b, c.moment_b, c.mass_in_contact});
   }
 
  protected:
-  std::size_t interface_;
+  contact::Interface interface_;
+  std::size_t order_;
 };
 
 class ContactBlock final : public InterfaceBlock<ContactBlock> {
  public:
   using InterfaceBlock::InterfaceBlock;
   void forces(State& s, NodalForces& f, ForceReport& /*report*/) override {
-    contact::Interface& c = s.contacts[interface_];
+    contact::Interface& c = interface_;
     if (s.ownership.comm.size() == 1) {
       contact::interface_pass(s, c, contact::sort_due(s, c), f.force, exchange_seconds_);
       return;
@@ -95,6 +99,10 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
   void split_times(const State& /*s*/, PhaseTimes& phases) const override {
     phases.seconds[PhaseTimes::exchange] += exchange_seconds_;
     phases.seconds[PhaseTimes::contact] -= exchange_seconds_;
+  }
+  void add_contact_nodes(std::vector<Index>& nodes) const override {
+    for (const contact::Pass& p : interface_.passes)
+      nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
   }
 
  private:
@@ -126,7 +134,7 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
   // The deformable segment nodes the candidates of this process's slave nodes hold that
   // another process owns. Collective.
   void plan_segment_ghosts(const State& s) {
-    const contact::Interface& c = s.contacts[interface_];
+    const contact::Interface& c = interface_;
     std::vector<std::uint8_t> ghost(static_cast<std::size_t>(s.nodes.count()), 0);
     for (const contact::Pass& p : c.passes)
       for (const Index k : p.near) {
@@ -143,7 +151,7 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
   // The interface's deformable segment nodes, ascending; the slave nodes' state handed to their
   // new owners when the owners changed; the ghosts planned again. Collective.
   void follow_owners(State& s) {
-    contact::Interface& c = s.contacts[interface_];
+    contact::Interface& c = interface_;
     if (generation_ >= 0) hand_over(s, c);
     std::vector<std::uint8_t> in(static_cast<std::size_t>(s.nodes.count()), 0);
     for (const contact::Pass& p : c.passes)
@@ -265,8 +273,15 @@ class ContactBlock final : public InterfaceBlock<ContactBlock> {
 class TransducerBlock final : public InterfaceBlock<TransducerBlock> {
  public:
   using InterfaceBlock::InterfaceBlock;
+  // The interfaces it reads: every contact block's, in the deck's order.
+  void link(State& /*s*/, const Blocks& all, core::Diagnostics& /*d*/) override {
+    contacts_.clear();
+    for (const std::unique_ptr<Block>& b : all)
+      if (const auto* c = dynamic_cast<const ContactBlock*>(b.get()))
+        contacts_.push_back(&c->interface());
+  }
   void forces(State& s, NodalForces& /*f*/, ForceReport& /*report*/) override {
-    contact::transducer_pass(s, s.contacts[interface_], exchange_seconds_);
+    contact::transducer_pass(s, interface_, contacts_, exchange_seconds_);
   }
   void split_times(const State& /*s*/, PhaseTimes& phases) const override {
     phases.seconds[PhaseTimes::exchange] += exchange_seconds_;
@@ -274,17 +289,39 @@ class TransducerBlock final : public InterfaceBlock<TransducerBlock> {
   }
 
  private:
+  std::vector<const contact::Interface*> contacts_;
   double exchange_seconds_ = 0.0;
 };
 
 }  // namespace
 
-void add_contact_blocks(State& s, Blocks& blocks) {
-  for (std::size_t k = 0; k < s.contacts.size(); ++k)
-    if (!s.contacts[k].sensor.active) blocks.push_back(std::make_unique<ContactBlock>(k));
+namespace contact {
+
+void add_interface_blocks(std::vector<Interface> interfaces, Blocks& blocks) {
+  for (std::size_t k = 0; k < interfaces.size(); ++k)
+    if (!interfaces[k].sensor.active)
+      blocks.push_back(std::make_unique<ContactBlock>(std::move(interfaces[k]), k));
   // After every contact, whatever the deck order.
-  for (std::size_t k = 0; k < s.contacts.size(); ++k)
-    if (s.contacts[k].sensor.active) blocks.push_back(std::make_unique<TransducerBlock>(k));
+  for (std::size_t k = 0; k < interfaces.size(); ++k)
+    if (interfaces[k].sensor.active)
+      blocks.push_back(std::make_unique<TransducerBlock>(std::move(interfaces[k]), k));
 }
+
+std::vector<const Interface*> interfaces_of(const State& s) {
+  std::vector<std::pair<std::size_t, const Interface*>> found;
+  for (const std::unique_ptr<Block>& b : s.blocks) {
+    if (const auto* c = dynamic_cast<const ContactBlock*>(b.get()))
+      found.emplace_back(c->order(), &c->interface());
+    else if (const auto* t = dynamic_cast<const TransducerBlock*>(b.get()))
+      found.emplace_back(t->order(), &t->interface());
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<const Interface*> out;
+  for (const auto& [order, in] : found)
+    out.push_back(in);
+  return out;
+}
+
+}  // namespace contact
 
 }  // namespace mcdyna::solver

@@ -412,7 +412,8 @@ void interface_pass(State& s, Interface& c, bool sort, Eigen::Matrix3Xd& force,
   sums.store(c, s.ownership.comm, exchange_seconds);
 }
 
-void transducer_pass(State& s, Interface& t, double& exchange_seconds) {
+void transducer_pass(State& s, Interface& t, std::span<const Interface* const> contacts,
+                     double& exchange_seconds) {
   // Each process sums the hits it computed (Interface::computed: whole hits, their nodes'
   // positions current here) and the processes' partial sums merge exactly; a node touched by
   // hits of several processes counts its mass once, on its owner.
@@ -430,9 +431,8 @@ void transducer_pass(State& s, Interface& t, double& exchange_seconds) {
     sums.add(side, a.force, s.nodes.position.col(a.node).cross(a.force));
   };
   std::vector<Index> touched;  // side A nodes that took a force, for the mass in contact
-  for (const Interface& c : s.contacts) {
-    if (c.sensor.active) continue;
-    const std::vector<AppliedForce>& f = c.computed;
+  for (const Interface* c : contacts) {
+    const std::vector<AppliedForce>& f = c->computed;
     for (std::size_t begin = 0; begin < f.size();) {
       // One hit: f[begin] is the slave node's force, the rest its segment's nodes'.
       std::size_t end = begin + 1;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/contact/interface.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

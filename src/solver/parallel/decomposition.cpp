@@ -5,6 +5,8 @@
 #include <numeric>
 #include <utility>
 
+#include "solver/block.hpp"
+
 namespace mcdyna::solver::parallel {
 
 namespace {
@@ -70,6 +72,14 @@ void bisect_nodes(const State& s, const std::vector<std::uint8_t>& take,
     d.owner[static_cast<std::size_t>(nodes[k])] = cell[k];
 }
 
+// The slave nodes the contact blocks visit each cycle, one entry per pass and node.
+std::vector<Index> contact_nodes(const State& s) {
+  std::vector<Index> nodes;
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    b->add_contact_nodes(nodes);
+  return nodes;
+}
+
 }  // namespace
 
 std::vector<int> bisect(const Eigen::Matrix3Xd& points, const std::vector<double>& weights,
@@ -99,10 +109,9 @@ Decomposition decompose(const State& s, int ranks, const EntityCosts& costs) {
       solid[static_cast<std::size_t>(node)] = 1;
       weight[static_cast<std::size_t>(node)] += costs.hexahedron / 8.0;
     }
-  for (const contact::Interface& c : s.contacts)
-    for (const contact::Pass& p : c.passes)
-      for (const Index node : p.nodes)
-        weight[static_cast<std::size_t>(node)] += costs.contact_node;
+  const std::vector<Index> searched = contact_nodes(s);
+  for (const Index node : searched)
+    weight[static_cast<std::size_t>(node)] += costs.contact_node;
   for (std::size_t k = 0; k < n; ++k) {
     if (particle[k]) solid[k] = 0;  // a particle's node goes with the particles
     if (particle[k] || solid[k]) other[k] = 0;
@@ -164,11 +173,9 @@ std::vector<RankLoad> rank_loads(const State& s, const Decomposition& d, const E
       }
     }
   }
-  for (const contact::Interface& c : s.contacts)
-    for (const contact::Pass& p : c.passes)
-      for (const Index node : p.nodes)
-        load[static_cast<std::size_t>(d.owner[static_cast<std::size_t>(node)])].cost +=
-            costs.contact_node;
+  for (const Index node : contact_nodes(s))
+    load[static_cast<std::size_t>(d.owner[static_cast<std::size_t>(node)])].cost +=
+        costs.contact_node;
   std::sort(read.begin(), read.end());
   read.erase(std::unique(read.begin(), read.end()), read.end());
   std::vector<std::pair<int, int>> peers;  // (rank, rank owning a node it reads)

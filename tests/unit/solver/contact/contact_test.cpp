@@ -69,12 +69,12 @@ TEST_CASE("contact: an elastic bar dropped on a rigid shell plate rebounds, impu
   const double end = 2e-6 + 1.5 * contact_time;
   Simulation sim = prepare(dir, header(end) + kBar + rigid_plate(-10, -10, 12, 12) +
                                     "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n");
-  REQUIRE(sim.state->contacts.size() == 1);
+  REQUIRE(solver::contact::interfaces_of(*sim.state).size() == 1);
   const double mass = 80.0 * 7.85e-9;
   double impulse = 0.0, lowest = 0.0, first = -1.0, last = -1.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    const solver::contact::Interface& in = s.contacts[0];
+    const solver::contact::Interface& in = contact_interface(s, 0);
     // The force found at t^n acts over the mean step around t^n; the next step is the one the
     // solver will take, its size not known here, and it equals this one in this run.
     impulse += in.force_a.z() * s.step;
@@ -87,7 +87,7 @@ TEST_CASE("contact: an elastic bar dropped on a rigid shell plate rebounds, impu
   run(sim, hooks);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
   const Motion after = motion(*sim.state, 0, kBarNodes);
-  const solver::contact::Interface& in = sim.state->contacts[0];
+  const solver::contact::Interface& in = contact_interface(*sim.state, 0);
   MESSAGE("rebound ", after.velocity.z(), " mm/s, impulse ", impulse, " (m dv ",
           mass * (after.velocity.z() + kSpeed), "), contact ", last - first, " s (2L/c ",
           contact_time, "), lowest z ", lowest, ", interface energy ", in.energy);
@@ -122,7 +122,7 @@ TEST_CASE("contact: a node stays on the side of a thin two-sided shell it came f
   const double end = 2e-6 + 1.5 * 2.0 * 20.0 / std::sqrt(210000.0 / 7.85e-9);
   Simulation sim = prepare(dir, header(end) + kBar + plate +
                                     "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n");
-  CHECK(sim.state->contacts[0].passes[0].surface.half_thickness[0] == 0.002);
+  CHECK(contact_interface(*sim.state, 0).passes[0].surface.half_thickness[0] == 0.002);
   double lowest = 0.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
@@ -218,15 +218,15 @@ TEST_CASE("contact: surface to surface runs both ways and keeps the total moment
                            "*INITIAL_VELOCITY_GENERATION\n2,1,0,0,0,-10000\n0,0,0\n"
                            "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n0,0\n\n*END\n";
   Simulation sim = prepare(dir, deck);
-  REQUIRE(sim.state->contacts.size() == 1);
-  CHECK(sim.state->contacts[0].passes.size() == 2);
+  REQUIRE(solver::contact::interfaces_of(*sim.state).size() == 1);
+  CHECK(contact_interface(*sim.state, 0).passes.size() == 2);
   double largest = 0.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    largest = std::max(largest, std::abs(s.contacts[0].force_a.z()));
+    largest = std::max(largest, std::abs(contact_interface(s, 0).force_a.z()));
     // Equal and opposite: the forces on the two sides balance to round-off.
-    CHECK((s.contacts[0].force_a + s.contacts[0].force_b).norm() <=
-          1e-12 * std::max(1.0, s.contacts[0].force_a.norm()));
+    CHECK((contact_interface(s, 0).force_a + contact_interface(s, 0).force_b).norm() <=
+          1e-12 * std::max(1.0, contact_interface(s, 0).force_a.norm()));
   };
   run(sim, hooks);
   const Motion low = motion(*sim.state, 0, 27), high = motion(*sim.state, 27, 54);
@@ -252,11 +252,12 @@ TEST_CASE("contact: MC-SPG particles as slave nodes bounce off a rigid plate") {
   Simulation sim = prepare(dir, deck);
   REQUIRE(sim.state->spg.size() == 1);
   const solver::Index particles = 9 * 9 * 9;
-  CHECK(sim.state->contacts[0].passes[0].nodes.size() == static_cast<std::size_t>(particles));
+  CHECK(contact_interface(*sim.state, 0).passes[0].nodes.size() ==
+        static_cast<std::size_t>(particles));
   double impulse = 0.0, lowest = 0.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    impulse += s.contacts[0].force_a.z() * s.step;
+    impulse += contact_interface(s, 0).force_a.z() * s.step;
     for (solver::Index n = 0; n < particles; ++n)
       lowest = std::min(lowest, s.nodes.position(2, n));
   };
@@ -293,7 +294,7 @@ double largest_contact_force(Simulation& sim) {
   double largest = 0.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    largest = std::max(largest, s.contacts[0].force_a.norm());
+    largest = std::max(largest, contact_interface(s, 0).force_a.norm());
   };
   run(sim, hooks);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
@@ -319,7 +320,7 @@ TEST_CASE("contact: every node of a node-set side has a penalty, interior FE nod
   deck = with(deck, "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n",
               nodes + "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n5,9,4,3\n");
   Simulation sim = prepare(dir, deck);
-  const solver::contact::Pass& p = sim.state->contacts.at(0).passes.at(0);
+  const solver::contact::Pass& p = contact_interface(*sim.state, 0).passes.at(0);
   REQUIRE(p.nodes.size() == 27);
   for (const double k : p.stiffness)
     CHECK(k > 0.0);
@@ -339,11 +340,11 @@ TEST_CASE("contact: a part as nodes-to-surface slave gives all its nodes, interi
       box_mesh(3, 3, 3, 1.0, 1, 1, 1, 0.1) + rigid_plate(-10, -10, 12, 12) +
       "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
   Simulation n2s = prepare(dir, deck);
-  CHECK(n2s.state->contacts.at(0).passes.at(0).nodes.size() == 64);
+  CHECK(contact_interface(*n2s.state, 0).passes.at(0).nodes.size() == 64);
   // Surface to surface works on the free faces: 56 surface nodes.
   Simulation s2s = prepare(dir, with(deck, "*CONTACT_AUTOMATIC_NODES_TO_SURFACE",
                                      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE"));
-  CHECK(s2s.state->contacts.at(0).passes.at(0).nodes.size() == 56);
+  CHECK(contact_interface(*s2s.state, 0).passes.at(0).nodes.size() == 56);
 }
 
 TEST_CASE("contact: initial penetrations are reported, moved out (IGNORE 0) or tracked (1)") {
@@ -403,11 +404,12 @@ TEST_CASE("contact: a force transducer reports the other contacts' forces and ap
   // Transducer 1 on the middle cube alone; transducer 2 between the middle and the top cube.
   Simulation sim = prepare(dir, cube_column("*CONTACT_FORCE_TRANSDUCER_PENALTY\n2,0,3\n\n\n"
                                             "*CONTACT_FORCE_TRANSDUCER_PENALTY\n2,3,3,3\n\n\n"));
-  const std::vector<solver::contact::Interface>& c = sim.state->contacts;
+  const std::vector<const solver::contact::Interface*> c =
+      solver::contact::interfaces_of(*sim.state);
   REQUIRE(c.size() == 4);
-  CHECK(c[0].id == 1);  // numbered in deck order, as rcforc lists them
-  CHECK(c[3].id == 4);
-  CHECK(c[0].passes.empty());
+  CHECK(c[0]->id == 1);  // numbered in deck order, as rcforc lists them
+  CHECK(c[3]->id == 4);
+  CHECK(c[0]->passes.empty());
   // rcforc's lines come in the deck's order though the transducers' blocks run after the
   // contacts' (history_records.hpp).
   std::vector<model::Id> listed;
@@ -418,10 +420,10 @@ TEST_CASE("contact: a force transducer reports the other contacts' forces and ap
   long cycles_checked = 0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    const auto& all = s.contacts[0];
-    const auto& pair = s.contacts[1];
-    const auto& low = s.contacts[2];
-    const auto& high = s.contacts[3];
+    const auto& all = contact_interface(s, 0);
+    const auto& pair = contact_interface(s, 1);
+    const auto& low = contact_interface(s, 2);
+    const auto& high = contact_interface(s, 3);
     peak_low = std::max(peak_low, low.force_b.norm());
     peak_high = std::max(peak_high, high.force_a.norm());
     // On the middle cube: what contact 3 puts on its B side and contact 4 on its A side.
@@ -468,13 +470,13 @@ TEST_CASE("contact SOFT 2: the bar on the rigid plate, its stiffness from masses
   Simulation sim = prepare(dir, header(end) + kBar + rigid_plate(-10, -10, 12, 12) +
                                     "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,9,3,3\n0,0\n\n"
                                     "2\n*END\n");
-  REQUIRE(sim.state->contacts.size() == 1);
-  CHECK(sim.state->contacts[0].segment_based);
+  REQUIRE(solver::contact::interfaces_of(*sim.state).size() == 1);
+  CHECK(contact_interface(*sim.state, 0).segment_based);
   const double mass = 80.0 * 7.85e-9;
   double impulse = 0.0, lowest = 0.0, step = 0.0;
   solver::RunHooks hooks;
   hooks.progress = [&](const solver::State& s) {
-    impulse += s.contacts[0].force_a.z() * s.step;
+    impulse += contact_interface(s, 0).force_a.z() * s.step;
     lowest = std::min(lowest, motion(s, 0, kBarNodes).lowest);
     step = s.step;
   };
@@ -484,7 +486,7 @@ TEST_CASE("contact SOFT 2: the bar on the rigid plate, its stiffness from masses
   const double pressed = 2.0 * c * kSpeed * step * step / (0.05 * 1.0);
   MESSAGE("SOFT 2: rebound ", after.velocity.z(), " mm/s, impulse ", impulse, " (m dv ",
           mass * (after.velocity.z() + kSpeed), "), deepest ", -lowest, " mm against ", pressed,
-          " mm pressed, interface energy ", sim.state->contacts[0].energy);
+          " mm pressed, interface energy ", contact_interface(*sim.state, 0).energy);
   CHECK(impulse == doctest::Approx(mass * (after.velocity.z() + kSpeed)).epsilon(1e-3).scale(0.0));
   CHECK(after.velocity.z() > 0.9 * kSpeed);
   CHECK(after.velocity.z() < kSpeed);
@@ -501,8 +503,8 @@ TEST_CASE("contact SOFT 2: both ways, initial penetrations kept as the baseline"
   std::string deck = sunk_block("");
   deck.replace(deck.find("0,0\n\n*END"), 10, "0,0\n\n2\n*END");
   Simulation sim = prepare(dir, deck);
-  REQUIRE(sim.state->contacts.size() == 1);
-  CHECK(sim.state->contacts[0].passes.size() == 2);
+  REQUIRE(solver::contact::interfaces_of(*sim.state).size() == 1);
+  CHECK(contact_interface(*sim.state, 0).passes.size() == 2);
   CHECK(lowest_z(*sim.state) == doctest::Approx(-0.02).scale(1.0).epsilon(1e-12));
   CHECK(largest_contact_force(sim) == 0.0);
   CHECK(std::abs(motion(*sim.state, 0, 27).velocity.z()) < 1e-9);
