@@ -11,52 +11,6 @@ namespace mcdyna::cli {
 
 namespace {
 
-const char* material_name(model::MaterialKind k) {
-  switch (k) {
-    case model::MaterialKind::elastic:
-      return "ELASTIC";
-    case model::MaterialKind::plastic_kinematic:
-      return "PLASTIC_KINEMATIC";
-    case model::MaterialKind::johnson_cook:
-      return "JOHNSON_COOK";
-    case model::MaterialKind::rigid:
-      return "RIGID";
-    case model::MaterialKind::piecewise_linear:
-      return "PIECEWISE_LINEAR_PLASTICITY";
-    case model::MaterialKind::null_material:
-      return "NULL";
-    case model::MaterialKind::spotweld:
-      return "SPOTWELD";
-    case model::MaterialKind::spring_elastic:
-      return "SPRING_ELASTIC";
-    case model::MaterialKind::damper_viscous:
-      return "DAMPER_VISCOUS";
-    case model::MaterialKind::spring_nonlinear_elastic:
-      return "SPRING_NONLINEAR_ELASTIC";
-  }
-  return "?";
-}
-
-const char* contact_name(model::ContactKind k) {
-  switch (k) {
-    case model::ContactKind::automatic_nodes_to_surface:
-      return "AUTOMATIC_NODES_TO_SURFACE";
-    case model::ContactKind::automatic_surface_to_surface:
-      return "AUTOMATIC_SURFACE_TO_SURFACE";
-    case model::ContactKind::automatic_single_surface:
-      return "AUTOMATIC_SINGLE_SURFACE";
-    case model::ContactKind::nodes_to_surface:
-      return "NODES_TO_SURFACE";
-    case model::ContactKind::surface_to_surface:
-      return "SURFACE_TO_SURFACE";
-    case model::ContactKind::force_transducer:
-      return "FORCE_TRANSDUCER_PENALTY";
-    case model::ContactKind::tied:
-      return "TIED";
-  }
-  return "?";
-}
-
 const char* side_type_name(int t) {
   switch (t) {
     case 0:
@@ -161,7 +115,7 @@ void print_parts(std::ostream& out, const model::ModelDatabase& m, const ModelCo
     for (std::size_t i = 0; i < m.parts.size(); ++i) {
       const model::Part& p = m.parts[i];
       const model::Material* mat = m.material(p.material);
-      const std::string mat_label = mat ? fmt::format("{} {}", p.material, material_name(mat->kind))
+      const std::string mat_label = mat ? fmt::format("{} {}", p.material, mat->keyword)
                                         : fmt::format("{} (undefined)", p.material);
       fmt::print(out, "  {:>8} {:>10}  {:<26} {:<36} {:<10} {}\n", p.id,
                  i < counts.elements_per_part.size() ? counts.elements_per_part[i] : 0,
@@ -172,7 +126,7 @@ void print_parts(std::ostream& out, const model::ModelDatabase& m, const ModelCo
   fmt::print(out, "\nMaterials        {}", m.materials.size());
   std::map<std::string, int> by_kind;
   for (const auto& mat : m.materials)
-    ++by_kind[material_name(mat.kind)];
+    ++by_kind[mat.keyword];
   for (const auto& [k, n] : by_kind)
     fmt::print(out, "  {} x{}", k, n);
   fmt::print(out, "\nEOS              {}   hourglass sets {}   erosion criteria {}\n",
@@ -186,11 +140,11 @@ void print_contacts(std::ostream& out, const model::ModelDatabase& m) {
       const std::string b = c.b.id == 0 && c.b.type != 5
                                 ? std::string("- (every other contact)")
                                 : fmt::format("{} {}", side_type_name(c.b.type), c.b.id);
-      fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {}\n", c.id, contact_name(c.kind),
-                 side_type_name(c.a.type), c.a.id, b);
+      fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {}\n", c.id, c.keyword, side_type_name(c.a.type),
+                 c.a.id, b);
       continue;
     }
-    fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {} {}  FS {} FD {}\n", c.id, contact_name(c.kind),
+    fmt::print(out, "  {:>4} {:<30} A: {} {}  B: {} {}  FS {} FD {}\n", c.id, c.keyword,
                side_type_name(c.a.type), c.a.id, side_type_name(c.b.type), c.b.id,
                c.static_friction, c.dynamic_friction);
   }

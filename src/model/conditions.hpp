@@ -31,6 +31,9 @@ struct Contact {
   Id id = 0;  ///< from the _ID card; 0 = numbered in deck order
   std::string heading;
   ContactKind kind = ContactKind::automatic_nodes_to_surface;
+  /// The keyword's canonical name after "CONTACT_" ("TIED_NODES_TO_SURFACE"), as the reports
+  /// name the contact.
+  std::string keyword;
   ContactSide a, b;                                                   ///< A = slave, B = master
   double static_friction = 0.0, dynamic_friction = 0.0, decay = 0.0;  ///< FS, FD, DC
   double viscous_friction = 0.0, viscous_damping = 0.0;               ///< VC, VDC (% of critical)

@@ -243,6 +243,9 @@ struct Material {
   Id id = 0;
   std::string title;
   MaterialKind kind = MaterialKind::elastic;
+  /// The keyword's canonical name after "MAT_" ("PIECEWISE_LINEAR_PLASTICITY" for *MAT_024 too),
+  /// as the reports name the material.
+  std::string keyword;
   double density = 0.0;
   ElasticMaterial elastic;
   PlasticKinematicMaterial plastic_kinematic;

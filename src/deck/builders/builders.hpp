@@ -113,6 +113,9 @@ void database_extent_binary(KeywordRecord& r, model::ModelDatabase& m);
 
 /// Title text of the _TITLE card if present, else "".
 std::string title_of(const KeywordRecord& r);
+/// The keyword's canonical name after `prefix` ("MAT_024" and "MAT_PIECEWISE_LINEAR_PLASTICITY"
+/// both give "PIECEWISE_LINEAR_PLASTICITY" after "MAT_"): how the reports name what it made.
+std::string keyword_after(const KeywordRecord& r, std::string_view prefix);
 /// Stores a single-instance control, warning if the deck already gave one.
 template <typename T>
 void set_once(std::optional<T>& slot, T value, const KeywordRecord& r) {

@@ -29,6 +29,7 @@ void contact(KeywordRecord& r, model::ModelDatabase& m) {
   const Row& cc = r.card("C");
   model::Contact c;
   c.kind = kind_of(r.schema().name);
+  c.keyword = keyword_after(r, "CONTACT_");
   c.id = id.integer("CID");
   c.heading = std::string(id.text("HEADING"));
   c.a = {c1.integer("SURFA"), static_cast<int>(c1.integer("SURFATYP")), c1.integer("SABOXID")};

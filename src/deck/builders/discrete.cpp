@@ -43,6 +43,7 @@ void mat_spring(KeywordRecord& r, model::ModelDatabase& m) {
   model::Material mat;
   mat.id = c1.integer("MID");
   mat.title = title_of(r);
+  mat.keyword = keyword_after(r, "MAT_");
   mat.loc = c1.loc();
   const std::string_view name = r.schema().name;
   if (name == "MAT_SPRING_ELASTIC") {

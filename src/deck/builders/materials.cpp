@@ -12,6 +12,7 @@ model::Material start(const KeywordRecord& r, const Row& c1, model::MaterialKind
   mat.id = c1.integer("MID");
   mat.title = title_of(r);
   mat.kind = kind;
+  mat.keyword = keyword_after(r, "MAT_");
   mat.density = c1.real("RO");
   mat.loc = c1.loc();
   return mat;

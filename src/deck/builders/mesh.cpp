@@ -9,6 +9,11 @@ std::string title_of(const KeywordRecord& r) {
   return std::string(r.card("title").text("TITLE"));
 }
 
+std::string keyword_after(const KeywordRecord& r, std::string_view prefix) {
+  const std::string& name = r.schema().name;
+  return name.starts_with(prefix) ? name.substr(prefix.size()) : name;
+}
+
 void title(KeywordRecord& r, model::ModelDatabase& m) {
   m.title = std::string(r.card("title").text("TITLE"));
 }
