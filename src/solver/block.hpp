@@ -187,6 +187,16 @@ const B* find_block(const State& s) {
   return nullptr;
 }
 
+/// What the state's block of type B owns, through its accessor `get` (`&TieBlock::ties`), or
+/// an empty T when the state holds no such block: the accessors for tests and reports
+/// (planar_walls_of, joint_stiffnesses_of, ties_of, welds_of).
+template <class B, class T>
+const T& owned_by(const State& s, const T& (B::*get)() const) {
+  static const T kNone{};
+  const B* b = find_block<B>(s);
+  return b != nullptr ? (b->*get)() : kNone;
+}
+
 /// The blocks the compile passes made so far, line by line (formulations.hpp): what a pass reads
 /// of the formulations compiled before it (an SPG part's pinned particles, the nodes a discrete
 /// element may leave without mass) is what their blocks give.

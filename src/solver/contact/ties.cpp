@@ -177,9 +177,7 @@ std::unique_ptr<Block> make_tie_block(std::vector<Tie> ties) {
 }
 
 const std::vector<Tie>& ties_of(const State& s) {
-  static const std::vector<Tie> kNone;
-  const TieBlock* b = find_block<TieBlock>(s);
-  return b != nullptr ? b->ties() : kNone;
+  return owned_by(s, &TieBlock::ties);
 }
 
 }  // namespace contact

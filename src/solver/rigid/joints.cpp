@@ -189,9 +189,7 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
 }  // namespace
 
 const std::vector<JointStiffnessState>& joint_stiffnesses_of(const State& s) {
-  static const std::vector<JointStiffnessState> kNone;
-  const JointsBlock* b = find_block<JointsBlock>(s);
-  return b ? b->stiffnesses() : kNone;
+  return owned_by(s, &JointsBlock::stiffnesses);
 }
 
 std::unique_ptr<Block> make_joints_block(std::vector<JointState> joints,

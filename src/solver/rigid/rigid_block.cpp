@@ -101,9 +101,7 @@ std::unique_ptr<Block> make_rigid_bodies_block(std::vector<WeldState> welds) {
 }
 
 const std::vector<WeldState>& welds_of(const State& s) {
-  static const std::vector<WeldState> kNone;
-  const RigidBodiesBlock* b = find_block<RigidBodiesBlock>(s);
-  return b != nullptr ? b->welds() : kNone;
+  return owned_by(s, &RigidBodiesBlock::welds);
 }
 
 }  // namespace mcdyna::solver

@@ -103,9 +103,7 @@ class PlanarWallsBlock final : public walls::WallsBlock<PlanarWall, PlanarWallsB
 }  // namespace
 
 const std::vector<walls::PlanarWall>& walls::planar_walls_of(const State& s) {
-  static const std::vector<PlanarWall> kNone;
-  const PlanarWallsBlock* b = find_block<PlanarWallsBlock>(s);
-  return b ? b->walls() : kNone;
+  return owned_by(s, &PlanarWallsBlock::walls);
 }
 
 namespace detail {
