@@ -1,6 +1,7 @@
 // The velocity-level conditions (SPC and *NODE TC, prescribed nodal motion) and the
 // body loads as blocks of the time loop (loads.hpp).
 #include <algorithm>
+#include <utility>
 
 #include "solver/block.hpp"
 #include "solver/loads/loads.hpp"
@@ -76,14 +77,11 @@ void held_records(const State& s, const std::vector<NodalMotion>& v, HistoryReco
            m.node_force.col(static_cast<Index>(k)), Vec3::Zero(), m.node_work[k]});
 }
 
-// Over several processes a node's owner applies its condition (a node every process moves, on
-// process 0 too): what the histories print of it goes to process 0.
-int output_owner(const parallel::Ownership& own, Index n) {
-  return own.replicated_node(n) ? 0 : own.owner[static_cast<std::size_t>(n)];
-}
+// Over several processes a node's owner applies its condition: what the histories print of it
+// goes to process 0.
 void gather_records(const parallel::Ownership& own, NodalConstraints& c) {
   parallel::gather_owned(
-      own.comm, c.nodes.size(), [&](std::size_t k) { return output_owner(own, c.nodes[k]); },
+      own.comm, c.nodes.size(), [&](std::size_t k) { return own.output_owner(c.nodes[k]); },
       [&](std::size_t k, std::vector<double>& out) {
         const auto r = c.reaction.col(static_cast<Index>(k));
         out.insert(out.end(), r.data(), r.data() + 3);
@@ -94,21 +92,28 @@ void gather_records(const parallel::Ownership& own, NodalConstraints& c) {
       },
       true);
 }
+// Every motion's nodes in one collective: entry k is node at[k].second of motion at[k].first.
 void gather_records(const parallel::Ownership& own, std::vector<NodalMotion>& v) {
-  for (NodalMotion& m : v)
-    parallel::gather_owned(
-        own.comm, m.nodes.size(), [&](std::size_t k) { return output_owner(own, m.nodes[k]); },
-        [&](std::size_t k, std::vector<double>& out) {
-          const auto f = m.node_force.col(static_cast<Index>(k));
-          out.insert(out.end(), f.data(), f.data() + 3);
-          out.push_back(m.node_work[k]);
-        },
-        [&](std::size_t k, const double*& in) {
-          std::copy(in, in + 3, m.node_force.col(static_cast<Index>(k)).data());
-          m.node_work[k] = in[3];
-          in += 4;
-        },
-        true);
+  std::vector<std::pair<std::size_t, std::size_t>> at;
+  for (std::size_t m = 0; m < v.size(); ++m)
+    for (std::size_t k = 0; k < v[m].nodes.size(); ++k)
+      at.emplace_back(m, k);
+  parallel::gather_owned(
+      own.comm, at.size(),
+      [&](std::size_t e) { return own.output_owner(v[at[e].first].nodes[at[e].second]); },
+      [&](std::size_t e, std::vector<double>& out) {
+        const NodalMotion& m = v[at[e].first];
+        const auto f = m.node_force.col(static_cast<Index>(at[e].second));
+        out.insert(out.end(), f.data(), f.data() + 3);
+        out.push_back(m.node_work[at[e].second]);
+      },
+      [&](std::size_t e, const double*& in) {
+        NodalMotion& m = v[at[e].first];
+        std::copy(in, in + 3, m.node_force.col(static_cast<Index>(at[e].second)).data());
+        m.node_work[at[e].second] = in[3];
+        in += 4;
+      },
+      true);
 }
 
 // A condition applied in the constraint phase by one of loads.hpp's functions to the data the

@@ -119,8 +119,8 @@ void Halo::rebuild(State& s) {
   size_.peers = motion_.peers();
   // What each process other than 0 sends to 0 at an output: the values it alone computes.
   for (Index n = 0; n < n_nodes; ++n)
-    if (!own.replicated_node(n) && owner(n) != 0)
-      output_[static_cast<std::size_t>(owner(n))].nodes.push_back(n);
+    if (const int r = own.output_owner(n); r != 0)
+      output_[static_cast<std::size_t>(r)].nodes.push_back(n);
   for (Index e = 0; e < n_elements; ++e)
     if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
       output_[static_cast<std::size_t>(r)].elements.push_back(e);

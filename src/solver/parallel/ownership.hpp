@@ -75,6 +75,11 @@ struct Ownership {
   [[nodiscard]] bool replicated_node(std::int32_t n) const {
     return !replicated.empty() && replicated[static_cast<std::size_t>(n)] != 0;
   }
+  /// The process that reports node n's values to process 0 for the outputs: its owner, or 0 for
+  /// a node every process moves (process 0 has it too).
+  [[nodiscard]] int output_owner(std::int32_t n) const {
+    return replicated_node(n) ? 0 : owner[static_cast<std::size_t>(n)];
+  }
   [[nodiscard]] bool owns_node(std::int32_t n) const {
     return owns.empty() || owns[static_cast<std::size_t>(n)] != 0;
   }
