@@ -3,6 +3,7 @@
 // walls (friction, finite extent, moving wall momentum), SPC reactions, DT2MS mass scaling,
 // DTMIN and non-finite stops, degenerate hexahedra.
 #include <cmath>
+#include <tuple>
 
 #include "solver/energy.hpp"
 #include "solver/history_records.hpp"
@@ -96,6 +97,51 @@ TEST_CASE("prescribed rigid motion: translation ramp with DEATH, spin, constrain
   // Turned by 3 rad about z (a rotation matrix's angle from its trace).
   const double angle = std::atan2(b.rotation(1, 0), b.rotation(0, 0));
   CHECK(angle == doctest::Approx(std::remainder(3.0, 2.0 * M_PI)).epsilon(1e-3));
+}
+
+TEST_CASE("prescribed rigid motion along an oblique vector: the free directions take the load") {
+  TempDir dir;
+  // Rigid cube of mass 2, its rotations held (CON2 7), pushed by 4 in x and 2 in z at its
+  // centre, its velocity along d = (1, 1, 0) / sqrt 2 prescribed at 1 (DOF 4). The load's part
+  // across d accelerates it: (4, 0, 2) - (4 / sqrt 2) d = (2, -2, 2), a = (1, -1, 1), so
+  // x = t / sqrt 2 + t^2 / 2, y = t / sqrt 2 - t^2 / 2, z = t^2 / 2. With z held as well (CON1 3)
+  // one free direction is left, (1, -1, 0) / sqrt 2: the same x and y, z = 0, and the constraint
+  // takes the z load (-2).
+  auto moved = [&](int con1) {
+    const std::string deck =
+        "*KEYWORD\n*CONTROL_TERMINATION\n1.0\n*CONTROL_TIMESTEP\n0.001\n"
+        "*PART\nbrick\n1,1,1\n*SECTION_SOLID\n1,1\n" +
+        fmt::format("*MAT_RIGID\n1,2.0,100.0,0.3\n1,{},7\n", con1) + box_mesh(2, 2, 2, 0.5) +
+        "*DEFINE_VECTOR\n5,0,0,0,1,1,0\n"
+        "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n1,4,0,1,1.0,5\n"
+        "*LOAD_RIGID_BODY\n1,1,1,4.0\n1,3,1,2.0\n"
+        "*DEFINE_CURVE\n1\n0,1\n10,1\n*END\n";
+    Simulation sim = prepare(dir, deck);
+    run(sim);
+    REQUIRE(sim.result.reason == solver::StopReason::end_time);
+    const solver::RigidBody& b = sim.state->rigid_bodies[0];
+    return std::tuple{Eigen::Vector3d(b.center - b.initial_center), b.constraint_force,
+                      sim.state->time};
+  };
+  const double r = 1.0 / std::sqrt(2.0);
+  for (const int con1 : {0, 3}) {
+    CAPTURE(con1);
+    const auto [u, force, t] = moved(con1);
+    // The central difference's half-step start shifts a constant acceleration's path by dt t / 2
+    // at most (dt = 0.001): 5e-4 of t^2 / 2 at t = 1.
+    CHECK(u.x() == doctest::Approx(r * t + 0.5 * t * t).epsilon(1e-3));
+    CHECK(u.y() == doctest::Approx(r * t - 0.5 * t * t).epsilon(1e-3));
+    if (con1 == 0) {
+      CHECK(u.z() == doctest::Approx(0.5 * t * t).epsilon(1e-3));
+      // Along d the constraint cancels the load's part, (4 / sqrt 2) d: (-2, -2, 0).
+      CHECK(force.x() == doctest::Approx(-2.0).epsilon(1e-9));
+      CHECK(force.z() == doctest::Approx(0.0).scale(1.0).epsilon(1e-9));
+    } else {
+      CHECK(std::abs(u.z()) < 1e-12);
+      CHECK(force.x() == doctest::Approx(-2.0).epsilon(1e-9));
+      CHECK(force.z() == doctest::Approx(-2.0).epsilon(1e-9));
+    }
+  }
 }
 
 TEST_CASE("rigid wall with Coulomb friction takes tangential momentum mu times the normal") {
