@@ -12,6 +12,7 @@
 #include "deck/deck.hpp"
 #include "solver/compile.hpp"
 #include "solver/parallel/decomposition.hpp"
+#include "solver/solids/solids.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::cli {
@@ -71,7 +72,7 @@ void print_decomposition(std::ostream& out, const solver::State& s, int ranks) {
              "ms\n",
              mean > 0.0 ? highest.cost / mean : 1.0, total.ghost_nodes,
              100.0 * total.ghost_nodes / std::max<solver::Index>(s.nodes.count(), 1),
-             s.nodes.count(), total.elements - s.solids.count(), total.ghost_rows, ms);
+             s.nodes.count(), total.elements - solver::solids_of(s).count(), total.ghost_rows, ms);
 }
 
 }  // namespace
@@ -98,7 +99,7 @@ int run_partition(const PartitionOptions& options, std::ostream& out, std::ostre
   for (solver::spg::Domain& dom : state->spg)
     solver::spg::initialise(*state, dom);
   fmt::print(out, "{}: {} nodes, {} deformable solids, {} SPG particles\n", options.deck.string(),
-             state->nodes.count(), state->solids.count(), [&] {
+             state->nodes.count(), solver::solids_of(*state).count(), [&] {
                solver::Index n = 0;
                for (const solver::spg::Domain& dom : state->spg)
                  n += dom.count();

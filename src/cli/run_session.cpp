@@ -20,6 +20,7 @@
 #include "solver/block.hpp"
 #include "solver/energy.hpp"
 #include "solver/run_overrides.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::cli {
 
@@ -197,7 +198,8 @@ void RunSession::add_output_hooks(solver::RunHooks& hooks) {
   hooks.state_due = [this](const solver::State& s) { return outputs_->state_due(s); };
   hooks.write = [this](const solver::State& s, const Eigen::Matrix3Xd& previous, bool final) {
     checked([&] {
-      const long zone_cycles = (s.cycle - start_cycle_) * static_cast<long>(s.solids.count());
+      const long zone_cycles =
+          (s.cycle - start_cycle_) * static_cast<long>(solver::solids_of(s).count());
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
       outputs_->write(s, previous, final, zone_cycles > 0 ? 1e9 * elapsed / zone_cycles : 0.0);

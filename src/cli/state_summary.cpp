@@ -6,6 +6,7 @@
 
 #include "solver/block.hpp"
 #include "solver/energy.hpp"
+#include "solver/solids/solids.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::cli {
@@ -29,8 +30,9 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
     mass += b.mass;
   fmt::print(log,
              "\nSolver state\n  nodes {}, deformable solids {} in {} blocks, rigid bodies {}\n",
-             s.nodes.count(), s.solids.count(), s.solids.blocks.size(), s.rigid_bodies.size());
-  for (const auto& b : s.solids.blocks) {
+             s.nodes.count(), solver::solids_of(s).count(), solver::solids_of(s).blocks.size(),
+             s.rigid_bodies.size());
+  for (const auto& b : solver::solids_of(s).blocks) {
     const auto& part = s.parts[static_cast<std::size_t>(b.part)];
     fmt::print(log, "  part {:>8}: {} elements, ELFORM {}, {} hourglass QM {}, Q1 {} Q2 {}, {}\n",
                part.id, b.end - b.begin, b.points_per_element == 1 ? 1 : 2,

@@ -155,7 +155,7 @@ class Block {
 };
 
 /// A block whose dump is one member list for both directions: Derived has
-///   template <class Ar> void dumped(Ar& ar, State& s) { ar(s.shells, my_state_); }
+///   template <class Ar> void dumped(Ar& ar, State& s) { ar(shells_, kept_); }
 /// (an OutArchive writes nothing to the state or the block).
 template <class Derived>
 class DumpedBlock : public Block {
@@ -171,8 +171,6 @@ class DumpedBlock : public Block {
 Blocks make_blocks(State& s, std::vector<Blocks> compiled);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
-void add_hexahedra_blocks(State& s, Blocks& blocks);   // solids/hexahedra_block.cpp
-void add_shell_blocks(State& s, Blocks& blocks);       // shells/shell_block.cpp
 void add_spg_blocks(State& s, Blocks& blocks);         // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);  // rigid/rigid_block.cpp
 void add_contact_blocks(State& s, Blocks& blocks);     // contact/contact_block.cpp
@@ -211,10 +209,26 @@ class CompiledBlocks {
         b->mark_held(held);
     return held;
   }
+  /// The first block of type B compiled so far, or nullptr (solids_of(before)).
+  template <class B>
+  [[nodiscard]] const B* find() const {
+    for (const Blocks& line : lines_)
+      for (const std::unique_ptr<Block>& b : line)
+        if (const auto* found = dynamic_cast<const B*>(b.get())) return found;
+    return nullptr;
+  }
 
  private:
   const std::vector<Blocks>& lines_;
 };
+
+/// The same as owned_by(state, get) from the blocks compiled so far (solids_of(before)).
+template <class B, class T>
+const T& owned_by(const CompiledBlocks& before, const T& (B::*get)() const) {
+  static const T kNone{};
+  const B* b = before.find<B>();
+  return b != nullptr ? (b->*get)() : kNone;
+}
 
 /// The number of block `b`'s first element: the elements the blocks before it number.
 Index first_element(const State& s, const Block& b);  // fe/element_names.cpp

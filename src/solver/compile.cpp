@@ -6,7 +6,8 @@
 #include <cmath>
 
 #include "solver/formulations.hpp"
-#include "solver/shells/shell_elements.hpp"  // poisson_ratio
+#include "solver/shells/shell_elements.hpp"  // poisson_ratio, shells_of
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver {
 
@@ -132,15 +133,15 @@ void compile_nodes_and_parts(const model::ModelDatabase& m, State& s) {
 // as every corner is on at most two hexahedra (a column one element across); the shell square
 // at 2 c sqrt(1 + nu) / L, TSSFAC above 1 / sqrt(1 + nu) (0.877), when it is alone (a strip one
 // element wide is held enough). Said per part when the deck's TSSFAC is above the bound.
-void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
-                               core::Diagnostics& d) {
+void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, const Solids& solids,
+                               const Shells& shells, core::Diagnostics& d) {
   const double tssfac = s.time_control.scale_factor;
   const auto node_count = static_cast<std::size_t>(s.nodes.count());
   std::vector<int> uses(node_count, 0), shell_uses(node_count, 0);
-  for (const auto& conn : s.solids.nodes)
+  for (const auto& conn : solids.nodes)
     for (const Index n : conn)
       ++uses[static_cast<std::size_t>(n)];
-  for (const auto& conn : s.shells.nodes)
+  for (const auto& conn : shells.nodes)
     for (std::size_t c = 0; c < (conn[3] == conn[2] ? 3U : 4U); ++c)
       ++shell_uses[static_cast<std::size_t>(conn[c])];
   // Per part, the flagged elements' count said when TSSFAC is above bound(nu).
@@ -158,26 +159,26 @@ void warn_free_corner_elements(const model::ModelDatabase& m, const State& s,
     }
   };
   std::vector<long> flagged(s.parts.size(), 0);
-  for (std::size_t e = 0; e < s.solids.nodes.size(); ++e) {
-    const auto& conn = s.solids.nodes[e];
+  for (std::size_t e = 0; e < solids.nodes.size(); ++e) {
+    const auto& conn = solids.nodes[e];
     if (std::all_of(conn.begin(), conn.end(),
                     [&](Index n) { return uses[static_cast<std::size_t>(n)] <= 2; }))
-      ++flagged[static_cast<std::size_t>(s.solids.part[e])];
+      ++flagged[static_cast<std::size_t>(solids.part[e])];
   }
   warn(
       flagged, [](double nu) { return std::sqrt((1.0 - nu) / (1.0 + nu)); },
       "hexahedra are one element across (every corner on at most two; mesh two across or lower "
       "TSSFAC)");
   std::fill(flagged.begin(), flagged.end(), 0);
-  for (std::size_t e = 0; e < s.shells.nodes.size(); ++e) {
-    const auto& conn = s.shells.nodes[e];
+  for (std::size_t e = 0; e < shells.nodes.size(); ++e) {
+    const auto& conn = shells.nodes[e];
     const std::size_t corners = conn[3] == conn[2] ? 3U : 4U;
     bool alone = true;
     for (std::size_t c = 0; c < corners; ++c) {
       const auto n = static_cast<std::size_t>(conn[c]);
       alone = alone && shell_uses[n] == 1 && uses[n] == 0 && s.nodes.rigid_body[n] < 0;
     }
-    if (alone) ++flagged[static_cast<std::size_t>(s.shells.part[e])];
+    if (alone) ++flagged[static_cast<std::size_t>(shells.part[e])];
   }
   warn(
       flagged, [](double nu) { return 1.0 / std::sqrt(1.0 + nu); },
@@ -227,7 +228,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   }
   s->mass_scaling_dt =
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
-  detail::warn_free_corner_elements(m, *s, diags);
+  detail::warn_free_corner_elements(m, *s, solids_of(before), shells_of(before), diags);
   if (diags.error_count() > errors) return nullptr;
   s->blocks = make_blocks(*s, std::move(compiled));
   for (const auto& b : s->blocks)

@@ -5,6 +5,7 @@
 
 #include "core/diagnostics.hpp"
 #include "model/model_database.hpp"
+#include "solver/fe/hourglass.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
@@ -17,6 +18,8 @@ std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnost
 std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
 
 class CompiledBlocks;  // block.hpp: the blocks of the passes before
+struct Solids;         // solids/solids.hpp
+struct Shells;         // shells/shells.hpp
 
 namespace detail {
 /// Node -> (element * N + corner) lists of a connectivity in element order (CSR: `offsets` per
@@ -60,9 +63,9 @@ std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabas
 /// The nodes (positions, zero velocities and masses) and one PartInfo per part, in deck order.
 void compile_nodes_and_parts(const model::ModelDatabase& m, State& s);
 void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
-                    core::Diagnostics& d);
+                    Blocks& own, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
-                    core::Diagnostics& d);
+                    Blocks& own, core::Diagnostics& d);
 void compile_beams(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                    Blocks& own, core::Diagnostics& d);
 void compile_discrete(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
@@ -117,7 +120,8 @@ void compile_sensors(const model::ModelDatabase& m, State& s, const CompiledBloc
                      core::Diagnostics& d);  // sensors/sensor_block.cpp
 /// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one
 /// element across) when TSSFAC is above their breathing mode's bound (compile.cpp).
-void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, core::Diagnostics& d);
+void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, const Solids& solids,
+                               const Shells& shells, core::Diagnostics& d);
 Material compile_material(const model::ModelDatabase& m, const model::Part& part,
                           core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);

@@ -15,10 +15,10 @@ namespace mcdyna::solver {
 const std::vector<Formulation>& formulations() {
   using namespace detail;
   static const std::vector<Formulation> kLines = {
-      {"solids", compile_solids, add_hexahedra_blocks, {}},
+      {"solids", nullptr, nullptr, {}, false, compile_solids},
       // Materials are numbered in part order within each element kind: solids, shells, beams,
       // SPG parts.
-      {"shells", compile_shells, add_shell_blocks, {"solids"}},
+      {"shells", nullptr, nullptr, {"solids"}, false, compile_shells},
       {"beams", nullptr, nullptr, {"shells"}, false, compile_beams},
       {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
       {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},

@@ -15,9 +15,8 @@ namespace mcdyna::solver {
 template <class Ar>
 void fields(Ar& ar, Nodes& n) {
   ar(n.ids, n.initial, n.position, n.velocity, n.acceleration, n.mass, n.added_mass, n.rigid_body,
-     n.smoothed, n.corner_offsets, n.corners);
-  ar(n.angular_velocity, n.previous_angular_velocity, n.rotary_inertia, n.shell_corner_offsets,
-     n.shell_corners);
+     n.smoothed);
+  ar(n.angular_velocity, n.previous_angular_velocity, n.rotary_inertia);
 }
 
 template <class Ar>
@@ -42,7 +41,7 @@ namespace {
 // its part) or deck data compiled again on restart: title, parts, materials, rigid_cells,
 // curves, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by --fixed-step).
 constexpr auto kStateDumpedSizes = sizes_of<Nodes, State, ResumePoint>();
-static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){336, 1976, 224},
+static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){240, 880, 224},
               "Nodes, State or ResumePoint changed: list the new member here, or note it among "
               "the deck data left out");
 

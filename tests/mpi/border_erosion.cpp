@@ -13,6 +13,7 @@
 #include "compiled_deck.hpp"
 #include "core/communicator.hpp"
 #include "solver/driver.hpp"
+#include "solver/solids/solids.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -23,13 +24,14 @@ int main(int argc, char** argv) {
   const auto world = mcdyna::core::Communicator::world();
   std::unique_ptr<mcdyna::solver::State> s = compiled_deck(argv[1]);
   const mcdyna::solver::RunResult result = mcdyna::solver::run(*s, {});
-  const auto n = static_cast<int>(s->solids.count());
+  const auto n = static_cast<int>(mcdyna::solver::solids_of(*s).count());
   // Per element: how many processes compute it, and how many of them found it eroded.
   std::vector<int> computed(static_cast<std::size_t>(n)), eroded(computed.size());
   for (int e = 0; e < n; ++e) {
     const bool here = s->ownership.computes_element(e);
     computed[static_cast<std::size_t>(e)] = here ? 1 : 0;
-    eroded[static_cast<std::size_t>(e)] = here && s->solids.eroded[static_cast<std::size_t>(e)];
+    eroded[static_cast<std::size_t>(e)] =
+        here && mcdyna::solver::solids_of(*s).eroded[static_cast<std::size_t>(e)];
   }
   MPI_Allreduce(MPI_IN_PLACE, computed.data(), n, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   MPI_Allreduce(MPI_IN_PLACE, eroded.data(), n, MPI_INT, MPI_SUM, MPI_COMM_WORLD);

@@ -16,6 +16,7 @@
 #include "solver/contact/contact.hpp"
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
+#include "solver/solids/solids.hpp"
 #include "solver/spg/domain.hpp"
 #include "solver/spg/spg_solver.hpp"
 #include "test_support.hpp"

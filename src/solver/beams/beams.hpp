@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/fe/shell_points.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

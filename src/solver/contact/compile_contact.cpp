@@ -88,10 +88,11 @@ double capped_thickness(const State& s, const std::array<Index, 4>& seg, double 
 }
 
 ContactSurfaces contact_surfaces(const model::ModelDatabase& m, const State& s,
+                                 const CompiledBlocks& before,
                                  const model::ContactControl& control) {
   ContactSurfaces cs;
-  cs.parts = part_surfaces(m, s);
-  cs.node_k = node_stiffness(s, cs.parts);
+  cs.parts = part_surfaces(m, s, before);
+  cs.node_k = node_stiffness(s, solids_of(before), cs.parts);
   cs.cap_single = control.single_surface_thickness == 0;
   // Half the thickest shell (rigid or deformable) on each node, and the same capped for
   // single-surface contacts.
@@ -308,12 +309,12 @@ void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurface
 
 }  // namespace
 
-void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                       Blocks& own, core::Diagnostics& d) {
   if (m.contacts.empty()) return;
   std::vector<Interface> interfaces;  // rcforc's order: the deck's, ties left out
   const model::ContactControl control = m.controls.contact.value_or(model::ContactControl{});
-  const ContactSurfaces cs = contact_surfaces(m, s, control);
+  const ContactSurfaces cs = contact_surfaces(m, s, before, control);
   for (std::size_t order = 0; order < m.contacts.size(); ++order) {
     const model::Contact& c = m.contacts[order];
     // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.

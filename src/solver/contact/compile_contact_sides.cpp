@@ -105,7 +105,10 @@ Face sorted(Face f) {
   return f;
 }
 
-std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const State& s) {
+std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const State& s,
+                                       const CompiledBlocks& before) {
+  const Solids& so = solids_of(before);
+  const Shells& shells = shells_of(before);
   const std::size_t parts = s.parts.size();
   std::vector<double> bulk(parts, 0.0);
   for (std::size_t p = 0; p < parts; ++p) {
@@ -118,10 +121,9 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
     }
   }
   std::vector<std::vector<Element>> solids(parts);
-  for (Index e = 0; e < s.solids.count(); ++e) {
+  for (Index e = 0; e < so.count(); ++e) {
     const auto ee = static_cast<std::size_t>(e);
-    solids[static_cast<std::size_t>(s.solids.part[ee])].push_back(
-        {s.solids.nodes[ee], s.solids.initial_volume[ee]});
+    solids[static_cast<std::size_t>(so.part[ee])].push_back({so.nodes[ee], so.initial_volume[ee]});
   }
   for (std::size_t k = 0; k < s.rigid_cells.solids.size(); ++k)
     solids[static_cast<std::size_t>(s.rigid_cells.solid_parts[k])].push_back(
@@ -142,20 +144,20 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   }
   // Deformable shells: segments at their mid-surfaces, penalty K A / longest diagonal as the
   // rigid ones.
-  for (std::size_t e = 0; e < s.shells.ids.size(); ++e) {
-    const auto p = static_cast<std::size_t>(s.shells.part[e]);
-    const Face& seg = s.shells.nodes[e];
+  for (std::size_t e = 0; e < shells.ids.size(); ++e) {
+    const auto p = static_cast<std::size_t>(shells.part[e]);
+    const Face& seg = shells.nodes[e];
     const double area = area_of(s, seg);
     if (!(area > 0.0)) continue;
     add_segment(out[p].surface, seg, bulk[p] * area / longest_diagonal(s, seg), area, false);
-    out[p].shell_thickness.push_back(s.shells.initial_thickness[e]);
+    out[p].shell_thickness.push_back(shells.initial_thickness[e]);
   }
   for (const spg::Domain& d : s.spg)
     out[static_cast<std::size_t>(d.part)].particles = d.particles.nodes;
-  for (Index e = 0; e < s.solids.count(); ++e) {
+  for (Index e = 0; e < so.count(); ++e) {
     const auto ee = static_cast<std::size_t>(e);
-    std::vector<Index>& nodes = out[static_cast<std::size_t>(s.solids.part[ee])].solid_nodes;
-    nodes.insert(nodes.end(), s.solids.nodes[ee].begin(), s.solids.nodes[ee].end());
+    std::vector<Index>& nodes = out[static_cast<std::size_t>(so.part[ee])].solid_nodes;
+    nodes.insert(nodes.end(), so.nodes[ee].begin(), so.nodes[ee].end());
   }
   for (PartSurface& p : out) {
     std::sort(p.solid_nodes.begin(), p.solid_nodes.end());
@@ -165,7 +167,8 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   return out;
 }
 
-std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface>& parts) {
+std::vector<double> node_stiffness(const State& s, const Solids& so,
+                                   const std::vector<PartSurface>& parts) {
   std::vector<double> k(static_cast<std::size_t>(s.nodes.count()), 0.0);
   for (const PartSurface& p : parts)
     for (std::size_t j = 0; j < p.surface.segments.size(); ++j)
@@ -181,12 +184,12 @@ std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface
           bulk * std::cbrt(d.particles.initial_volume[i]);
   }
   std::vector<double> interior(k.size(), 0.0);
-  for (std::size_t e = 0; e < s.solids.ids.size(); ++e) {
-    const PartInfo& part = s.parts[static_cast<std::size_t>(s.solids.part[e])];
+  for (std::size_t e = 0; e < so.ids.size(); ++e) {
+    const PartInfo& part = s.parts[static_cast<std::size_t>(so.part[e])];
     if (part.material < 0) continue;
     const double ke = reference_bulk_modulus(s.materials[static_cast<std::size_t>(part.material)]) *
-                      std::cbrt(s.solids.initial_volume[e]);
-    for (const Index n : s.solids.nodes[e])
+                      std::cbrt(so.initial_volume[e]);
+    for (const Index n : so.nodes[e])
       interior[static_cast<std::size_t>(n)] = std::max(interior[static_cast<std::size_t>(n)], ke);
   }
   for (std::size_t n = 0; n < k.size(); ++n)

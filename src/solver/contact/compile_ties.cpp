@@ -96,7 +96,7 @@ void check_ties(const State& s, std::vector<Tie>& ties, core::Diagnostics& d) {
 
 }  // namespace
 
-void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
+void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                   Blocks& own, core::Diagnostics& d) {
   std::vector<Tie> ties;
   std::vector<PartSurface> parts;
@@ -105,7 +105,7 @@ void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks&
     const model::Contact& c = m.contacts[order];
     if (c.kind != model::ContactKind::tied) continue;
     if (parts.empty()) {
-      parts = part_surfaces(m, s);
+      parts = part_surfaces(m, s, before);
       face_owner = face_owners(parts);
     }
     // Numbered as compile_contacts numbers every contact: its ID, else its place in the deck.

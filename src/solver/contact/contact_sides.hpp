@@ -10,6 +10,8 @@
 
 #include "solver/compile.hpp"
 #include "solver/contact/interface.hpp"
+#include "solver/shells/shells.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -24,14 +26,17 @@ struct PartSurface {
   std::vector<Index> solid_nodes;  ///< every node of its deformable hexahedra
 };
 
-/// The surfaces of every part (empty for parts that offer none).
-std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const State& s);
+/// The surfaces of every part (empty for parts that offer none): the free faces of the
+/// hexahedra and the shells compiled before (`before`), and of the rigid parts' elements.
+std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const State& s,
+                                       const CompiledBlocks& before);
 
 /// Penalty of a slave node: the stiffest segment (free face K A^2 / V, shell K A / diagonal)
 /// holding it, or K V^(1/3) of a particle's volume (K A^2 / V of a cube of that volume). A node
 /// inside a solid part (given in a node set) takes K V^(1/3) of its stiffest element; a node on
 /// no element is left at 0 and contact then uses the segment's stiffness (contact_forces.cpp).
-std::vector<double> node_stiffness(const State& s, const std::vector<PartSurface>& parts);
+std::vector<double> node_stiffness(const State& s, const Solids& solids,
+                                   const std::vector<PartSurface>& parts);
 
 /// A face's nodes in ascending order: the key that finds a segment set's face among the parts'.
 Face sorted(Face f);

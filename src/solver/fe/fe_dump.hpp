@@ -1,6 +1,8 @@
 #pragma once
 /// Member lists of the integration-point and element parameters the finite-element blocks share
 /// (solids, shells, beams), for their restart dumps (dump.hpp).
+#include "solver/fe/hourglass.hpp"
+#include "solver/fe/shell_points.hpp"
 #include "solver/material/material_dump.hpp"
 #include "solver/state.hpp"
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "solver/block.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver::parallel {
 
@@ -104,7 +105,7 @@ Decomposition decompose(const State& s, int ranks, const EntityCosts& costs) {
       particle[static_cast<std::size_t>(node)] = 1;
       weight[static_cast<std::size_t>(node)] += costs.particle;
     }
-  for (const auto& element : s.solids.nodes)
+  for (const auto& element : solids_of(s).nodes)
     for (const Index node : element) {
       solid[static_cast<std::size_t>(node)] = 1;
       weight[static_cast<std::size_t>(node)] += costs.hexahedron / 8.0;
@@ -137,7 +138,7 @@ std::vector<RankLoad> rank_loads(const State& s, const Decomposition& d, const E
     std::sort(ranks.begin(), ranks.end());
     ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
   };
-  for (const auto& element : s.solids.nodes) {
+  for (const auto& element : solids_of(s).nodes) {
     computed_by(element);
     for (const int r : ranks) {
       RankLoad& l = load[static_cast<std::size_t>(r)];

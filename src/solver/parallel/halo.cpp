@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "solver/solids/solids.hpp"
+
 namespace mcdyna::solver::parallel {
 
 namespace {
@@ -24,8 +26,7 @@ void node_fields(State& s, Eigen::Matrix3Xd& previous, Index n, Visit&& visit) {
 // The same for a hexahedron: what the histories read (energy.cpp), and with `states` its other
 // values and those of its integration points.
 template <class Visit>
-void element_fields(State& s, Index e, bool states, Visit&& visit) {
-  Solids& so = s.solids;
+void element_fields(Solids& so, Index e, bool states, Visit&& visit) {
   const auto i = static_cast<std::size_t>(e);
   for (std::vector<double>* v : {&so.internal_energy, &so.hourglass_energy, &so.added_mass})
     visit(&(*v)[i], 1);
@@ -61,7 +62,8 @@ Halo::Halo(State& s, const Decomposition& d, std::vector<std::uint8_t> replicate
 void Halo::rebuild(State& s) {
   const int me = comm_.rank();
   const Index n_nodes = s.nodes.count();
-  const Index n_elements = s.solids.count();
+  const Solids& solids = solids_of(s);
+  const Index n_elements = solids.count();
   Ownership& own = s.ownership;
   size_ = HaloSize{};
   output_.assign(static_cast<std::size_t>(comm_.size()), OutputShare{});
@@ -83,7 +85,7 @@ void Halo::rebuild(State& s) {
   // The hexahedra with a moved node, and the nodes they read that another process moves.
   std::vector<std::uint8_t> ghost(static_cast<std::size_t>(n_nodes), 0);
   for (Index e = 0; e < n_elements; ++e) {
-    const auto& corners = s.solids.nodes[static_cast<std::size_t>(e)];
+    const auto& corners = solids.nodes[static_cast<std::size_t>(e)];
     if (std::none_of(corners.begin(), corners.end(), [&](Index n) { return own.moves_node(n); }))
       continue;
     own.computes[static_cast<std::size_t>(e)] = 1;
@@ -122,7 +124,7 @@ void Halo::rebuild(State& s) {
     if (const int r = own.output_owner(n); r != 0)
       output_[static_cast<std::size_t>(r)].nodes.push_back(n);
   for (Index e = 0; e < n_elements; ++e)
-    if (const int r = owner(s.solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
+    if (const int r = owner(solids.nodes[static_cast<std::size_t>(e)][0]); r != 0)
       output_[static_cast<std::size_t>(r)].elements.push_back(e);
 }
 
@@ -145,15 +147,16 @@ void Halo::exchange_motion(State& s) {
 
 void Halo::gather_for_output(State& s, Eigen::Matrix3Xd& previous, bool states) const {
   // Packing and unpacking walk the same lists in the same order.
+  Solids* solids = solids_in(s);  // elements are in the shares only when there are hexahedra
   auto walk = [&](const OutputShare& share, auto&& visit) {
     for (const Index n : share.nodes)
       node_fields(s, previous, n, visit);
     for (const Index e : share.elements) {
       // The erosion flag travels as a double beside the element's values.
-      double eroded = s.solids.eroded[static_cast<std::size_t>(e)];
+      double eroded = solids->eroded[static_cast<std::size_t>(e)];
       visit(&eroded, 1);
-      s.solids.eroded[static_cast<std::size_t>(e)] = static_cast<std::uint8_t>(eroded);
-      element_fields(s, e, states, visit);
+      solids->eroded[static_cast<std::size_t>(e)] = static_cast<std::uint8_t>(eroded);
+      element_fields(*solids, e, states, visit);
     }
   };
   std::vector<double> mine;

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "core/exact_sum.hpp"
+#include "solver/shells/shells.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver {
 
@@ -27,27 +29,30 @@ double mean_plastic_strain(const std::vector<Block>& blocks, const std::vector<d
   return 0.0;
 }
 
-double shell_plastic_strain(const State& s, Index e) {
-  return mean_plastic_strain(s.shells.blocks, s.shells.points.plastic_strain, e,
+double shell_plastic_strain(const Shells& sh, Index e) {
+  return mean_plastic_strain(sh.blocks, sh.points.plastic_strain, e,
                              [](const ShellBlock& b) { return b.in_plane_points * b.layers; });
 }
 
-double solid_plastic_strain(const State& s, Index e) {
-  return mean_plastic_strain(s.solids.blocks, s.solids.points.plastic_strain, e,
+double solid_plastic_strain(const Solids& so, Index e) {
+  return mean_plastic_strain(so.blocks, so.points.plastic_strain, e,
                              [](const SolidBlock& b) { return b.points_per_element; });
 }
 
 // The largest mean plastic strain of the deformable shells and solids at the node.
 double node_plastic_strain(const State& s, Index node) {
-  const Nodes& nd = s.nodes;
   const auto n = static_cast<std::size_t>(node);
   double most = 0.0;
-  if (!nd.shell_corner_offsets.empty())
-    for (Index k = nd.shell_corner_offsets[n]; k < nd.shell_corner_offsets[n + 1]; ++k)
+  const Shells& sh = shells_of(s);
+  if (!sh.corner_offsets.empty())
+    for (Index k = sh.corner_offsets[n]; k < sh.corner_offsets[n + 1]; ++k)
       most = std::max(most,
-                      shell_plastic_strain(s, nd.shell_corners[static_cast<std::size_t>(k)] / 4));
-  for (Index k = nd.corner_offsets[n]; k < nd.corner_offsets[n + 1]; ++k)
-    most = std::max(most, solid_plastic_strain(s, nd.corners[static_cast<std::size_t>(k)] / 8));
+                      shell_plastic_strain(sh, sh.node_corners[static_cast<std::size_t>(k)] / 4));
+  const Solids& so = solids_of(s);
+  if (!so.corner_offsets.empty())
+    for (Index k = so.corner_offsets[n]; k < so.corner_offsets[n + 1]; ++k)
+      most = std::max(most,
+                      solid_plastic_strain(so, so.node_corners[static_cast<std::size_t>(k)] / 8));
   return most;
 }
 

@@ -2,6 +2,7 @@
 // through-thickness rule, hourglass coefficients, and the node -> corner lists of the gather.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "solver/compile.hpp"
 #include "solver/shells/shell_c0_triangle.hpp"
@@ -162,7 +163,7 @@ ThicknessUpdate thickness_update(const model::ModelDatabase& m, const model::Par
 }  // namespace
 
 void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
-                    core::Diagnostics& d) {
+                    Blocks& own, core::Diagnostics& d) {
   const model::ShellControl control = m.controls.shell.value_or(model::ShellControl{});
   if (m.controls.shell) {
     note_shell_control(control, d);
@@ -172,7 +173,7 @@ void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlock
   }
   Nodes& nd = s.nodes;
   const std::vector<std::vector<std::size_t>> by_part = elements_by_part(m, m.shells);
-  Shells& sh = s.shells;
+  Shells sh;
   std::vector<double> rotary(static_cast<std::size_t>(nd.count()), 0.0);
   Index points = 0;
   bool back = false;
@@ -301,7 +302,8 @@ void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlock
   add_rotary_inertia(nd, rotary);
   build_node_corners(
       nd.count(), sh.nodes, [&](std::size_t e) { return sh.nodes[e][3] == sh.nodes[e][2] ? 3 : 4; },
-      nd.shell_corner_offsets, nd.shell_corners);
+      sh.corner_offsets, sh.node_corners);
+  own.push_back(make_shell_block(std::move(sh)));
 }
 
 }  // namespace mcdyna::solver::detail

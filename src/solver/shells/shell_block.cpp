@@ -1,10 +1,14 @@
 // The deformable shells as one block of the time loop: the element pass and the gather of the
 // corner forces and moments into the nodes.
+#include <memory>
+#include <utility>
+
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
 #include "solver/fe/element_energies.hpp"
-#include "solver/results.hpp"
 #include "solver/shells/shell_elements.hpp"
+#include "solver/shells/shell_result.hpp"
+#include "solver/shells/shells.hpp"
 #include "solver/shells/shells_dump.hpp"
 
 namespace mcdyna::solver {
@@ -16,36 +20,37 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
   [[nodiscard]] std::string dump_name() const override { return "shells"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kShellsDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.shells);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(shells_);
   }
-  explicit ShellsBlock(long count) : count_(count) {}
+  explicit ShellsBlock(Shells shells) : shells_(std::move(shells)) {}
+  [[nodiscard]] const Shells& shells() const { return shells_; }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
-  [[nodiscard]] long elements() const override { return count_; }
-  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] long elements() const override { return shells_.count(); }
+  [[nodiscard]] Index numbered_elements() const override { return shells_.count(); }
   [[nodiscard]] ElementRef element(const State& s, Index k) const override {
     const auto i = static_cast<std::size_t>(k);
-    return {"shell", s.shells.ids[i], s.parts[static_cast<std::size_t>(s.shells.part[i])].id};
+    return {"shell", shells_.ids[i], s.parts[static_cast<std::size_t>(shells_.part[i])].id};
   }
 
   // Every process computes the shells whole (and so moves their nodes itself): the same bits
   // for any process count, without a share of the work.
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    for (const auto& conn : s.shells.nodes)
+  void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& nodes) const override {
+    for (const auto& conn : shells_.nodes)
       for (const Index n : conn)
         nodes[static_cast<std::size_t>(n)] = 1;
   }
 
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    fe::add_element_energies(s.shells, e);
+    fe::add_element_energies(shells_, e);
   }
 
   // Kinetic energy and momentum from each element's lumped mass and corner inertia, so shared
   // nodes split between parts.
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const Shells& sh = s.shells;
+    const Shells& sh = shells_;
     for (std::size_t e = 0; e < sh.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(sh.part[e])];
       (sh.eroded[e] ? ps.eroded_internal : ps.internal) += sh.internal_energy[e];
@@ -66,21 +71,22 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
 #pragma omp parallel for schedule(static)
     for (Index n = 0; n < nd.count(); ++n) {
       const auto nn = static_cast<std::size_t>(n);
-      for (Index k = nd.shell_corner_offsets[nn]; k < nd.shell_corner_offsets[nn + 1]; ++k) {
-        const auto e = static_cast<std::size_t>(nd.shell_corners[static_cast<std::size_t>(k)] / 4);
-        const bool triangle = s.shells.nodes[e][3] == s.shells.nodes[e][2];
-        nodal[nn] += s.shells.added_mass[e] / (triangle ? 3.0 : 4.0);
+      for (Index k = shells_.corner_offsets[nn]; k < shells_.corner_offsets[nn + 1]; ++k) {
+        const auto e =
+            static_cast<std::size_t>(shells_.node_corners[static_cast<std::size_t>(k)] / 4);
+        const bool triangle = shells_.nodes[e][3] == shells_.nodes[e][2];
+        nodal[nn] += shells_.added_mass[e] / (triangle ? 3.0 : 4.0);
       }
     }
   }
 
   void forces(State& s, NodalForces& f, ForceReport& r) override {
     const ElementPassResult e = shell_element_pass(
-        s, ShellPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
-    gather_shell_forces(s, f);
+        s, shells_, ShellPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
+    gather_shell_forces(s, shells_, f);
     if (e.mass_changed) refresh_added_mass(s);
-    // Elements are numbered solids first, then shells (block.hpp).
-    const Index offset = s.solids.count();
+    // Elements are numbered block by block (block.hpp): the hexahedra's before the shells'.
+    const Index offset = first_element(s, *this);
     if (e.critical_step < r.critical_step) {
       r.critical_step = e.critical_step;
       r.controlling_element = offset + e.controlling;
@@ -95,7 +101,7 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
   }
 
  private:
-  long count_;
+  Shells shells_;
 
   // The shells not eroded (quadrilaterals, triangles): the mean of the layers, and of their own
   // the stress of the top and bottom layers (global axes) and the thickness.
@@ -103,18 +109,20 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
     sink.declare("stress_top", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
     sink.declare("stress_bottom", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
     sink.declare("thickness", {});
-    const Shells& sh = s.shells;
+    const Shells& sh = shells_;
     for (const ShellBlock& block : sh.blocks) {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
         if (sh.eroded[i]) continue;
         const auto& q = sh.nodes[i];
-        const ElementResult mid = shell_result(s, block, e, ShellSurface::all);
+        const ElementResult mid = shell_result(s.nodes, sh, block, e, ShellSurface::all);
         sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(),
                   {mid, pressure_of(mid), sh.temperature[i], part});
-        sink.value("stress_top", shell_result(s, block, e, ShellSurface::top).stress.data());
-        sink.value("stress_bottom", shell_result(s, block, e, ShellSurface::bottom).stress.data());
+        sink.value("stress_top",
+                   shell_result(s.nodes, sh, block, e, ShellSurface::top).stress.data());
+        sink.value("stress_bottom",
+                   shell_result(s.nodes, sh, block, e, ShellSurface::bottom).stress.data());
         sink.value("thickness", &sh.thickness[i]);
       }
     }
@@ -123,8 +131,16 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
 
 }  // namespace
 
-void add_shell_blocks(State& s, Blocks& blocks) {
-  if (s.shells.count() > 0) blocks.push_back(std::make_unique<ShellsBlock>(s.shells.count()));
+std::unique_ptr<Block> make_shell_block(Shells shells) {
+  return std::make_unique<ShellsBlock>(std::move(shells));
+}
+
+const Shells& shells_of(const State& s) {
+  return owned_by(s, &ShellsBlock::shells);
+}
+
+const Shells& shells_of(const CompiledBlocks& before) {
+  return owned_by(before, &ShellsBlock::shells);
 }
 
 }  // namespace mcdyna::solver

@@ -113,11 +113,11 @@ inline double c0_triangle_inertia(const Vec3 x[4], double kappa_g_t, double corn
 
 template <class Model>
 fe::ElementOutcome c0_triangle(ShellContext& c, const Model& model, Index e) {
-  Shells& sh = c.st.shells;
+  Shells& sh = c.sh;
   const auto i = static_cast<std::size_t>(e);
   double* out = &sh.corner_force[24 * i];
   std::fill(out, out + 24, 0.0);
-  const Corners k = corners(c.st, e);
+  const Corners k = corners(c.st, c.sh, e);
   const Frame f = triangle_frame(k.x);
   if (!(f.area > 0.0)) return {0.0, true, false};
   const auto [vx, vy, vz, tx, ty] = in_frame(k, f, 3);

@@ -74,7 +74,7 @@ void hourglass_vector(const Frame& f, double gamma[4]) {
 double hourglass(ShellContext& c, Index e, const Frame& f, const Rates& r, double t,
                  double resist[5]) {
   const ShellBlock& b = c.block;
-  double* q = &c.st.shells.hourglass_force[5 * static_cast<std::size_t>(e)];
+  double* q = &c.sh.hourglass_force[5 * static_cast<std::size_t>(e)];
   double bb = 0.0;
   for (int i = 0; i < 4; ++i)
     bb += f.b1[i] * f.b1[i] + f.b2[i] * f.b2[i];
@@ -86,8 +86,8 @@ double hourglass(ShellContext& c, Index e, const Frame& f, const Rates& r, doubl
   const double coef[5] = {b.hourglass.coefficient, b.hourglass.coefficient, b.bending_hourglass,
                           b.bending_hourglass, b.warping_hourglass};
   const bool stiffness = b.hourglass.stiffness();
-  const double corner_mass = 0.25 * c.st.shells.mass[static_cast<std::size_t>(e)];
-  const double inertia = c.st.shells.corner_inertia[static_cast<std::size_t>(e)];
+  const double corner_mass = 0.25 * c.sh.mass[static_cast<std::size_t>(e)];
+  const double inertia = c.sh.corner_inertia[static_cast<std::size_t>(e)];
   const double dt = c.in.step;
   double power = 0.0;
   for (int k = 0; k < 5; ++k) {
@@ -106,9 +106,9 @@ double hourglass(ShellContext& c, Index e, const Frame& f, const Rates& r, doubl
 
 template <class Model>
 ElementOutcome belytschko_tsay(ShellContext& c, const Model& model, Index e) {
-  Shells& sh = c.st.shells;
+  Shells& sh = c.sh;
   const auto i = static_cast<std::size_t>(e);
-  const auto [k, f, out] = start_element(c.st, e);
+  const auto [k, f, out] = start_element(c.st, c.sh, e);
   if (!(f.area > 0.0)) return {0.0, true, false};
   double gamma[4];
   hourglass_vector(f, gamma);
@@ -137,12 +137,12 @@ ElementOutcome belytschko_tsay(ShellContext& c, const Model& model, Index e) {
   }
   const bool all_failed = failed == c.block.layers;
   return {shell_step(c, k.x, f.area, k.triangle), false, all_failed,
-          fe::runaway(f.area, c.st.shells.initial_area[static_cast<std::size_t>(e)])};
+          fe::runaway(f.area, c.sh.initial_area[static_cast<std::size_t>(e)])};
 }
 
 template <class Model>
 void block_pass(ShellContext& c, const Model& model, fe::PassTotals& totals) {
-  Shells& s = c.st.shells;
+  Shells& s = c.sh;
   fe::element_loop(
       c.block.begin, c.block.end,
       fe::ElementArrays{s.eroded, s.corner_force, 24, s.mass, s.added_mass, s.time_step},
@@ -164,11 +164,11 @@ void block_pass(ShellContext& c, const Model& model, fe::PassTotals& totals) {
 
 }  // namespace
 
-Mat3 shell_axes(const State& state, Index element) {
-  const auto& conn = state.shells.nodes[static_cast<std::size_t>(element)];
+Mat3 shell_axes(const Nodes& nodes, const Shells& shells, Index element) {
+  const auto& conn = shells.nodes[static_cast<std::size_t>(element)];
   Vec3 x[4];
   for (int n = 0; n < 4; ++n)
-    x[n] = state.nodes.position.col(conn[static_cast<std::size_t>(n)]);
+    x[n] = nodes.position.col(conn[static_cast<std::size_t>(n)]);
   const Frame f = frame(x);
   Mat3 r = Mat3::Identity();
   if (f.area > 0.0) {
@@ -179,19 +179,19 @@ Mat3 shell_axes(const State& state, Index element) {
   return r;
 }
 
-ElementPassResult shell_element_pass(State& state, const ShellPassInput& input) {
+ElementPassResult shell_element_pass(State& state, Shells& shells, const ShellPassInput& input) {
   fe::PassTotals totals;
-  for (const ShellBlock& block : state.shells.blocks) {
+  for (const ShellBlock& block : shells.blocks) {
     const Material& mat = state.materials[static_cast<std::size_t>(block.material)];
-    ShellContext c{state, block, mat, input, youngs_modulus(mat), poisson_ratio(mat)};
+    ShellContext c{state, shells, block, mat, input, youngs_modulus(mat), poisson_ratio(mat)};
     std::visit([&](const auto& model) { block_pass(c, model, totals); }, mat.model);
   }
   return totals.result();
 }
 
-void gather_shell_forces(const State& state, NodalForces& f) {
-  fe::gather_forces_and_moments(state, state.shells.corner_force, state.nodes.shell_corner_offsets,
-                                state.nodes.shell_corners, f);
+void gather_shell_forces(const State& state, const Shells& shells, NodalForces& f) {
+  fe::gather_forces_and_moments(state, shells.corner_force, shells.corner_offsets,
+                                shells.node_corners, f);
 }
 
 }  // namespace mcdyna::solver

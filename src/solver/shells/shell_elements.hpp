@@ -7,7 +7,7 @@
 /// control of the membrane, bending and warping modes. Every element writes only its own data,
 /// so results do not depend on the thread count.
 #include "solver/fe/element_loop.hpp"  // ElementPassResult
-#include "solver/state.hpp"
+#include "solver/shells/shells.hpp"
 
 namespace mcdyna::solver {
 
@@ -17,15 +17,15 @@ struct ShellPassInput {
   double mass_scaling_step = 0.0;  ///< target dt with mass scaling (TSSFAC*|DT2MS|), 0 = off
 };
 
-ElementPassResult shell_element_pass(State& state, const ShellPassInput& input);
+ElementPassResult shell_element_pass(State& state, Shells& shells, const ShellPassInput& input);
 
 /// Sums the shells' corner forces into the nodal forces and their corner moments into the
-/// nodal moments (gather over Nodes::shell_corners).
-void gather_shell_forces(const State& state, NodalForces& f);
+/// nodal moments (gather over Shells::node_corners).
+void gather_shell_forces(const State& state, const Shells& shells, NodalForces& f);
 
 /// The element's corotational axes at the current geometry, as columns e1 e2 e3 (e3 the normal):
 /// its stored stresses are components on these.
-Mat3 shell_axes(const State& state, Index element);
+Mat3 shell_axes(const Nodes& nodes, const Shells& shells, Index element);
 
 /// Young's modulus and Poisson's ratio of a compiled material (from its G and K).
 double youngs_modulus(const Material& m);

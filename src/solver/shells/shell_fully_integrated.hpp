@@ -66,9 +66,9 @@ inline ShearRow covariant_shear(const Frame& f, double xi, double eta, int along
 
 template <class Model>
 fe::ElementOutcome fully_integrated(ShellContext& c, const Model& model, Index e) {
-  Shells& sh = c.st.shells;
+  Shells& sh = c.sh;
   const auto i = static_cast<std::size_t>(e);
-  const auto [k, f, out] = start_element(c.st, e);
+  const auto [k, f, out] = start_element(c.st, c.sh, e);
   if (!(f.area > 0.0)) return {0.0, true, false};
   const auto [vx, vy, vz, tx, ty] = in_frame(k, f, 4);
   // Tying points of the assumed shear: the xi-shear at the edge midpoints (0, -1) and (0, 1),
@@ -140,7 +140,7 @@ fe::ElementOutcome fully_integrated(ShellContext& c, const Model& model, Index e
   for (int n = 0; n < 4; ++n)
     add_corner(out, f, n, k.triangle, fx[n], fy[n], fz[n], mx[n], my[n]);
   return {shell_step(c, k.x, f.area, k.triangle), false, failed == 4 * layers,
-          fe::runaway(f.area, c.st.shells.initial_area[static_cast<std::size_t>(e)])};
+          fe::runaway(f.area, c.sh.initial_area[static_cast<std::size_t>(e)])};
 }
 
 }  // namespace mcdyna::solver::shell_kernel

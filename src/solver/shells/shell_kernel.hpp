@@ -67,6 +67,7 @@ struct Resultants {
 
 struct ShellContext {
   State& st;
+  Shells& sh;
   const ShellBlock& block;
   const Material& mat;
   const ShellPassInput& in;
@@ -79,7 +80,7 @@ struct ShellContext {
 template <class Model>
 double integrate_layers(ShellContext& c, const Model& model, Index e, Index first, const Rates& r,
                         double t, Resultants& res, int& failed) {
-  Shells& sh = c.st.shells;
+  Shells& sh = c.sh;
   const ShellBlock& b = c.block;
   const auto i = static_cast<std::size_t>(e);
   const double dt = c.in.step;
@@ -140,7 +141,7 @@ double integrate_layers(ShellContext& c, const Model& model, Index e, Index firs
 // The element's work this step (area times work per area) into its internal energy and, for
 // MAT_015, its adiabatic temperature.
 inline void charge_work(ShellContext& c, Index e, double work) {
-  Shells& sh = c.st.shells;
+  Shells& sh = c.sh;
   const auto i = static_cast<std::size_t>(e);
   sh.internal_energy[i] += work;
   if (c.mat.specific_heat > 0.0) {
@@ -174,9 +175,9 @@ struct Corners {
   bool triangle = false;  ///< the fourth corner repeats the third
 };
 
-inline Corners corners(const State& st, Index e) {
+inline Corners corners(const State& st, const Shells& sh, Index e) {
   Corners k;
-  const auto& conn = st.shells.nodes[static_cast<std::size_t>(e)];
+  const auto& conn = sh.nodes[static_cast<std::size_t>(e)];
   k.triangle = conn[3] == conn[2];
   for (std::size_t n = 0; n < 4; ++n) {
     k.x[n] = st.nodes.position.col(conn[n]);
@@ -210,10 +211,10 @@ struct ElementStart {
   double* out;
 };
 
-inline ElementStart start_element(State& st, Index e) {
-  double* out = &st.shells.corner_force[24 * static_cast<std::size_t>(e)];
+inline ElementStart start_element(const State& st, Shells& sh, Index e) {
+  double* out = &sh.corner_force[24 * static_cast<std::size_t>(e)];
   std::fill(out, out + 24, 0.0);
-  const Corners k = corners(st, e);
+  const Corners k = corners(st, sh, e);
   return {k, frame(k.x), out};
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// The shells' restart dump: the member lists of what changes during a run (dump.hpp).
 #include "solver/fe/fe_dump.hpp"
+#include "solver/shells/shells.hpp"
 
 namespace mcdyna::solver {
 
@@ -16,11 +17,12 @@ template <class Ar>
 void fields(Ar& ar, Shells& s) {
   ar(s.ids, s.nodes, s.part, s.initial_thickness, s.thickness, s.initial_area, s.mass,
      s.corner_inertia, s.temperature, s.internal_energy, s.hourglass_energy, s.hourglass_force,
-     s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points);
+     s.time_step, s.added_mass, s.eroded, s.corner_force, s.blocks, s.points, s.corner_offsets,
+     s.node_corners);
 }
 
 inline constexpr auto kShellsDumpedSizes = sizes_of<Shells, ShellBlock>();
-static_assert(!kSizesPinned || kShellsDumpedSizes == decltype(kShellsDumpedSizes){488, 256},
+static_assert(!kSizesPinned || kShellsDumpedSizes == decltype(kShellsDumpedSizes){536, 256},
               "Shells or ShellBlock changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

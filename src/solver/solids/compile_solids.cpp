@@ -1,9 +1,11 @@
 // The deformable solids (*ELEMENT_SOLID of parts with a solid section, not rigid, not SPG): one
 // block per part, their materials, volumes, masses (given to the nodes) and integration points.
 #include <algorithm>
+#include <utility>
 
 #include "solver/compile.hpp"
 #include "solver/solids/hex_geometry.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -17,8 +19,7 @@ int distinct_nodes(const std::array<Index, 8>& conn) {
   return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
 }
 
-void allocate_solid_state(State& s, Index points, bool back_stress) {
-  Solids& so = s.solids;
+void allocate_solid_state(Solids& so, Index points, bool back_stress) {
   const auto n = static_cast<std::size_t>(so.count());
   so.volume = so.initial_volume;
   so.internal_energy.assign(n, 0.0);
@@ -39,7 +40,7 @@ void allocate_solid_state(State& s, Index points, bool back_stress) {
 }  // namespace
 
 void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlocks& /*before*/,
-                    core::Diagnostics& d) {
+                    Blocks& own, core::Diagnostics& d) {
   Nodes& nd = s.nodes;
   // Solids grouped per deformable part (parts in deck order) into blocks.
   std::vector<std::vector<std::size_t>> by_part(m.parts.size());
@@ -47,7 +48,7 @@ void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlock
     const auto p = m.index.parts.find(m.solids[e].part);
     if (p != model::IdIndex::kNone) by_part[static_cast<std::size_t>(p)].push_back(e);
   }
-  Solids& so = s.solids;
+  Solids so;
   Index points = 0;
   bool back = false;
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
@@ -122,8 +123,10 @@ void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlock
       so.blocks.push_back(b);
     }
   }
-  allocate_solid_state(s, points, back);
+  if (so.count() == 0) return;
+  allocate_solid_state(so, points, back);
   build_node_corners(
-      nd.count(), s.solids.nodes, [](std::size_t) { return 8; }, nd.corner_offsets, nd.corners);
+      nd.count(), so.nodes, [](std::size_t) { return 8; }, so.corner_offsets, so.node_corners);
+  own.push_back(make_hexahedra_block(std::move(so)));
 }
 }  // namespace mcdyna::solver::detail

@@ -3,44 +3,68 @@
 // into the nodes in the fixed order of Nodes::corners.
 #include <fmt/format.h>
 
+#include <memory>
+#include <utility>
+
 #include "solver/block.hpp"
 #include "solver/fe/added_mass.hpp"
 #include "solver/fe/element_energies.hpp"
 #include "solver/results.hpp"
 #include "solver/solids/solid_elements.hpp"
+#include "solver/solids/solids.hpp"
 #include "solver/solids/solids_dump.hpp"
 
 namespace mcdyna::solver {
 
 namespace {
 
+// Result of element `e` of `block`: the mean of its points' stress and plastic strain, the
+// largest damage.
+ElementResult element_result(const Solids& so, const SolidBlock& block, Index e) {
+  ElementResult r;
+  const int np = block.points_per_element;
+  const Index first = block.point_begin + np * (e - block.begin);
+  const auto& pts = so.points;
+  std::array<double, 6> dev{};
+  for (Index p = first; p < first + np; ++p) {
+    for (int k = 0; k < 6; ++k)
+      dev[static_cast<std::size_t>(k)] += pts.deviator(k, p) / np;
+    r.plastic_strain += pts.plastic_strain[static_cast<std::size_t>(p)] / np;
+    r.damage = std::max(r.damage, pts.damage[static_cast<std::size_t>(p)]);
+  }
+  set_stress(r, dev, so.pressure[static_cast<std::size_t>(e)]);
+  return r;
+}
+
 class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
  public:
-  explicit HexahedraBlock(long count) : count_(count) {}
+  explicit HexahedraBlock(Solids solids) : solids_(std::move(solids)) {}
+  [[nodiscard]] const Solids& solids() const { return solids_; }
+  [[nodiscard]] Solids& solids() { return solids_; }
   [[nodiscard]] std::string dump_name() const override { return "hexahedra"; }
   [[nodiscard]] std::string dump_layout() const override { return sizes_text(kSolidsDumpedSizes); }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.solids);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(solids_);
   }
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
-  [[nodiscard]] long elements() const override { return count_; }
-  [[nodiscard]] Index numbered_elements() const override { return static_cast<Index>(count_); }
+  [[nodiscard]] long elements() const override { return solids_.count(); }
+  [[nodiscard]] Index numbered_elements() const override { return solids_.count(); }
   [[nodiscard]] ElementRef element(const State& s, Index k) const override {
     const auto i = static_cast<std::size_t>(k);
-    return {"solid", s.solids.ids[i], s.parts[static_cast<std::size_t>(s.solids.part[i])].id};
+    return {"solid", solids_.ids[i], s.parts[static_cast<std::size_t>(solids_.part[i])].id};
   }
 
-  void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
+  void add_energies(const State& /*s*/, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    fe::add_element_energies(s.solids, e);
+    fe::add_element_energies(solids_, e);
   }
 
   // Kinetic energy and momentum from each element's lumped mass (1/8 per corner), so shared
   // nodes split between parts.
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const Solids& so = s.solids;
+    const Solids& so = solids_;
     for (std::size_t e = 0; e < so.ids.size(); ++e) {
       PartSummary& ps = parts[static_cast<std::size_t>(so.part[e])];
       (so.eroded[e] ? ps.eroded_internal : ps.internal) += so.internal_energy[e];
@@ -59,18 +83,17 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
     for (Index n = 0; n < nd.count(); ++n) {
       const auto nn = static_cast<std::size_t>(n);
       double sum = 0.0;
-      for (Index k = nd.corner_offsets[nn]; k < nd.corner_offsets[nn + 1]; ++k)
-        sum +=
-            s.solids
-                .added_mass[static_cast<std::size_t>(nd.corners[static_cast<std::size_t>(k)] / 8)];
+      for (Index k = solids_.corner_offsets[nn]; k < solids_.corner_offsets[nn + 1]; ++k)
+        sum += solids_.added_mass[static_cast<std::size_t>(
+            solids_.node_corners[static_cast<std::size_t>(k)] / 8)];
       nodal[nn] += sum / 8.0;
     }
   }
 
   void forces(State& s, NodalForces& f, ForceReport& r) override {
     const ElementPassResult e = solid_element_pass(
-        s, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
-    gather_solid_forces(s, f);
+        s, solids_, ElementPassInput{s.step, s.time_control.scale_factor, s.mass_scaling_dt});
+    gather_solid_forces(s, solids_, f);
     if (e.mass_changed) refresh_added_mass(s);
     if (e.critical_step < r.critical_step) {
       r.critical_step = e.critical_step;
@@ -86,26 +109,40 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
 
   // The solids not eroded, with their mean stress, pressure and temperature.
   void write_state(const State& s, StateSink& sink) const override {
-    const Solids& so = s.solids;
+    const Solids& so = solids_;
     for (const SolidBlock& block : so.blocks) {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
         if (so.eroded[i]) continue;
         sink.cell(CellShape::hexahedron, so.nodes[i].data(),
-                  {element_result(s, block, e), so.pressure[i], so.temperature[i], part});
+                  {element_result(so, block, e), so.pressure[i], so.temperature[i], part});
       }
     }
   }
 
  private:
-  long count_;
+  Solids solids_;
 };
 
 }  // namespace
 
-void add_hexahedra_blocks(State& s, Blocks& blocks) {
-  if (s.solids.count() > 0) blocks.push_back(std::make_unique<HexahedraBlock>(s.solids.count()));
+std::unique_ptr<Block> make_hexahedra_block(Solids solids) {
+  return std::make_unique<HexahedraBlock>(std::move(solids));
+}
+
+const Solids& solids_of(const State& s) {
+  return owned_by(s, &HexahedraBlock::solids);
+}
+
+const Solids& solids_of(const CompiledBlocks& before) {
+  return owned_by(before, &HexahedraBlock::solids);
+}
+
+Solids* solids_in(State& s) {
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    if (auto* found = dynamic_cast<HexahedraBlock*>(b.get())) return &found->solids();
+  return nullptr;
 }
 
 }  // namespace mcdyna::solver

@@ -32,8 +32,8 @@ Kinematics kinematics(const Corners& v, const double b[8][3]) {
   return kinematics_from_gradient(l);
 }
 
-void load_corners(const State& st, Index e, Corners& x, Corners& v) {
-  const auto& nd = st.solids.nodes[static_cast<std::size_t>(e)];
+void load_corners(const State& st, const Solids& so, Index e, Corners& x, Corners& v) {
+  const auto& nd = so.nodes[static_cast<std::size_t>(e)];
   for (int n = 0; n < 8; ++n) {
     const double* xp = st.nodes.position.col(nd[n]).data();
     const double* vp = st.nodes.velocity.col(nd[n]).data();
@@ -46,6 +46,7 @@ void load_corners(const State& st, Index e, Corners& x, Corners& v) {
 
 struct ElementContext {
   State& st;
+  Solids& so;
   const SolidBlock& block;
   const Material& mat;
   const ElementPassInput& in;
@@ -62,7 +63,7 @@ struct VolumetricResult {
 
 VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, double trace,
                                    double dev_work, double length, bool mid_step) {
-  Solids& s = c.st.solids;
+  Solids& s = c.so;
   const auto i = static_cast<std::size_t>(e);
   const PointVolumetrics v =
       volumetric_point_update(c.mat, c.block.bulk_viscosity, s.initial_volume[i], s.volume[i],
@@ -79,7 +80,7 @@ VolumetricResult volumetric_update(ElementContext& c, Index e, double volume, do
 template <class Model>
 double point_update(ElementContext& c, const Model& model, Index point, const Kinematics& k,
                     double temperature, double pressure, bool& failed) {
-  MaterialPoints& mp = c.st.solids.points;
+  MaterialPoints& mp = c.so.points;
   const auto p = static_cast<std::size_t>(point);
   double* alpha = mp.back_stress.size() > 0 ? mp.back_stress.col(point).data() : nullptr;
   return deviatoric_point_update(
@@ -87,9 +88,9 @@ double point_update(ElementContext& c, const Model& model, Index point, const Ki
       PointState{mp.deviator.col(point).data(), alpha, mp.plastic_strain[p], mp.damage[p]}, failed);
 }
 
-void zero_point_deviators(State& st, Index first, int count) {
+void zero_point_deviators(Solids& so, Index first, int count) {
   for (Index p = first; p < first + count; ++p)
-    st.solids.points.deviator.col(p).setZero();
+    so.points.deviator.col(p).setZero();
 }
 
 // Corner forces f_I = -V sigma b_I for a point with deviator s and pressure + viscosity pq.
@@ -163,7 +164,7 @@ double hourglass_forces(ElementContext& c, Index e, const CentrePoint& p,
   if (hg.coefficient <= 0.0) return 0.0;
   const double rho = vr.density, c2 = vr.wave_speed_squared;
   const double dt = c.in.step;
-  double* q = &c.st.solids.hourglass_force[12 * static_cast<std::size_t>(e)];
+  double* q = &c.so.hourglass_force[12 * static_cast<std::size_t>(e)];
   // Stiffness form: resist = Q_old + kappa dt qdot; viscous form: resist = a_h qdot.
   double rate_factor = 0.0, carry = 0.0;
   if (hg.stiffness()) {
@@ -200,19 +201,19 @@ double hourglass_forces(ElementContext& c, Index e, const CentrePoint& p,
 }
 
 // Clears the element's corner forces and loads its corner positions and velocities.
-double* start_element(State& st, Index e, Corners& x, Corners& v) {
-  double* f = &st.solids.corner_force[24 * static_cast<std::size_t>(e)];
+double* start_element(const State& st, Solids& so, Index e, Corners& x, Corners& v) {
+  double* f = &so.corner_force[24 * static_cast<std::size_t>(e)];
   std::fill(f, f + 24, 0.0);
-  load_corners(st, e, x, v);
+  load_corners(st, so, e, x, v);
   return f;
 }
 
 template <class Model>
 ElementOutcome one_point_element(ElementContext& c, const Model& model, Index e) {
-  Solids& s = c.st.solids;
+  Solids& s = c.so;
   const auto i = static_cast<std::size_t>(e);
   Corners x, v;
-  double* f = start_element(c.st, e, x, v);
+  double* f = start_element(c.st, c.so, e, x, v);
   const CentrePoint cp = centre_point(x, v);
   if (!(cp.volume > 0.0)) return {0.0, true, false};
   const double volume = cp.volume;
@@ -227,7 +228,7 @@ ElementOutcome one_point_element(ElementContext& c, const Model& model, Index e)
   const double length = volume / hex::max_face_area(x);
   const VolumetricResult vr =
       volumetric_update(c, e, volume, k.trace, dev_work, length, k.objective);
-  if (vr.zero_deviator) zero_point_deviators(c.st, point, 1);
+  if (vr.zero_deviator) zero_point_deviators(c.so, point, 1);
   // Corner forces f_n = -m b_n + hourglass, with m = V sigma (less the hourglass b-term).
   const double* dev = s.points.deviator.col(point).data();
   const double pq = vr.pressure_total;
@@ -246,10 +247,10 @@ ElementOutcome one_point_element(ElementContext& c, const Model& model, Index e)
 
 template <class Model>
 ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, Index e) {
-  Solids& s = c.st.solids;
+  Solids& s = c.so;
   const auto i = static_cast<std::size_t>(e);
   Corners x, v;
-  double* f = start_element(c.st, e, x, v);
+  double* f = start_element(c.st, c.so, e, x, v);
   const hex::GaussPoints& gauss = hex::gauss_points();
   hex::Gradients g[8];
   Kinematics k[8];
@@ -287,7 +288,7 @@ ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, 
   const double length = volume / hex::max_face_area(x);
   const VolumetricResult vr =
       volumetric_update(c, e, volume, trace, dev_work, length, c.block.objective);
-  if (vr.zero_deviator) zero_point_deviators(c.st, first, 8);
+  if (vr.zero_deviator) zero_point_deviators(c.so, first, 8);
   for (int p = 0; p < 8; ++p)
     add_stress_forces(s.points.deviator.col(first + p).data(), vr.pressure_total, g[p].det, g[p].b,
                       f);
@@ -297,7 +298,7 @@ ElementOutcome selective_reduced_element(ElementContext& c, const Model& model, 
 // The elements of one block with its material's deviatoric model (visited once per block).
 template <class Model>
 void block_pass(ElementContext& c, const Model& model, fe::PassTotals& totals) {
-  Solids& s = c.st.solids;
+  Solids& s = c.so;
   const SolidBlock& block = c.block;
   const bool one_point = block.formulation == SolidFormulation::one_point;
   fe::element_loop(
@@ -314,19 +315,19 @@ void block_pass(ElementContext& c, const Model& model, fe::PassTotals& totals) {
 
 }  // namespace
 
-ElementPassResult solid_element_pass(State& state, const ElementPassInput& input) {
+ElementPassResult solid_element_pass(State& state, Solids& solids, const ElementPassInput& input) {
   fe::PassTotals totals;
-  for (const SolidBlock& block : state.solids.blocks) {
+  for (const SolidBlock& block : solids.blocks) {
     const Material& mat = state.materials[static_cast<std::size_t>(block.material)];
-    ElementContext c{state, block, mat, input};
+    ElementContext c{state, solids, block, mat, input};
     std::visit([&](const auto& model) { block_pass(c, model, totals); }, mat.model);
   }
   return totals.result();
 }
 
-void gather_solid_forces(const State& state, NodalForces& forces) {
+void gather_solid_forces(const State& state, const Solids& solids, NodalForces& forces) {
   const Nodes& nd = state.nodes;
-  const double* cf = state.solids.corner_force.data();
+  const double* cf = solids.corner_force.data();
   double* f = forces.force.data();
   // Another process gathers the nodes this one does not move.
   const std::size_t count = state.ownership.moved_count(nd.count());
@@ -334,9 +335,10 @@ void gather_solid_forces(const State& state, NodalForces& forces) {
   for (std::size_t k = 0; k < count; ++k) {
     const Index n = state.ownership.moved_node(k);
     double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (Index k = nd.corner_offsets[static_cast<std::size_t>(n)];
-         k < nd.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k) {
-      const double* c = cf + 3 * static_cast<std::size_t>(nd.corners[static_cast<std::size_t>(k)]);
+    for (Index k = solids.corner_offsets[static_cast<std::size_t>(n)];
+         k < solids.corner_offsets[static_cast<std::size_t>(n) + 1]; ++k) {
+      const double* c =
+          cf + 3 * static_cast<std::size_t>(solids.node_corners[static_cast<std::size_t>(k)]);
       fx += c[0];
       fy += c[1];
       fz += c[2];

@@ -8,6 +8,7 @@
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
 #include "solver/solids/hex_geometry.hpp"
+#include "solver/solids/solids.hpp"
 #include "solver/spg/particles.hpp"
 
 namespace mcdyna::solver::detail {
@@ -72,9 +73,8 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBl
   nd.smoothed.assign(static_cast<std::size_t>(nd.count()), 0);
   // Nodes a particle shares with something else that moves them: FE solids, SPC, motions.
   std::vector<std::uint8_t> shared(static_cast<std::size_t>(nd.count()), 0);
-  for (Index n = 0; n < nd.count(); ++n)
-    if (nd.corner_offsets[static_cast<std::size_t>(n) + 1] >
-        nd.corner_offsets[static_cast<std::size_t>(n)])
+  for (const std::array<Index, 8>& corners : solids_of(before).nodes)
+    for (const Index n : corners)
       shared[static_cast<std::size_t>(n)] = 1;
   const std::vector<std::uint8_t> held = before.held_nodes(nd.count());
   for (Index n = 0; n < nd.count(); ++n)

@@ -16,6 +16,7 @@
 #include "io/history_table.hpp"
 #include "output_support.hpp"
 #include "post/history_compare.hpp"
+#include "solver/solids/solids.hpp"
 
 namespace mcdyna::test {
 
@@ -538,11 +539,12 @@ TEST_CASE("eroded elements vanish from the forces and the d3plot states, their m
     mass0 += m;
   run(sim);
   int eroded = 0;
-  for (std::size_t e = 0; e < sim.state->solids.eroded.size(); ++e)
-    if (sim.state->solids.eroded[e]) {
+  for (std::size_t e = 0; e < solver::solids_of(*sim.state).eroded.size(); ++e)
+    if (solver::solids_of(*sim.state).eroded[e]) {
       ++eroded;
       for (int k = 0; k < 24; ++k)
-        CHECK(sim.state->solids.corner_force[24 * e + static_cast<std::size_t>(k)] == 0.0);
+        CHECK(solver::solids_of(*sim.state).corner_force[24 * e + static_cast<std::size_t>(k)] ==
+              0.0);
     }
   double mass1 = 0.0;
   for (double m : sim.state->nodes.mass)

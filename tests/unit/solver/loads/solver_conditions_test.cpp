@@ -52,7 +52,8 @@ TEST_CASE("prescribed nodal motion: velocity, acceleration and displacement curv
                           "*DEFINE_CURVE\n7\n" + curve));
     run(sim);
     CHECK(sim.result.reason == solver::StopReason::end_time);
-    CHECK(sim.state->solids.points.deviator.cwiseAbs().maxCoeff() < 1e-9);  // no deformation
+    CHECK(solver::solids_of(*sim.state).points.deviator.cwiseAbs().maxCoeff() <
+          1e-9);  // no deformation
     return std::pair{x_displacement(sim, 26), sim.state->time};
   };
   // VAD 0, v = SF * 2t = t: x = t^2 / 2. The central difference integrates a linear velocity
@@ -223,7 +224,7 @@ TEST_CASE("DT2MS mass scaling lifts the step to TSSFAC |DT2MS| and reports the a
   CHECK(e.added_mass > 0.0);
   // The thick elements (step ~0.041 > 0.018) get none: at most the thin layer's 4 elements.
   double scaled = 0.0;
-  for (double m : sim.state->solids.added_mass)
+  for (double m : solver::solids_of(*sim.state).added_mass)
     scaled += m > 0.0 ? 1.0 : 0.0;
   CHECK(scaled == 4.0);
 }
@@ -281,8 +282,8 @@ TEST_CASE(
     warnings += m.message + "\n";
   CHECK(warnings.find("degenerate") != std::string::npos);
   // Wedge volume 1/2, tetrahedron 1/6, density 3.
-  CHECK(state->solids.mass[0] == doctest::Approx(1.5).epsilon(1e-12));
-  CHECK(state->solids.mass[1] == doctest::Approx(0.5).epsilon(1e-12));
+  CHECK(solver::solids_of(*state).mass[0] == doctest::Approx(1.5).epsilon(1e-12));
+  CHECK(solver::solids_of(*state).mass[1] == doctest::Approx(0.5).epsilon(1e-12));
   const solver::RunResult r = solver::run(*state, {});
   CHECK(r.reason == solver::StopReason::end_time);
   CHECK(state->nodes.position.allFinite());

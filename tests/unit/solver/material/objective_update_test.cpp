@@ -126,7 +126,8 @@ TEST_CASE("CONTROL_ACCURACY: OSU for all parts or the PIDOSU set, the other fiel
   // (hexahedron block, SPG part) take the objective update
   auto objective = [&](const std::string& controls, core::Diagnostics& d) {
     const auto s = compiled(controls, d);
-    return std::pair{s->solids.blocks.front().objective, s->spg.front().settings.objective};
+    return std::pair{solver::solids_of(*s).blocks.front().objective,
+                     s->spg.front().settings.objective};
   };
   core::Diagnostics d;
   SUBCASE("no keyword: LS-DYNA's default OSU 0") {

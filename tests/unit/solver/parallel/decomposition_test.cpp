@@ -68,7 +68,7 @@ TEST_CASE("Decomposition: every node owned once, SPG and FE each spread over all
   solver::State& s = *sim.state;
   for (solver::spg::Domain& d : s.spg)
     solver::spg::initialise(s, d);
-  const Index elements = s.solids.count();
+  const Index elements = solver::solids_of(s).count();
   const Index particles = s.spg.front().count();
   REQUIRE(elements == 128);
   REQUIRE(particles == 7 * 5 * 5);

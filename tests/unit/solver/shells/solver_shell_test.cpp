@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "shell_decks.hpp"
-#include "solver/results.hpp"
+#include "solver/shells/shell_result.hpp"
 #include "solver_support.hpp"
 
 using namespace mcdyna;
@@ -72,8 +72,10 @@ TEST_CASE("shell membrane: uniaxial plane-stress tension follows the MAT_024 har
     test::run(sim);
     REQUIRE(sim.result.reason == solver::StopReason::end_time);
     const solver::State& s = *sim.state;
-    const solver::ShellBlock& b = s.shells.blocks.front();
-    const solver::ElementResult r = solver::shell_result(s, b, 0, solver::ShellSurface::all);
+    const solver::Shells& shells = solver::shells_of(s);
+    const solver::ShellBlock& b = shells.blocks.front();
+    const solver::ElementResult r =
+        solver::shell_result(s.nodes, shells, b, 0, solver::ShellSurface::all);
     const double stretch = s.nodes.position(0, 1) - s.nodes.position(0, 0);
     const double plastic = std::log(stretch) - r.stress[0] / 200e3;
     MESSAGE("stretch ", stretch, ": sxx ", r.stress[0], " syy ", r.stress[1], " szz ", r.stress[2],
@@ -86,7 +88,7 @@ TEST_CASE("shell membrane: uniaxial plane-stress tension follows the MAT_024 har
     CHECK(std::abs(r.stress[2]) < 1e-9 * r.stress[0]);
     const double lateral = -0.5 * r.plastic_strain - 0.3 * r.stress[0] / 200e3;
     const double width = s.nodes.position(1, 3) - s.nodes.position(1, 0);
-    const double thickness = s.shells.thickness[0] / s.shells.initial_thickness[0];
+    const double thickness = shells.thickness[0] / shells.initial_thickness[0];
     MESSAGE("width strain ", std::log(width), ", thickness strain ", std::log(thickness),
             ", expected ", lateral);
     CHECK(std::log(width) == doctest::Approx(lateral).epsilon(0.01));
@@ -271,9 +273,10 @@ TEST_CASE("shell membrane wave: a struck strip carries rho c v at the bar speed"
     test::run(sim);
     REQUIRE(sim.result.reason == solver::StopReason::end_time);
     const solver::State& s = *sim.state;
-    const solver::ShellBlock& block = s.shells.blocks[0];
+    const solver::Shells& shells = solver::shells_of(s);
+    const solver::ShellBlock& block = shells.blocks[0];
     auto sxx = [&](int i) {  // element column i, the row at y 0-1
-      return -solver::shell_result(s, block, i, solver::ShellSurface::all).stress[0];
+      return -solver::shell_result(s.nodes, shells, block, i, solver::ShellSurface::all).stress[0];
     };
     const double c = std::sqrt(210e3 / 7.85e-9), expected = 7.85e-9 * c * 1000.0;
     double behind = 0.0;

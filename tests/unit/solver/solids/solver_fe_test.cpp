@@ -129,10 +129,11 @@ TEST_CASE("results are bitwise identical for 1 and 2 threads") {
   const auto& p1 = one.state->nodes.position;
   const auto& p2 = two.state->nodes.position;
   CHECK(std::memcmp(p1.data(), p2.data(), sizeof(double) * p1.size()) == 0);
-  const auto& d1 = one.state->solids.points.deviator;
-  const auto& d2 = two.state->solids.points.deviator;
+  const auto& d1 = solver::solids_of(*one.state).points.deviator;
+  const auto& d2 = solver::solids_of(*two.state).points.deviator;
   CHECK(std::memcmp(d1.data(), d2.data(), sizeof(double) * d1.size()) == 0);
-  CHECK(same(one.state->solids.internal_energy, two.state->solids.internal_energy));
+  CHECK(same(solver::solids_of(*one.state).internal_energy,
+             solver::solids_of(*two.state).internal_energy));
   CHECK(one.state->time == two.state->time);
 }
 
@@ -170,7 +171,7 @@ TEST_CASE("*MAT_NULL with an EOS: a water column struck by a piston carries rho 
   Simulation sim = prepare(dir, deck);
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  const solver::Solids& so = sim.state->solids;
+  const solver::Solids& so = solver::solids_of(*sim.state);
   const double acoustic = 1e-9 * std::sqrt(2200.0 / 1e-9) * 1000.0;
   // Elements 36-40 are the top 5 mm (well behind the front), 1-10 the bottom (not reached).
   double behind = 0.0;

@@ -394,7 +394,7 @@ TEST_CASE("MC-SPG coupled to FE by common nodes: total momentum kept to round-of
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(6, 5, 4, 1000, 2));
   REQUIRE(sim.state->spg.size() == 1);
-  REQUIRE(sim.state->solids.count() == 6 * 5 * 2);
+  REQUIRE(solver::solids_of(*sim.state).count() == 6 * 5 * 2);
   set_velocity_field(*sim.state);
   spg::initialise(*sim.state, sim.state->spg.front());
   long shared = 0;
