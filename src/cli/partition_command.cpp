@@ -96,13 +96,13 @@ int run_partition(const PartitionOptions& options, std::ostream& out, std::ostre
   core::print_diagnostics(err, compile_diags, d.deck.files, options.max_messages);
   if (!state) return 1;
   // The SPG rows are those of the first kernel, as a run starts with.
-  for (solver::spg::Domain& dom : state->spg)
-    solver::spg::initialise(*state, dom);
+  for (solver::spg::Domain* dom : solver::spg::domains_of(*state))
+    solver::spg::initialise(*state, *dom);
   fmt::print(out, "{}: {} nodes, {} deformable solids, {} SPG particles\n", options.deck.string(),
              state->nodes.count(), solver::solids_of(*state).count(), [&] {
                solver::Index n = 0;
-               for (const solver::spg::Domain& dom : state->spg)
-                 n += dom.count();
+               for (const solver::spg::Domain* dom : solver::spg::domains_of(*state))
+                 n += dom->count();
                return n;
              }());
   for (const int r : options.ranks)

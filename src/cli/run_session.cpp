@@ -21,6 +21,7 @@
 #include "solver/energy.hpp"
 #include "solver/run_overrides.hpp"
 #include "solver/solids/solids.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::cli {
 
@@ -97,7 +98,7 @@ std::optional<int> RunSession::open(CompiledDeck& compiled) {
   progress_.emplace(out_, log_, terminal, options_.quiet,
                     end_time > 0.0 ? std::min(1.0, state_->time / end_time) : 0.0);
   switches_.emplace(dir_, writer_, out_);
-  if (options_.spg_angular_budget) budgets_.resize(state_->spg.size());
+  if (options_.spg_angular_budget) budgets_.resize(solver::spg::domains_of(*state_).size());
   start_ = std::chrono::steady_clock::now();
   start_cycle_ = state_->cycle;
   return std::nullopt;
@@ -224,7 +225,7 @@ void RunSession::add_control_hooks(solver::RunHooks& hooks) {
     hooks.velocities_advanced = [this](const solver::State& s, const solver::NodalForces& f,
                                        const solver::StepTimes& t) {
       for (std::size_t k = 0; k < budgets_.size(); ++k)
-        budgets_[k].record(s, s.spg[k], f.force, t.step, t.mean);
+        budgets_[k].record(s, solver::spg::domain_of(s, k), f.force, t.step, t.mean);
     };
   hooks.stop_requested = [this] { return stop_signal_ != 0 || !output_failure_.empty(); };
   hooks.sense_switches = [this] { return switches_->poll(); };

@@ -1,6 +1,7 @@
 #include "cli/run_timing.hpp"
 
 #include "solver/block.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -44,7 +45,7 @@ void print_timing(std::ostream& summary, const solver::RunResult& result,
         continue;
     } else if (p == solver::PhaseTimes::exchange) {
       if (processes == 1) continue;
-    } else if (p >= solver::PhaseTimes::spg_neighbours && state.spg.empty()) {
+    } else if (p >= solver::PhaseTimes::spg_neighbours && solver::spg::domains_of(state).empty()) {
       continue;
     }
     fmt::print(summary, "  {:<22}{:10.3f} s {:6.1f} %", solver::PhaseTimes::name(p), sec,

@@ -21,8 +21,8 @@ void print_angular_budgets(std::ostream& out, const solver::State& s,
         "{:.4e}); the scheme's own part A + B - C (theory.md, Angular momentum) "
         "({:.4e}, {:.4e}, {:.4e}): {:.3e} of the forces' moment impulse, {:.3e} of the initial "
         "sum m|x - x_c||u| {:.4e}{}\n",
-        s.parts[static_cast<std::size_t>(s.spg[k].part)].id, dl.x(), dl.y(), dl.z(), b.sum_c.x(),
-        b.sum_c.y(), b.sum_c.z(), defect.x(), defect.y(), defect.z(),
+        s.parts[static_cast<std::size_t>(solver::spg::domain_of(s, k).part)].id, dl.x(), dl.y(),
+        dl.z(), b.sum_c.x(), b.sum_c.y(), b.sum_c.z(), defect.x(), defect.y(), defect.z(),
         b.sum_c.norm() > 0.0 ? defect.norm() / b.sum_c.norm() : 0.0,
         b.scale > 0.0 ? defect.norm() / b.scale : 0.0, b.scale,
         b.pinned ? " (pinned particles: constraint and coupling impulses are not in the "
@@ -32,8 +32,9 @@ void print_angular_budgets(std::ostream& out, const solver::State& s,
 }
 
 void print_spg_summary(std::ostream& out, const solver::State& s) {
-  for (std::size_t k = 0; k < s.spg.size(); ++k) {
-    const solver::spg::Domain& d = s.spg[k];
+  const std::vector<const solver::spg::Domain*> domains = solver::spg::domains_of(s);
+  for (std::size_t k = 0; k < domains.size(); ++k) {
+    const solver::spg::Domain& d = *domains[k];
     const solver::spg::NeighbourList gathered =
         s.ownership.split_part(k) ? solver::spg::rows_on_root(s, k) : solver::spg::NeighbourList{};
     const solver::spg::NeighbourList& rows = s.ownership.split_part(k) ? gathered : d.kernel.list;

@@ -57,7 +57,8 @@ void print_state_summary(std::ostream& log, const solver::State& s) {
                                  "original SPG, strain-gradient stabilisation (ITB 1, Eqs. 8-12)"};
   static const char* kShapes[] = {"cubic spline, box", "quadratic spline, box",
                                   "cubic spline, sphere"};
-  for (const solver::spg::Domain& d : s.spg) {
+  for (const solver::spg::Domain* dp : solver::spg::domains_of(s)) {
+    const solver::spg::Domain& d = *dp;
     const auto& st = d.settings;
     long shared = 0, surface = 0;
     for (std::size_t i = 0; i < d.particles.nodes.size(); ++i) {

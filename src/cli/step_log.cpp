@@ -9,7 +9,7 @@
 #include "solver/contact/contact.hpp"
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
-#include "solver/spg/domain.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::cli {
 
@@ -65,16 +65,16 @@ void StepLog::add(const solver::State& s) {
     id = static_cast<long>(r.id);
   } else if (s.controlling_particle >= 0) {
     kind = "particle";
-    const auto& d = s.spg[s.controlling_domain];
+    const auto& d = solver::spg::domain_of(s, s.controlling_domain);
     id = s.nodes.ids[static_cast<std::size_t>(
         d.particles.nodes[static_cast<std::size_t>(s.controlling_particle)])];
   }
   // The particle with the smallest step at its physical mass, over all SPG parts.
   const solver::spg::Domain* worst = nullptr;
-  for (const auto& d : s.spg)
-    if (d.kernel.step_bound.physical_particle >= 0 &&
-        (!worst || d.kernel.step_bound.physical < worst->kernel.step_bound.physical))
-      worst = &d;
+  for (const solver::spg::Domain* d : solver::spg::domains_of(s))
+    if (d->kernel.step_bound.physical_particle >= 0 &&
+        (!worst || d->kernel.step_bound.physical < worst->kernel.step_bound.physical))
+      worst = d;
   const double added = solver::total_added_mass(s);
   std::string& out = file_.pending();
   fmt::format_to(std::back_inserter(out), "{},{:.9e},{:.6e},{:.6e},{},{},", s.cycle, s.time, s.step,

@@ -9,6 +9,7 @@
 #include "solver/block.hpp"
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::io {
 
@@ -49,8 +50,8 @@ class Glstat final : public HistoryFile {
       ce_id = r.id;
       c_part = r.part;
       ce_kind = r.kind;
-    } else if (cp >= 0 && s.controlling_domain < s.spg.size()) {
-      const solver::spg::Domain& d = s.spg[s.controlling_domain];
+    } else if (cp >= 0 && s.controlling_domain < solver::spg::domains_of(s).size()) {
+      const solver::spg::Domain& d = solver::spg::domain_of(s, s.controlling_domain);
       cp_node =
           s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(cp)])];
       c_part = s.parts[static_cast<std::size_t>(d.part)].id;

@@ -19,6 +19,7 @@
 
 #include "io/checked_file.hpp"
 #include "solver/block.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::io {
 
@@ -215,10 +216,10 @@ void VtkSeries::write(const State& s, const Eigen::Matrix3Xd& velocity) {
     mass->SetValue(n, static_cast<float>(nd.mass[nn] + nd.added_mass[nn]));
     added->SetValue(n, static_cast<float>(nd.added_mass[nn]));
   }
-  for (const solver::spg::Domain& d : s.spg)
-    for (std::size_t i = 0; i < d.particles.nodes.size(); ++i)
-      added->SetValue(d.particles.nodes[i], added->GetValue(d.particles.nodes[i]) +
-                                                static_cast<float>(d.particles.added_mass[i]));
+  for (const solver::spg::Domain* d : solver::spg::domains_of(s))
+    for (std::size_t i = 0; i < d->particles.nodes.size(); ++i)
+      added->SetValue(d->particles.nodes[i], added->GetValue(d->particles.nodes[i]) +
+                                                 static_cast<float>(d->particles.added_mass[i]));
   grid->GetPointData()->AddArray(mass);
   grid->GetPointData()->AddArray(added);
 

@@ -171,7 +171,6 @@ class DumpedBlock : public Block {
 Blocks make_blocks(State& s, std::vector<Blocks> compiled);
 
 /// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
-void add_spg_blocks(State& s, Blocks& blocks);         // spg/spg_block.cpp
 void add_rigid_body_blocks(State& s, Blocks& blocks);  // rigid/rigid_block.cpp
 void add_contact_blocks(State& s, Blocks& blocks);     // contact/contact_block.cpp
 void add_tie_blocks(State& s, Blocks& blocks);         // contact/ties.cpp
@@ -208,6 +207,15 @@ class CompiledBlocks {
       for (const std::unique_ptr<Block>& b : line)
         b->mark_held(held);
     return held;
+  }
+  /// The blocks of type B compiled so far, in order (spg::domains_of(before)).
+  template <class B>
+  [[nodiscard]] std::vector<const B*> find_all() const {
+    std::vector<const B*> found;
+    for (const Blocks& line : lines_)
+      for (const std::unique_ptr<Block>& b : line)
+        if (const auto* one = dynamic_cast<const B*>(b.get())) found.push_back(one);
+    return found;
   }
   /// The first block of type B compiled so far, or nullptr (solids_of(before)).
   template <class B>

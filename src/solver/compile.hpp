@@ -109,7 +109,7 @@ Vec3 vector_direction(const model::ModelDatabase& m, model::Id id, const core::S
 void compile_geometric_walls(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                              Blocks& own, core::Diagnostics& d);
 void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
-                       core::Diagnostics& d);
+                       Blocks& own, core::Diagnostics& d);
 /// *CONTACT_TIED_...: the tied nodes moved onto their surfaces (contact/compile_ties.cpp).
 void compile_ties(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                   Blocks& own, core::Diagnostics& d);

@@ -21,7 +21,7 @@ const std::vector<Formulation>& formulations() {
       {"shells", nullptr, nullptr, {"solids"}, false, compile_shells},
       {"beams", nullptr, nullptr, {"shells"}, false, compile_beams},
       {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
-      {"spg", compile_spg_parts, add_spg_blocks, {"beams", "constraints", "motions"}},
+      {"spg", nullptr, nullptr, {"beams", "constraints", "motions"}, false, compile_spg_parts},
       {"joints", nullptr, nullptr, {"rigid bodies"}, false, compile_joints},
       {"rigid bodies", nullptr, nullptr, {"solids", "shells", "beams"}, true, compile_rigid_bodies},
       {"constraints", nullptr, nullptr, {"rigid bodies"}, false, compile_constraints},

@@ -38,17 +38,4 @@ inline void set_local_stress(ElementResult& r, const Mat3& local, const Mat3& ax
   set_stress(r, {g(0, 0) - mean, g(1, 1) - mean, g(2, 2) - mean, g(0, 1), g(1, 2), g(0, 2)}, -mean);
 }
 
-/// Result of particle `i` of an SPG domain (its one integration point).
-inline ElementResult particle_result(const spg::Domain& d, Index i) {
-  ElementResult r;
-  const auto ii = static_cast<std::size_t>(i);
-  std::array<double, 6> dev{};
-  for (int k = 0; k < 6; ++k)
-    dev[static_cast<std::size_t>(k)] = d.fields.points.deviator(k, i);
-  set_stress(r, dev, d.fields.pressure[ii]);
-  r.plastic_strain = d.fields.points.plastic_strain[ii];
-  r.damage = d.fields.points.damage[ii];
-  return r;
-}
-
 }  // namespace mcdyna::solver

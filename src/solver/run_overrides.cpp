@@ -1,16 +1,17 @@
 #include "solver/run_overrides.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver {
 
 void apply_spg_overrides(State& s, const SpgOverrides& o) {
-  for (spg::Domain& d : s.spg) {
+  for (spg::Domain* d : spg::domains_of(s)) {
     if (o.stabilization) {
-      d.settings.stabilization = *o.stabilization;
-      d.settings.step_estimate = spg::default_step_estimate(*o.stabilization);
+      d->settings.stabilization = *o.stabilization;
+      d->settings.step_estimate = spg::default_step_estimate(*o.stabilization);
     }
-    if (o.renewal_strain) d.settings.renewal_strain = *o.renewal_strain;
-    if (o.mode_control) d.settings.mode_control = *o.mode_control;
-    if (o.step_estimate) d.settings.step_estimate = *o.step_estimate;
+    if (o.renewal_strain) d->settings.renewal_strain = *o.renewal_strain;
+    if (o.mode_control) d->settings.mode_control = *o.mode_control;
+    if (o.step_estimate) d->settings.step_estimate = *o.step_estimate;
   }
 }
 

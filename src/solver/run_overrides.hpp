@@ -3,6 +3,7 @@
 /// solver applies them): the SPG parts' settings, and the run's limits.
 #include <optional>
 
+#include "solver/spg/domain.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

@@ -16,7 +16,6 @@
 #include "solver/material/material.hpp"
 #include "solver/material/point_kinematics.hpp"
 #include "solver/parallel/ownership.hpp"
-#include "solver/spg/domain.hpp"
 
 namespace mcdyna::solver {
 
@@ -131,7 +130,6 @@ struct State {
 
   std::string title;
   Nodes nodes;
-  std::vector<spg::Domain> spg;  ///< one per SPG part
   std::vector<PartInfo> parts;
   std::vector<Material> materials;
   std::vector<RigidBody> rigid_bodies;
@@ -144,7 +142,7 @@ struct State {
   double step = 0.0;                   ///< last step dt^{n-1/2}
   double critical_step = 0.0;          ///< stable-step estimate of the last force pass (no TSSFAC)
   Index controlling_element = -1;      ///< solid giving the step, or -1
-  std::size_t controlling_domain = 0;  ///< SPG domain of controlling_particle
+  std::size_t controlling_domain = 0;  ///< SPG domain (spg_parts.hpp) of controlling_particle
   Index controlling_particle = -1;     ///< particle giving the step, or -1
   double external_work = 0.0;
   double eroded_kinetic = 0.0, eroded_internal = 0.0, eroded_hourglass = 0.0;

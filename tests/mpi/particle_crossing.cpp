@@ -17,6 +17,7 @@
 #include "core/communicator.hpp"
 #include "solver/driver.hpp"
 #include "solver/parallel/decomposition.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   const auto world = mcdyna::core::Communicator::world();
   std::unique_ptr<mcdyna::solver::State> s = compiled_deck(argv[1]);
-  if (s->spg.empty()) {
+  if (mcdyna::solver::spg::domains_of(*s).empty()) {
     std::fprintf(stderr, "%s has no SPG part\n", argv[1]);
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
   // The owners the run started with: the decomposition of the initial positions.
   const mcdyna::solver::parallel::Decomposition start =
       mcdyna::solver::parallel::decompose(*s, world.size());
-  const mcdyna::solver::spg::Domain& dom = s->spg[0];
+  const mcdyna::solver::spg::Domain& dom = mcdyna::solver::spg::domain_of(*s, 0);
   const mcdyna::solver::parallel::ParticleShare* share = s->ownership.split_part(0);
   const auto n = static_cast<int>(dom.count());
   int moved = 0, owned = 0;

@@ -17,7 +17,7 @@
 #include "solver/driver.hpp"
 #include "solver/energy.hpp"
 #include "solver/solids/solids.hpp"
-#include "solver/spg/domain.hpp"
+#include "solver/spg/spg_parts.hpp"
 #include "solver/spg/spg_solver.hpp"
 #include "test_support.hpp"
 
@@ -158,7 +158,7 @@ double check_blow_up_at_critical_step(const std::string& deck, Setup setup) {
     TempDir dir;
     Simulation sim = prepare(dir, deck);
     setup(*sim.state);
-    solver::spg::Domain& d = sim.state->spg.front();
+    solver::spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     solver::spg::initialise(*sim.state, d);
     critical = d.kernel.step_bound.initial_critical;
     sim.state->time_control.fixed_step = factor * critical;
@@ -220,7 +220,7 @@ inline std::string cube_deck(const Cube& c, const std::string& wall) {
 /// the first SPG part's particles that `keep` selects, in order of initial z.
 template <class Keep>
 std::vector<double> layer_gaps(const solver::State& s, Keep keep) {
-  const solver::spg::Domain& d = s.spg.front();
+  const solver::spg::Domain& d = solver::spg::domain_of(s, 0);
   std::map<long, std::pair<double, int>> layers;  // initial z in micrometres -> (sum z, count)
   for (solver::Index i = 0; i < d.count(); ++i) {
     if (!keep(i)) continue;
@@ -254,7 +254,7 @@ inline double deepest_extremum(const std::vector<double>& g, std::size_t skip_fi
 /// relative to `scale`. The spurious modes of nodal integration alternate from particle to
 /// particle and are not reproduced by the smooth interpolant; a physical wave is, to O(h^2).
 inline double oscillation_norm(const solver::State& s, double scale) {
-  const solver::spg::Domain& d = s.spg.front();
+  const solver::spg::Domain& d = solver::spg::domain_of(s, 0);
   const Eigen::Matrix3Xd& v = s.nodes.velocity;
   double r2 = 0.0;
   for (solver::Index i = 0; i < d.count(); ++i) {
@@ -278,9 +278,9 @@ inline double oscillation_norm(const solver::State& s, double scale) {
 inline double elastic_wave_oscillation(solver::spg::Stabilization mode) {
   TempDir dir;
   Simulation sim = prepare(dir, source_text("decks/elastic_wave/rod_spg_h0.2.k"));
-  for (solver::spg::Domain& d : sim.state->spg) {
-    d.settings.stabilization = mode;
-    d.settings.renewal_strain = std::getenv("RENEW") ? std::atof(std::getenv("RENEW")) : 0.0;
+  for (solver::spg::Domain* d : solver::spg::domains_of(*sim.state)) {
+    d->settings.stabilization = mode;
+    d->settings.renewal_strain = std::getenv("RENEW") ? std::atof(std::getenv("RENEW")) : 0.0;
   }
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);

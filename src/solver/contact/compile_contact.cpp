@@ -22,9 +22,9 @@ using contact::Pass;
 
 // Slave nodes that start inside the master surface, said at the contact keyword: moved onto it
 // (IGNORE 0) or kept as tracked offsets (IGNORE 1/2, SPG particles, rigid nodes).
-void report_initial_penetrations(State& s, Interface& in, const model::Contact& c, int ignore,
-                                 core::Diagnostics& d) {
-  const contact::InitialPenetrations r = contact::resolve_initial_penetrations(s, in);
+void report_initial_penetrations(State& s, Interface& in, const std::vector<std::uint8_t>& particle,
+                                 const model::Contact& c, int ignore, core::Diagnostics& d) {
+  const contact::InitialPenetrations r = contact::resolve_initial_penetrations(s, in, particle);
   if (r.count == 0) return;
   const long kept = r.count - r.moved;
   std::string what;
@@ -71,7 +71,8 @@ struct ContactSurfaces {
   std::vector<double> node_k;
   std::vector<double> shell_half, shell_half_single;
   FaceOwners face_owner;
-  bool cap_single = true;  ///< SSTHK 0
+  std::vector<std::uint8_t> particle;  ///< per node: an SPG particle's
+  bool cap_single = true;              ///< SSTHK 0
   double slsfac = 0.1;
 };
 
@@ -92,13 +93,17 @@ ContactSurfaces contact_surfaces(const model::ModelDatabase& m, const State& s,
                                  const model::ContactControl& control) {
   ContactSurfaces cs;
   cs.parts = part_surfaces(m, s, before);
-  cs.node_k = node_stiffness(s, solids_of(before), cs.parts);
+  cs.node_k = node_stiffness(s, before, cs.parts);
   cs.cap_single = control.single_surface_thickness == 0;
   // Half the thickest shell (rigid or deformable) on each node, and the same capped for
   // single-surface contacts.
   const auto node_count = static_cast<std::size_t>(s.nodes.count());
   cs.shell_half.assign(node_count, 0.0);
   cs.shell_half_single.assign(node_count, 0.0);
+  cs.particle.assign(node_count, 0);
+  for (const PartSurface& ps : cs.parts)
+    for (const Index n : ps.particles)
+      cs.particle[static_cast<std::size_t>(n)] = 1;
   for (const PartSurface& ps : cs.parts)
     for (std::size_t j = 0; j < ps.surface.segments.size(); ++j) {
       const double t = ps.shell_thickness[j];
@@ -303,7 +308,7 @@ void compile_penalty_contact(const model::ModelDatabase& m, const ContactSurface
     }
   }
   set_search_margin(in, a, b, kind.two_way);
-  report_initial_penetrations(s, in, c, ignore_option(c, control), d);
+  report_initial_penetrations(s, in, cs.particle, c, ignore_option(c, control), d);
   out.push_back(std::move(in));
 }
 

@@ -152,8 +152,8 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
     add_segment(out[p].surface, seg, bulk[p] * area / longest_diagonal(s, seg), area, false);
     out[p].shell_thickness.push_back(shells.initial_thickness[e]);
   }
-  for (const spg::Domain& d : s.spg)
-    out[static_cast<std::size_t>(d.part)].particles = d.particles.nodes;
+  for (const spg::Domain* d : spg::domains_of(before))
+    out[static_cast<std::size_t>(d->part)].particles = d->particles.nodes;
   for (Index e = 0; e < so.count(); ++e) {
     const auto ee = static_cast<std::size_t>(e);
     std::vector<Index>& nodes = out[static_cast<std::size_t>(so.part[ee])].solid_nodes;
@@ -167,8 +167,9 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
   return out;
 }
 
-std::vector<double> node_stiffness(const State& s, const Solids& so,
+std::vector<double> node_stiffness(const State& s, const CompiledBlocks& before,
                                    const std::vector<PartSurface>& parts) {
+  const Solids& so = solids_of(before);
   std::vector<double> k(static_cast<std::size_t>(s.nodes.count()), 0.0);
   for (const PartSurface& p : parts)
     for (std::size_t j = 0; j < p.surface.segments.size(); ++j)
@@ -176,7 +177,8 @@ std::vector<double> node_stiffness(const State& s, const Solids& so,
         double& kn = k[static_cast<std::size_t>(n)];
         kn = std::max(kn, p.surface.stiffness[j]);
       }
-  for (const spg::Domain& d : s.spg) {
+  for (const spg::Domain* dp : spg::domains_of(before)) {
+    const spg::Domain& d = *dp;
     const double bulk = reference_bulk_modulus(
         s.materials[static_cast<std::size_t>(s.parts[static_cast<std::size_t>(d.part)].material)]);
     for (std::size_t i = 0; i < d.particles.nodes.size(); ++i)

@@ -59,7 +59,9 @@ struct InitialPenetrations {
 /// At t = 0, the slave nodes that start inside a master surface. With IGNORE 0 (LS-DYNA's
 /// default) FE nodes are moved onto the surface (initial and current position); SPG particles
 /// (their kernels are built on the generating mesh) and rigid-body nodes, and every node under
-/// IGNORE 1/2, keep their depth as an offset that contact only pushes beyond.
-InitialPenetrations resolve_initial_penetrations(State& s, Interface& c);
+/// IGNORE 1/2, keep their depth as an offset that contact only pushes beyond (`particle`: per
+/// node, an SPG particle's).
+InitialPenetrations resolve_initial_penetrations(State& s, Interface& c,
+                                                 const std::vector<std::uint8_t>& particle);
 
 }  // namespace mcdyna::solver::contact

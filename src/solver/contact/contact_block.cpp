@@ -12,6 +12,7 @@
 #include "solver/parallel/exchange_plan.hpp"
 #include "solver/parallel/owned_gather.hpp"
 #include "solver/sensors/switchable.hpp"
+#include "solver/spg/domain.hpp"
 
 namespace mcdyna::solver {
 

@@ -202,16 +202,15 @@ Hit contact_force(const State& s, const Interface& c, const Pass& p, std::size_t
 
 // Nodes that may be moved out of an initial penetration: FE nodes, not SPG particles or the
 // nodes of rigid bodies.
-bool movable(const State& s, Index node) {
-  if (s.nodes.rigid_body[static_cast<std::size_t>(node)] >= 0) return false;
-  for (const spg::Domain& d : s.spg)
-    if (std::binary_search(d.particles.nodes.begin(), d.particles.nodes.end(), node)) return false;
-  return true;
+bool movable(const State& s, const std::vector<std::uint8_t>& particle, Index node) {
+  const auto n = static_cast<std::size_t>(node);
+  return s.nodes.rigid_body[n] < 0 && particle[n] == 0;
 }
 
 }  // namespace
 
-InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
+InitialPenetrations resolve_initial_penetrations(State& s, Interface& c,
+                                                 const std::vector<std::uint8_t>& particle) {
   InitialPenetrations r;
   sort_buckets(s, c);
   for (Pass& p : c.passes) {
@@ -226,7 +225,7 @@ InitialPenetrations resolve_initial_penetrations(State& s, Interface& c) {
         r.deepest = t.depth;
         r.node = node;
       }
-      if (c.initial_penetration == InitialPenetration::move && movable(s, node)) {
+      if (c.initial_penetration == InitialPenetration::move && movable(s, particle, node)) {
         s.nodes.position.col(node) += t.depth * t.push;
         s.nodes.initial.col(node) = s.nodes.position.col(node);
         ++r.moved;

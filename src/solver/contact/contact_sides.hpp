@@ -12,6 +12,7 @@
 #include "solver/contact/interface.hpp"
 #include "solver/shells/shells.hpp"
 #include "solver/solids/solids.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -35,7 +36,7 @@ std::vector<PartSurface> part_surfaces(const model::ModelDatabase& m, const Stat
 /// holding it, or K V^(1/3) of a particle's volume (K A^2 / V of a cube of that volume). A node
 /// inside a solid part (given in a node set) takes K V^(1/3) of its stiffest element; a node on
 /// no element is left at 0 and contact then uses the segment's stiffness (contact_forces.cpp).
-std::vector<double> node_stiffness(const State& s, const Solids& solids,
+std::vector<double> node_stiffness(const State& s, const CompiledBlocks& before,
                                    const std::vector<PartSurface>& parts);
 
 /// A face's nodes in ascending order: the key that finds a segment set's face among the parts'.

@@ -7,6 +7,7 @@
 
 #include "solver/block.hpp"
 #include "solver/solids/solids.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver::parallel {
 
@@ -100,8 +101,8 @@ Decomposition decompose(const State& s, int ranks, const EntityCosts& costs) {
   // What sits on each node: its particles, an eighth of each solid, its contact passes.
   std::vector<double> weight(n, 0.0);
   std::vector<std::uint8_t> particle(n, 0), solid(n, 0), other(n, 1);
-  for (const spg::Domain& dom : s.spg)
-    for (const Index node : dom.particles.nodes) {
+  for (const spg::Domain* dom : spg::domains_of(s))
+    for (const Index node : dom->particles.nodes) {
       particle[static_cast<std::size_t>(node)] = 1;
       weight[static_cast<std::size_t>(node)] += costs.particle;
     }
@@ -150,7 +151,8 @@ std::vector<RankLoad> rank_loads(const State& s, const Decomposition& d, const E
     }
   }
   std::vector<Index> row_nodes;
-  for (const spg::Domain& dom : s.spg) {
+  for (const spg::Domain* dp : spg::domains_of(s)) {
+    const spg::Domain& dom = *dp;
     const spg::NeighbourList& list = dom.kernel.list;
     for (Index j = 0; j < dom.count(); ++j) {
       row_nodes.clear();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solver/solids/solids.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver::parallel {
 
@@ -98,7 +99,7 @@ void Halo::rebuild(State& s) {
   for (std::size_t k = 0; k < own.particles.size(); ++k) {
     const ParticleShare* share = own.split_part(k);
     if (share == nullptr) continue;
-    const spg::Domain& dom = s.spg[k];
+    const spg::Domain& dom = spg::domain_of(s, k);
     size_.particles += static_cast<Index>(share->owned.index.size());
     size_.rows += static_cast<Index>(share->stressed.index.size());
     size_.particle_ghosts += share->row_ghosts.ghosts() + share->column_ghosts.ghosts();

@@ -1,6 +1,7 @@
 #include "solver/rigid/rigid_bodies.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <array>

@@ -10,6 +10,7 @@
 #include "solver/solids/hex_geometry.hpp"
 #include "solver/solids/solids.hpp"
 #include "solver/spg/particles.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -68,7 +69,8 @@ spg::SpgSettings settings_of(const model::Section& sec, const Material& mat,
 }  // namespace
 
 void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
-                       core::Diagnostics& d) {
+                       Blocks& own, core::Diagnostics& d) {
+  std::vector<spg::Domain> domains;
   Nodes& nd = s.nodes;
   nd.smoothed.assign(static_cast<std::size_t>(nd.count()), 0);
   // Nodes a particle shares with something else that moves them: FE solids, SPC, motions.
@@ -166,24 +168,28 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBl
       dom.fields.points.back_stress.setZero(6, static_cast<Eigen::Index>(n));
     dom.fields.points.plastic_strain.assign(n, 0.0);
     dom.fields.points.damage.assign(n, 0.0);
-    s.spg.push_back(std::move(dom));
+    domains.push_back(std::move(dom));
   }
   // A node shared by two SPG parts is pinned in both (marked in the first only above).
-  for (spg::Domain& dom : s.spg)
+  for (spg::Domain& dom : domains)
     for (std::size_t i = 0; i < dom.particles.nodes.size(); ++i) {
       int owners = 0;
-      for (const spg::Domain& other : s.spg)
+      for (const spg::Domain& other : domains)
         owners += std::binary_search(other.particles.nodes.begin(), other.particles.nodes.end(),
                                      dom.particles.nodes[i]);
       if (owners > 1) dom.particles.shared[i] = 1;
     }
   // Base mass after all parts have added theirs (FE corners, particles of every SPG part).
-  for (spg::Domain& dom : s.spg) {
+  for (spg::Domain& dom : domains) {
     dom.particles.base_mass.resize(dom.particles.nodes.size());
     dom.particles.added_mass.assign(dom.particles.nodes.size(), 0.0);
     dom.particles.mass_request.assign(dom.particles.nodes.size(), 0.0);
     for (std::size_t i = 0; i < dom.particles.nodes.size(); ++i)
       dom.particles.base_mass[i] = nd.mass[static_cast<std::size_t>(dom.particles.nodes[i])];
+  }
+  for (std::size_t k = 0; k < domains.size(); ++k) {
+    const model::Id part = s.parts[static_cast<std::size_t>(domains[k].part)].id;
+    own.push_back(spg::make_part_block(std::move(domains[k]), k, part));
   }
 }
 

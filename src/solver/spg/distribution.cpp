@@ -75,7 +75,8 @@ void particle_values(State& s, Domain& d, Index j, Scope scope, Visit&& visit,
 }
 
 parallel::ParticleShare& share_of(State& s, std::size_t domain) {
-  if (s.ownership.particles.size() != s.spg.size()) s.ownership.particles.resize(s.spg.size());
+  const std::size_t parts = domains_of(s).size();
+  if (s.ownership.particles.size() != parts) s.ownership.particles.resize(parts);
   return s.ownership.particles[domain];
 }
 
@@ -87,11 +88,12 @@ bool splittable(const Domain& d) {
 }
 
 std::size_t domain_index(const State& s, const Domain& d) {
-  return static_cast<std::size_t>(&d - s.spg.data());
+  const std::vector<const Domain*> domains = domains_of(s);
+  return static_cast<std::size_t>(std::find(domains.begin(), domains.end(), &d) - domains.begin());
 }
 
 void share_particles(State& s, std::size_t domain) {
-  const Domain& d = s.spg[domain];
+  const Domain& d = domain_of(s, domain);
   parallel::ParticleShare& share = share_of(s, domain);
   const core::Communicator& comm = s.ownership.comm;
   const int me = comm.rank();
@@ -161,7 +163,7 @@ void share_particles(State& s, std::size_t domain) {
 void synchronise(State& s, std::size_t domain, Scope scope) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   if (share == nullptr) return;
-  Domain& d = s.spg[domain];
+  Domain& d = domain_of(s, domain);
   parallel::gather_owned(
       s.ownership.comm, share->owner.size(), [&](std::size_t j) { return share->owner[j]; },
       [&](std::size_t j, std::vector<double>& out) {
@@ -180,7 +182,7 @@ void synchronise(State& s, std::size_t domain, Scope scope) {
 void migrate(State& s, std::size_t domain, const std::vector<int>& previous_owner,
              Eigen::Matrix3Xd& force) {
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
-  Domain& d = s.spg[domain];
+  Domain& d = domain_of(s, domain);
   const int me = s.ownership.comm.rank();
   const auto n = static_cast<std::size_t>(d.count());
   // What this process reads from now on: its stressed rows and the particles in them (their
@@ -303,7 +305,7 @@ void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& bui
                        const NeighbourList& fresh, const ShapeFunctions& fresh_shape,
                        NeighbourList& incoming, ShapeFunctions& incoming_shape,
                        std::vector<std::uint8_t>& take) {
-  Domain& d = s.spg[domain];
+  Domain& d = domain_of(s, domain);
   const core::Communicator& comm = s.ownership.comm;
   const int me = comm.rank();
   const auto n = static_cast<std::size_t>(d.count());
@@ -394,7 +396,7 @@ void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& bui
 }
 
 NeighbourList rows_on_root(const State& s, std::size_t domain) {
-  const Domain& d = s.spg[domain];
+  const Domain& d = domain_of(s, domain);
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   const auto n = static_cast<std::size_t>(d.count());
   std::vector<double> mine;  // per own row: the row, its count, its neighbours
@@ -423,7 +425,7 @@ NeighbourList rows_on_root(const State& s, std::size_t domain) {
 }
 
 void reown_particles(State& s, std::size_t domain) {
-  const Domain& d = s.spg[domain];
+  const Domain& d = domain_of(s, domain);
   std::vector<Index> free;
   for (Index j = 0; j < d.count(); ++j)
     if (!d.particles.shared[static_cast<std::size_t>(j)]) free.push_back(j);

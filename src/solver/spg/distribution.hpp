@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstddef>
 
+#include "solver/spg/spg_parts.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::spg {
@@ -34,7 +35,7 @@ namespace mcdyna::solver::spg {
 /// SpgBlock::mark_replicated).
 bool splittable(const Domain& d);
 
-/// The index of `d` in s.spg.
+/// The index of `d` among the SPG parts (spg_parts.hpp).
 std::size_t domain_index(const State& s, const Domain& d);
 
 /// The share of part `domain` from the node owners (s.ownership.owner), with its exchange plans.

@@ -3,16 +3,21 @@
 // and the take-up of what constraints and walls changed.
 #include <fmt/format.h>
 
+#include <memory>
+#include <utility>
+#include <vector>
+
 #include "solver/block.hpp"
 #include "solver/results.hpp"
 #include "solver/spg/distribution.hpp"
 #include "solver/spg/domain_dump.hpp"
+#include "solver/spg/spg_parts.hpp"
 #include "solver/spg/spg_solver.hpp"
 
 namespace mcdyna::solver {
 
 std::string particle_name(const State& s, std::size_t domain, Index particle) {
-  const spg::Domain& d = s.spg[domain];
+  const spg::Domain& d = spg::domain_of(s, domain);
   return fmt::format(
       "SPG particle at node {} (part {})",
       s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(particle)])],
@@ -21,31 +26,45 @@ std::string particle_name(const State& s, std::size_t domain, Index particle) {
 
 namespace {
 
+// Result of particle `i` of an SPG domain (its one integration point).
+ElementResult particle_result(const spg::Domain& d, Index i) {
+  ElementResult r;
+  const auto ii = static_cast<std::size_t>(i);
+  std::array<double, 6> dev{};
+  for (int k = 0; k < 6; ++k)
+    dev[static_cast<std::size_t>(k)] = d.fields.points.deviator(k, i);
+  set_stress(r, dev, d.fields.pressure[ii]);
+  r.plastic_strain = d.fields.points.plastic_strain[ii];
+  r.damage = d.fields.points.damage[ii];
+  return r;
+}
+
 class SpgBlock final : public DumpedBlock<SpgBlock> {
  public:
-  SpgBlock(std::size_t domain, long count, model::Id part)
-      : domain_(domain), count_(count), part_(part) {}
+  SpgBlock(spg::Domain domain, std::size_t index, model::Id part)
+      : domain_(std::move(domain)), index_(index), part_(part) {}
+  [[nodiscard]] const spg::Domain& domain() const { return domain_; }
+  [[nodiscard]] spg::Domain& domain() { return domain_; }
   [[nodiscard]] std::string dump_name() const override { return fmt::format("SPG part {}", part_); }
   [[nodiscard]] std::string dump_layout() const override {
     return sizes_text(spg::kDomainDumpedSizes);
   }
   template <class Ar>
-  void dumped(Ar& ar, State& s) const {
-    ar(s.spg[domain_]);
+  void dumped(Ar& ar, State& /*s*/) {
+    ar(domain_);
   }
   // Charged to "elements" as a whole; split_times moves its finer phases out at the end.
   [[nodiscard]] PhaseTimes::Phase phase() const override { return PhaseTimes::elements; }
-  [[nodiscard]] long particles() const override { return count_; }
+  [[nodiscard]] long particles() const override { return domain_.count(); }
 
   void initialise(State& s) override {
-    spg::Domain& d = s.spg[domain_];
-    if (d.diagnostics.renewals == 0) spg::initialise(s, d);
+    if (domain_.diagnostics.renewals == 0) spg::initialise(s, domain_);
   }
 
   // MC-SPG particles count with their unsmoothed velocity and mass (Eq. 13).
   void add_energies(const State& s, const Eigen::Matrix3Xd& /*previous*/,
                     EnergySummary& e) const override {
-    const spg::Domain& d = s.spg[domain_];
+    const spg::Domain& d = domain_;
     for (std::size_t i = 0; i < d.fields.internal_energy.size(); ++i)
       e.internal += d.fields.internal_energy[i];
     e.damping += d.fields.damping_energy;
@@ -59,7 +78,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
 
   void add_part_energies(const State& s, const Eigen::Matrix3Xd& previous,
                          std::vector<PartSummary>& parts) const override {
-    const spg::Domain& d = s.spg[domain_];
+    const spg::Domain& d = domain_;
     const Eigen::Matrix3Xd& velocity = s.nodes.velocity;
     PartSummary& ps = parts[static_cast<std::size_t>(d.part)];
     for (Index i = 0; i < d.count(); ++i) {
@@ -78,55 +97,54 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
       ps.hourglass += w;
   }
 
-  void add_added_mass(const State& s, double& added) const override {
-    for (const double a : s.spg[domain_].particles.added_mass)
+  void add_added_mass(const State& /*s*/, double& added) const override {
+    for (const double a : domain_.particles.added_mass)
       added += a;
   }
 
   void forces(State& s, NodalForces& f, ForceReport& r) override {
-    const spg::ParticlePassResult p = spg::particle_pass(s, s.spg[domain_], s.step, f.force);
+    const spg::ParticlePassResult p = spg::particle_pass(s, domain_, s.step, f.force);
     if (p.critical_step < r.critical_step) {
       r.critical_step = p.critical_step;
       r.controlling_element = -1;
-      r.controlling_domain = domain_;
+      r.controlling_domain = index_;
       r.controlling_particle = p.controlling;
     }
     if (p.inverted >= 0)
-      r.fail("non-positive Jacobian or volume at " + particle_name(s, domain_, p.inverted), true);
+      r.fail("non-positive Jacobian or volume at " + particle_name(s, index_, p.inverted), true);
     else if (p.non_finite >= 0)
-      r.fail("non-finite stress or wave speed at " + particle_name(s, domain_, p.non_finite),
-             false);
+      r.fail("non-finite stress or wave speed at " + particle_name(s, index_, p.non_finite), false);
   }
 
   Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
-    return spg::advance_velocities(s, s.spg[domain_], f.force, t.mean);
+    return spg::advance_velocities(s, domain_, f.force, t.mean);
   }
 
-  void after_constraints(State& s) override { spg::absorb_constraints(s, s.spg[domain_]); }
+  void after_constraints(State& s) override { spg::absorb_constraints(s, domain_); }
 
   // A part with options that read the whole part every cycle (distribution.hpp splittable) is
   // computed whole on every process.
-  void mark_replicated(const State& s, std::vector<std::uint8_t>& nodes) const override {
-    if (spg::splittable(s.spg[domain_])) return;
-    for (const Index n : s.spg[domain_].particles.nodes)
+  void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& nodes) const override {
+    if (spg::splittable(domain_)) return;
+    for (const Index n : domain_.particles.nodes)
       nodes[static_cast<std::size_t>(n)] = 1;
   }
 
   void distribute(State& s) override {
-    if (!spg::splittable(s.spg[domain_])) return;
-    spg::share_particles(s, domain_);
-    spg::keep_read_rows(s, s.spg[domain_]);
+    if (!spg::splittable(domain_)) return;
+    spg::share_particles(s, index_);
+    spg::keep_read_rows(s, domain_);
   }
 
   void synchronise(State& s, Gather what) override {
-    spg::synchronise(s, domain_,
+    spg::synchronise(s, index_,
                      what == Gather::dump    ? spg::Scope::everything
                      : what == Gather::state ? spg::Scope::to_root
                                              : spg::Scope::histories);
   }
 
   void split_times(const State& s, PhaseTimes& phases) const override {
-    const spg::SpgTimes& t = s.spg[domain_].times;
+    const spg::SpgTimes& t = domain_.times;
     constexpr int kSplit = PhaseTimes::spg_step_estimate - PhaseTimes::spg_neighbours + 1;
     const double split[kSplit] = {t.neighbours,    t.shape_functions, t.smoothing, t.stress,
                                   t.stabilization, t.force,           t.bonds,     t.step_estimate};
@@ -134,7 +152,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
       phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
       phases.seconds[PhaseTimes::elements] -= split[k];
     }
-    if (const parallel::ParticleShare* share = s.ownership.split_part(domain_)) {
+    if (const parallel::ParticleShare* share = s.ownership.split_part(index_)) {
       phases.seconds[PhaseTimes::exchange] += share->exchange_seconds;
       phases.seconds[PhaseTimes::elements] -= share->exchange_seconds;
     }
@@ -143,7 +161,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
   // The particles, a vertex each, with the fields of their integration point, the share of
   // their bonds broken, how they are integrated now and their stable step.
   void write_state(const State& s, StateSink& sink) const override {
-    const spg::Domain& d = s.spg[domain_];
+    const spg::Domain& d = domain_;
     const model::Id part = s.parts[static_cast<std::size_t>(d.part)].id;
     for (Index i = 0; i < d.count(); ++i) {
       const auto ii = static_cast<std::size_t>(i);
@@ -158,17 +176,48 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
   }
 
  private:
-  std::size_t domain_;
-  long count_;
+  spg::Domain domain_;
+  std::size_t index_;  // its number among the SPG parts (spg_parts.hpp)
   model::Id part_;
 };
 
 }  // namespace
 
-void add_spg_blocks(State& s, Blocks& blocks) {
-  for (std::size_t k = 0; k < s.spg.size(); ++k)
-    blocks.push_back(std::make_unique<SpgBlock>(
-        k, s.spg[k].count(), s.parts[static_cast<std::size_t>(s.spg[k].part)].id));
+namespace spg {
+
+std::unique_ptr<Block> make_part_block(Domain domain, std::size_t index, model::Id part) {
+  return std::make_unique<SpgBlock>(std::move(domain), index, part);
 }
+
+std::vector<const Domain*> domains_of(const State& s) {
+  std::vector<const Domain*> out;
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    if (const auto* part = dynamic_cast<const SpgBlock*>(b.get())) out.push_back(&part->domain());
+  return out;
+}
+
+std::vector<const Domain*> domains_of(const CompiledBlocks& before) {
+  std::vector<const Domain*> out;
+  for (const SpgBlock* part : before.find_all<SpgBlock>())
+    out.push_back(&part->domain());
+  return out;
+}
+
+std::vector<Domain*> domains_of(State& s) {
+  std::vector<Domain*> out;
+  for (const std::unique_ptr<Block>& b : s.blocks)
+    if (auto* part = dynamic_cast<SpgBlock*>(b.get())) out.push_back(&part->domain());
+  return out;
+}
+
+const Domain& domain_of(const State& s, std::size_t k) {
+  return *domains_of(s).at(k);
+}
+
+Domain& domain_of(State& s, std::size_t k) {
+  return *domains_of(s).at(k);
+}
+
+}  // namespace spg
 
 }  // namespace mcdyna::solver

@@ -14,6 +14,7 @@
 /// smoothing of their neighbours as an unsmoothed value, and receive their share of the
 /// neighbours' accelerations so that total momentum is kept exactly (see smoothing.cpp).
 #include "solver/spg/particle_subset.hpp"
+#include "solver/spg/spg_parts.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::spg {

@@ -250,7 +250,7 @@ TEST_CASE("contact: MC-SPG particles as slave nodes bounce off a rigid plate") {
       "*SET_PART_LIST\n1\n1\n*INITIAL_VELOCITY_GENERATION\n1,1,0,0,0,-5000\n0,0,0\n"
       "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n1,9,3,3\n0,0\n\n*END\n";
   Simulation sim = prepare(dir, deck);
-  REQUIRE(sim.state->spg.size() == 1);
+  REQUIRE(solver::spg::domains_of(*sim.state).size() == 1);
   const solver::Index particles = 9 * 9 * 9;
   CHECK(contact_interface(*sim.state, 0).passes[0].nodes.size() ==
         static_cast<std::size_t>(particles));

@@ -47,7 +47,7 @@ double energy_drift(bool particles, bool objective, double step, long& cycles) {
   TempDir dir;
   Simulation sim = prepare(dir, spinning_block(particles, objective, step));
   set_spin(*sim.state);
-  if (particles) solver::spg::initialise(*sim.state, sim.state->spg.front());
+  if (particles) solver::spg::initialise(*sim.state, solver::spg::domain_of(*sim.state, 0));
   sim.state->time_control.fixed_step = step;
   EnergyDrift drift;
   run(sim, drift.hooks());
@@ -127,7 +127,7 @@ TEST_CASE("CONTROL_ACCURACY: OSU for all parts or the PIDOSU set, the other fiel
   auto objective = [&](const std::string& controls, core::Diagnostics& d) {
     const auto s = compiled(controls, d);
     return std::pair{solver::solids_of(*s).blocks.front().objective,
-                     s->spg.front().settings.objective};
+                     solver::spg::domain_of(*s, 0).settings.objective};
   };
   core::Diagnostics d;
   SUBCASE("no keyword: LS-DYNA's default OSU 0") {

@@ -66,10 +66,10 @@ TEST_CASE("Decomposition: every node owned once, SPG and FE each spread over all
   TempDir dir;
   Simulation sim = prepare(dir, fe_and_spg_deck());
   solver::State& s = *sim.state;
-  for (solver::spg::Domain& d : s.spg)
-    solver::spg::initialise(s, d);
+  for (solver::spg::Domain* d : solver::spg::domains_of(s))
+    solver::spg::initialise(s, *d);
   const Index elements = solver::solids_of(s).count();
-  const Index particles = s.spg.front().count();
+  const Index particles = solver::spg::domain_of(s, 0).count();
   REQUIRE(elements == 128);
   REQUIRE(particles == 7 * 5 * 5);
   {

@@ -66,7 +66,7 @@ TEST_CASE("ITB 1 and 2 decks run the original SPG stabilisation, ITB 3 MC-SPG") 
     const auto s = solver::compile(loaded->model(), d);
     REQUIRE(s);
     CHECK(
-        s->spg.front().settings.stabilization ==
+        solver::spg::domain_of(*s, 0).settings.stabilization ==
         (itb == 3 ? spg::Stabilization::momentum_consistent : spg::Stabilization::strain_gradient));
     CHECK(loaded->has_message(
               "ITB = 2 (simplified fluid-particle approximation) runs as ITB = 1") == (itb == 2));
@@ -79,7 +79,7 @@ TEST_CASE("ITB 1 second-derivative functions reproduce the Hessian of quadratic 
   TempDir dir;
   Simulation sim = prepare(dir, itb_deck(6, 5, 4, 1, 1));
   solver::State& s = *sim.state;
-  spg::Domain& d = s.spg.front();
+  spg::Domain& d = solver::spg::domain_of(s, 0);
   spg::initialise(s, d);
   REQUIRE(d.kernel.shape.hessian.cols() ==
           static_cast<Eigen::Index>(d.kernel.list.neighbours.size()));
@@ -137,7 +137,7 @@ TEST_CASE("ITB 1: a uniform strain rate gives no stabilisation stress") {
   s.time_control.fixed_step = 0.01;
   run(sim);  // one cycle: the forces at t = 0 are zero, so x^1 is an affine image of x^0
   REQUIRE(sim.result.reason == solver::StopReason::end_cycle);
-  const spg::Domain& d = s.spg.front();
+  const spg::Domain& d = solver::spg::domain_of(s, 0);
   // A stabilisation stress of a spurious gradient would be C M dD/dX dt ~ 100 x 0.2 x 0.03 x
   // 0.01 = 6e-3 per unit of relative error in D; round-off leaves ~1e-16 of D.
   const double largest = largest_stabilisation_stress(d);
@@ -223,11 +223,11 @@ TEST_CASE("ITB 1 critical step: 2 / omega with the stabilisation is where a free
                            (dir.path() / "out").string());
   CHECK(r.exit_code == 0);
   Simulation sim = prepare(dir, itb_deck(7, 6, 5, 1, 1));
-  sim.state->spg.front().settings.step_estimate = spg::StepEstimate::eigenvalue;
+  solver::spg::domain_of(*sim.state, 0).settings.step_estimate = spg::StepEstimate::eigenvalue;
   run(sim);
-  CHECK(sim.state->spg.front().fields.gradient.step_scale == 1.0);
-  const double damped =
-      solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0, 1.0, 0.0);
+  CHECK(solver::spg::domain_of(*sim.state, 0).fields.gradient.step_scale == 1.0);
+  const double damped = solver::element_step(
+      solver::spg::domain_of(*sim.state, 0).settings.bulk_viscosity, 1.0, 1.0, 0.0);
   CHECK(sim.state->step == doctest::Approx(0.9 * damped * critical).epsilon(1e-6));
 }
 
@@ -239,7 +239,7 @@ struct DeformedBlock {
   TempDir dir;
   Simulation sim;
   explicit DeformedBlock(double noise_amplitude) : sim(prepare(dir, itb_deck(6, 6, 6, 1, 1))) {
-    spg::initialise(*sim.state, sim.state->spg.front());
+    spg::initialise(*sim.state, solver::spg::domain_of(*sim.state, 0));
     std::uint64_t seed = 7;
     auto noise = [&seed] {
       seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -256,7 +256,7 @@ struct DeformedBlock {
   // stresses and strains. Returns the node forces.
   Eigen::Matrix3Xd pass(bool fresh) {
     solver::State& s = *sim.state;
-    spg::Domain& d = s.spg.front();
+    spg::Domain& d = solver::spg::domain_of(s, 0);
     for (Index j = 0; j < d.count(); ++j) {
       const auto jj = static_cast<std::size_t>(j);
       Eigen::Map<solver::Mat3>(d.fields.deformation.col(j).data()) =
@@ -274,7 +274,7 @@ struct DeformedBlock {
   }
   // The stored energy 1/2 sum V0 sigma-tilde_a : e_a (exact after a fresh pass).
   [[nodiscard]] double energy() const {
-    const spg::Domain& d = sim.state->spg.front();
+    const spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     double w = 0.0;
     for (Index j = 0; j < d.count(); ++j)
       for (int c = 0; c < 18; ++c)
@@ -320,7 +320,7 @@ TEST_CASE("ITB 1 carries its stabilisation stresses through a kernel renewal") {
   for (const double noise : {0.0, 0.01}) {
     DeformedBlock block(noise);
     const Eigen::Matrix3Xd before = block.pass(true);
-    spg::renew_kernel(*block.sim.state, block.sim.state->spg.front());
+    spg::renew_kernel(*block.sim.state, solver::spg::domain_of(*block.sim.state, 0));
     const Eigen::Matrix3Xd after = block.pass(false);
     const double change = (after - before).norm() / before.norm();
     MESSAGE("noise ", noise, ": force ", before.norm(), " before, relative change ", change);
@@ -337,7 +337,7 @@ TEST_CASE("ITB 1 rows with an isolated neighbour see no curvature in an affine m
   // those holding them included, must stay free of stabilisation stress.
   DeformedBlock block(0.0);
   solver::State& s = *block.sim.state;
-  spg::Domain& d = s.spg.front();
+  spg::Domain& d = solver::spg::domain_of(s, 0);
   Eigen::Matrix3d a;
   a << 0.04, -0.03, 0.02, 0.01, -0.02, 0.015, -0.01, 0.025, 0.03;
   for (Index n = 0; n < s.nodes.count(); ++n)
@@ -392,7 +392,7 @@ TEST_CASE("ITB 1 stiffness lengths bound the frequencies with the stabilisation"
       s.nodes.position.col(n) += noise * Vec3(random(), random(), random());
       s.nodes.initial.col(n) = s.nodes.position.col(n);
     }
-    spg::Domain& d = s.spg.front();
+    spg::Domain& d = solver::spg::domain_of(s, 0);
     REQUIRE(d.settings.step_estimate == spg::StepEstimate::eigenvalue);
     spg::initialise(s, d);
     MESSAGE("eigenvalue scale of the Gershgorin lengths ", d.kernel.step_bound.scale);
@@ -438,7 +438,7 @@ TEST_CASE("ITB 1 frequency estimate stays below omega_max where masses differ") 
   TempDir dir;
   Simulation sim = prepare(dir, itb_deck(7, 6, 5, 1, 1));
   solver::State& s = *sim.state;
-  spg::Domain& d = s.spg.front();
+  spg::Domain& d = solver::spg::domain_of(s, 0);
   spg::initialise(s, d);
   for (Index i = 0; i < d.count(); ++i) {  // DT2MS-like masses: all but every fourth 30 x
     const auto node = static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(i)]);
@@ -478,7 +478,7 @@ TEST_CASE("Power-iteration products on a renewal's patch have the whole domain's
     TempDir dir;
     Simulation sim = prepare(dir, itb_deck(16, 14, 12, 1, itb));
     solver::State& s = *sim.state;
-    spg::Domain& d = s.spg.front();
+    spg::Domain& d = solver::spg::domain_of(s, 0);
     spg::initialise(s, d);
     set_noisy_velocity(s, 0.05);
     for (Index n = 0; n < s.nodes.count(); ++n)  // a deformed state to linearise about

@@ -79,7 +79,7 @@ void set_velocity_field(solver::State& s) {
 // smoothed masses and velocities, sum m x × u (the two sides of Eq. 24).
 Vec3 angular(const solver::State& s, bool smoothed_form) {
   Vec3 l = Vec3::Zero();
-  const spg::Domain& d = s.spg.front();
+  const spg::Domain& d = solver::spg::domain_of(s, 0);
   for (Index i = 0; i < d.count(); ++i) {
     const Index n = d.particles.nodes[static_cast<std::size_t>(i)];
     const Vec3 x = s.nodes.position.col(n);
@@ -99,8 +99,9 @@ Vec3 conserved_momentum(const solver::State& s, double& scale) {
     p += s.nodes.mass[static_cast<std::size_t>(n)] * s.nodes.velocity.col(n);
     scale += s.nodes.mass[static_cast<std::size_t>(n)] * s.nodes.velocity.col(n).norm();
   }
-  for (const spg::Domain& d : s.spg)
-    for (Index i = 0; i < d.count(); ++i) {
+  for (const spg::Domain* dp : spg::domains_of(s))
+    for (Index i = 0; i < dp->count(); ++i) {
+      const spg::Domain& d = *dp;
       if (!s.nodes
                .smoothed[static_cast<std::size_t>(d.particles.nodes[static_cast<std::size_t>(i)])])
         continue;
@@ -116,18 +117,20 @@ TEST_CASE("MC-SPG free body: linear momentum kept to round-off over 1000 steps")
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1000));
   set_velocity_field(*sim.state);
-  sim.state->spg.front().settings.renewal_strain = 0.0;  // renew at every SMSTEP check
-  spg::initialise(*sim.state, sim.state->spg.front());
+  solver::spg::domain_of(*sim.state, 0).settings.renewal_strain =
+      0.0;  // renew at every SMSTEP check
+  spg::initialise(*sim.state, solver::spg::domain_of(*sim.state, 0));
   double scale = 0.0;
   const Vec3 p0 = conserved_momentum(*sim.state, scale);
   // Eq. 24: in the reference configuration the smoothing keeps angular momentum exactly.
-  spg::advance_velocities(*sim.state, sim.state->spg.front(), zero_forces(*sim.state), 0.0);
+  spg::advance_velocities(*sim.state, solver::spg::domain_of(*sim.state, 0),
+                          zero_forces(*sim.state), 0.0);
   const Vec3 l0 = angular(*sim.state, false);
   CHECK((angular(*sim.state, true) - l0).norm() <= 1e-12 * l0.norm());
   run(sim);
   CHECK(sim.result.reason == solver::StopReason::end_cycle);
   CHECK(sim.state->cycle == 1000);
-  CHECK(sim.state->spg.front().diagnostics.renewals >
+  CHECK(solver::spg::domain_of(*sim.state, 0).diagnostics.renewals >
         60);  // SMSTEP 15: the kernel was renewed throughout
   double unused = 0.0;
   const Vec3 p1 = conserved_momentum(*sim.state, unused);
@@ -154,7 +157,7 @@ struct BudgetHooks {
     solver::RunHooks h;
     h.velocities_advanced = [this](const solver::State& s, const solver::NodalForces& f,
                                    const solver::StepTimes& t) {
-      budget.record(s, s.spg.front(), f.force, t.step, t.mean);
+      budget.record(s, solver::spg::domain_of(s, 0), f.force, t.step, t.mean);
     };
     return h;
   }
@@ -164,10 +167,10 @@ TEST_CASE("MC-SPG angular momentum: the drift is the gather's first-moment defec
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1000));
   set_velocity_field(*sim.state);
-  spg::initialise(*sim.state, sim.state->spg.front());
+  spg::initialise(*sim.state, solver::spg::domain_of(*sim.state, 0));
   BudgetHooks recorder;
   const spg::AngularBudget& budget = recorder.budget;
-  double dt = 0.4 * sim.state->spg.front().kernel.step_bound.initial_critical;
+  double dt = 0.4 * solver::spg::domain_of(*sim.state, 0).kernel.step_bound.initial_critical;
   if (!(dt > 0.0)) dt = 0.02;
   sim.state->time_control.fixed_step = dt;
   run(sim, recorder.hooks());
@@ -192,7 +195,7 @@ TEST_CASE("MC-SPG partial kernel renewal: only strained rows renewed, momentum a
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1000));
   set_velocity_field(*sim.state);
-  spg::Domain& d = sim.state->spg.front();
+  spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
   d.settings.renewal_strain = 0.003;  // the noise strains some rows past this, not all
   spg::initialise(*sim.state, d);
   double scale = 0.0;
@@ -220,7 +223,7 @@ namespace {
 void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   TempDir dir;
   auto configure = [&](Simulation& sim) {
-    spg::Domain& d = sim.state->spg.front();
+    spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     d.settings.step_estimate = estimate;
     d.settings.objective = objective;
   };
@@ -229,7 +232,7 @@ void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   configure(probe);
   run(probe);
   const double natural = probe.state->step;
-  const spg::Domain& pd = probe.state->spg.front();
+  const spg::Domain& pd = solver::spg::domain_of(*probe.state, 0);
   // Three times that step: row J asks for (3 natural / (TSSFAC step_J))^2 (9 for the particles
   // that set the step, less for those whose stiffness length is longer), and every particle
   // takes the largest factor asked by the rows it is in.
@@ -250,7 +253,7 @@ void check_mass_scaling(spg::StepEstimate estimate, bool objective) {
   configure(sim);
   set_velocity_field(*sim.state);
   sim.state->mass_scaling_dt = 3.0 * natural;
-  spg::Domain& d = sim.state->spg.front();
+  spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
   spg::initialise(*sim.state, d);
   const double physical = std::accumulate(d.particles.mass.begin(), d.particles.mass.end(), 0.0);
   run(sim);
@@ -349,7 +352,7 @@ TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and s
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 2000));
   set_velocity_field(*sim.state);
-  spg::Domain& d = sim.state->spg.front();
+  spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
   spg::initialise(*sim.state, d);
   // The initial arrangement is the reference of the bound: no row is shortened.
   for (const double m : d.kernel.mobility)
@@ -393,12 +396,12 @@ TEST_CASE("MC-SPG step: rows round a small smoothed mass get shorter steps and s
 TEST_CASE("MC-SPG coupled to FE by common nodes: total momentum kept to round-off") {
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(6, 5, 4, 1000, 2));
-  REQUIRE(sim.state->spg.size() == 1);
+  REQUIRE(solver::spg::domains_of(*sim.state).size() == 1);
   REQUIRE(solver::solids_of(*sim.state).count() == 6 * 5 * 2);
   set_velocity_field(*sim.state);
-  spg::initialise(*sim.state, sim.state->spg.front());
+  spg::initialise(*sim.state, solver::spg::domain_of(*sim.state, 0));
   long shared = 0;
-  for (const auto f : sim.state->spg.front().particles.shared)
+  for (const auto f : solver::spg::domain_of(*sim.state, 0).particles.shared)
     shared += f;
   CHECK(shared == 7 * 6);  // the common plane
   double scale = 0.0;
@@ -420,7 +423,7 @@ TEST_CASE("MC-SPG smoothing: an affine velocity field gives the exact strain rat
   const Vec3 v0(1.0, 2.0, -0.5);
   for (Index n = 0; n < s.nodes.count(); ++n)
     s.nodes.velocity.col(n) = v0 + a * s.nodes.initial.col(n);
-  spg::Domain& d = s.spg.front();
+  spg::Domain& d = solver::spg::domain_of(s, 0);
   d.settings.damping = 0.0;  // PDAMP acts on velocity differences; this checks Eq. 13 alone
   spg::initialise(s, d);
   REQUIRE(spg::advance_velocities(s, d, zero_forces(s), 0.0) == -1);  // smoothing only (Eq. 13)
@@ -470,11 +473,11 @@ TEST_CASE("MC-SPG bond failure: a notched bar pulled apart breaks into pieces, m
   TempDir dir;
   Simulation sim = prepare(dir, source_text("decks/fracture/tension_spg_h1.k"));
   solver::State& s = *sim.state;
-  const double mass0 = std::accumulate(s.spg.front().particles.mass.begin(),
-                                       s.spg.front().particles.mass.end(), 0.0);
+  const double mass0 = std::accumulate(solver::spg::domain_of(s, 0).particles.mass.begin(),
+                                       solver::spg::domain_of(s, 0).particles.mass.end(), 0.0);
   run(sim);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
-  const spg::Domain& d = s.spg.front();
+  const spg::Domain& d = solver::spg::domain_of(s, 0);
   const spg::Pieces pieces = spg::count_pieces(d.kernel.list);
   MESSAGE("broken bonds ", d.diagnostics.broken_bonds, ", pieces ", pieces.pieces, ", largest ",
           pieces.largest);
@@ -517,7 +520,7 @@ TEST_CASE("MSC 1: low-energy-mode control keeps the layers beside a neck from pa
   auto alternation = [&](double control) {
     TempDir dir;
     Simulation sim = prepare(dir, deck);
-    spg::Domain& d = sim.state->spg.front();
+    spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     REQUIRE(d.settings.mode_control == spg::kModeControl);  // MSC 1 on the card
     d.settings.mode_control = control;
     run(sim);
@@ -538,7 +541,7 @@ TEST_CASE("MSC 1: mode-control forces vanish for affine motion and keep both mom
   TempDir dir;
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1));
   solver::State& s = *sim.state;
-  spg::Domain& d = s.spg.front();
+  spg::Domain& d = solver::spg::domain_of(s, 0);
   d.settings.mode_control = spg::kModeControl;
   spg::initialise(s, d);
   Eigen::Matrix3Xd force = zero_forces(s);
@@ -597,10 +600,10 @@ TEST_CASE("MC-SPG critical step: 2 / omega from power iteration is where a free 
   // The step the code chooses with --spg-step eigen: TSSFAC x the particle steps scaled to
   // 2 / omega, less the bulk viscosity's linear share.
   Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1));
-  sim.state->spg.front().settings.step_estimate = spg::StepEstimate::eigenvalue;
+  solver::spg::domain_of(*sim.state, 0).settings.step_estimate = spg::StepEstimate::eigenvalue;
   run(sim);
-  const double damped =
-      solver::element_step(sim.state->spg.front().settings.bulk_viscosity, 1.0, 1.0, 0.0);
+  const double damped = solver::element_step(
+      solver::spg::domain_of(*sim.state, 0).settings.bulk_viscosity, 1.0, 1.0, 0.0);
   CHECK(sim.state->step == doctest::Approx(0.9 * damped * critical).epsilon(1e-6));
 }
 
@@ -628,7 +631,7 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
   const Index centre = 4 + 8 * (3 + 7 * 3);
   SUBCASE("an intact particle whose neighbourhood inverts is an instability") {
     Simulation sim = prepare(dir, spg_deck(7, 6, 5, 1));
-    spg::Domain& d = sim.state->spg.front();
+    spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     spg::initialise(*sim.state, d);
     invert_neighbourhood(*sim.state, d, centre);
     Eigen::Matrix3Xd force = zero_forces(*sim.state);
@@ -644,7 +647,7 @@ TEST_CASE("MC-SPG inversion: stops the run naming the particle, or releases dama
   SUBCASE("a particle that has lost bonds is released as debris instead") {
     std::string deck = spg_deck(7, 6, 5, 1);
     Simulation sim = prepare(dir, deck);
-    spg::Domain& d = sim.state->spg.front();
+    spg::Domain& d = solver::spg::domain_of(*sim.state, 0);
     d.settings.bond_failure = true;
     spg::initialise(*sim.state, d);
     for (Index i = 0; i < d.count(); ++i)  // one broken bond each: damage > 0 everywhere

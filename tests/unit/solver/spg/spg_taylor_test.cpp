@@ -33,8 +33,8 @@ struct SpgRun {
 SpgRun run_spg(double mode_control) {
   TempDir dir;
   Simulation sim = prepare(dir, first_10_us("decks/taylor_bar/taylor_spg_coarse.k"));
-  REQUIRE(sim.state->spg.size() == 1);
-  sim.state->spg.front().settings.mode_control = mode_control;
+  REQUIRE(solver::spg::domains_of(*sim.state).size() == 1);
+  solver::spg::domain_of(*sim.state, 0).settings.mode_control = mode_control;
   // Energies as glstat has them: total at each state over the first total plus external work.
   double first = 0.0, ratio = 0.0;
   bool started = false;
@@ -49,7 +49,7 @@ SpgRun run_spg(double mode_control) {
   run(sim, hooks);
   REQUIRE(sim.result.reason == solver::StopReason::end_time);
   const solver::State& s = *sim.state;
-  const spg::Domain& d = s.spg.front();
+  const spg::Domain& d = solver::spg::domain_of(s, 0);
   // The particles on the axis, by layer from the wall: the first 16 gaps (to 7.8 mm).
   std::vector<double> g = layer_gaps(s, [&](Index i) {
     return std::hypot(d.particles.initial_position(0, i), d.particles.initial_position(1, i)) <
