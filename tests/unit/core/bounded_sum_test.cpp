@@ -11,14 +11,13 @@
 #include <vector>
 
 #include "core/exact_sum.hpp"
+#include "same_bits.hpp"
 
 namespace mcdyna::core {
 
 namespace {
 
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof(double)) == 0;
-}
+using test::same_bits;
 
 double bound_of(const std::vector<double>& terms) {
   double m = 0.0;

@@ -12,19 +12,19 @@
 #include <random>
 #include <vector>
 
+#include "same_bits.hpp"
+
 namespace mcdyna::core {
 
 namespace {
+
+using test::same_bits;
 
 double sum_of(const std::vector<double>& terms) {
   ExactSum s;
   for (const double x : terms)
     s.add(x);
   return s.value();
-}
-
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof(double)) == 0;
 }
 
 // Terms over many scales and both signs, as energies and forces of a model are.
