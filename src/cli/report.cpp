@@ -35,19 +35,7 @@ const char* side_type_name(int t) {
 std::string section_label(const model::ModelDatabase& m, model::Id id) {
   const model::Section* s = m.section(id);
   if (s == nullptr) return fmt::format("{} (undefined)", id);
-  switch (s->kind) {
-    case model::SectionKind::solid:
-      return fmt::format("{} solid ELFORM {}", id, s->element_formulation);
-    case model::SectionKind::solid_spg:
-      return fmt::format("{} SPG ITB {} KERNEL {}", id, s->spg.stabilization, s->spg.kernel_update);
-    case model::SectionKind::shell:
-      return fmt::format("{} shell ELFORM {}", id, s->element_formulation);
-    case model::SectionKind::beam:
-      return fmt::format("{} beam ELFORM {}", id, s->element_formulation);
-    case model::SectionKind::discrete:
-      return fmt::format("{} discrete", id);
-  }
-  return "?";
+  return fmt::format("{} {}", id, s->summary);
 }
 
 // "main.k:12, 40; mesh.k:3" for the places a keyword occurs (first 12 shown).

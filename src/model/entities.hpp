@@ -137,6 +137,9 @@ struct Section {
   std::string title;
   SectionKind kind = SectionKind::solid;
   int element_formulation = 1;  ///< ELFORM (47 = SPG)
+  /// What `mcdyna check` shows after its ID ("shell ELFORM 16", "SPG ITB 3 KERNEL 1"): set by
+  /// the keyword's builder, so a new section kind adds no case to the report.
+  std::string summary;
   SpgSettings spg;
   ShellSettings shell;
   BeamSettings beam;

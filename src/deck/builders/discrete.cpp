@@ -34,6 +34,7 @@ void section_discrete(KeywordRecord& r, model::ModelDatabase& m) {
   s.title = title_of(r);
   s.kind = model::SectionKind::discrete;
   s.element_formulation = 0;
+  s.summary = "discrete";
   s.loc = c1.loc();
   m.sections.push_back(std::move(s));
 }

@@ -1,4 +1,6 @@
 // *SECTION_SOLID, *SECTION_SOLID_SPG, *SECTION_SHELL, *SECTION_BEAM.
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "deck/builders/builders.hpp"
@@ -19,6 +21,7 @@ void section_solid(KeywordRecord& r, model::ModelDatabase& m) {
                     "write it as *SECTION_SOLID_SPG",
                     s.id);
   }
+  s.summary = fmt::format("solid ELFORM {}", s.element_formulation);
   m.sections.push_back(std::move(s));
 }
 
@@ -78,6 +81,7 @@ void section_solid_spg(KeywordRecord& r, model::ModelDatabase& m) {
                     "do not fail in compression)",
                     s.id, spg.failure_stretch);
   }
+  s.summary = fmt::format("SPG ITB {} KERNEL {}", spg.stabilization, spg.kernel_update);
   m.sections.push_back(std::move(s));
 }
 
@@ -105,6 +109,7 @@ void section_shell(KeywordRecord& r, model::ModelDatabase& m) {
   s.shell.thickness_loc = c2.loc("T1");
   s.shell.reference_loc = c2.loc("NLOC");
   s.loc = c1.loc();
+  s.summary = fmt::format("shell ELFORM {}", s.element_formulation);
   m.sections.push_back(std::move(s));
 }
 
@@ -153,6 +158,7 @@ void section_beam(KeywordRecord& r, model::ModelDatabase& m) {
                       s.id);
     }
   }
+  s.summary = fmt::format("beam ELFORM {}", s.element_formulation);
   m.sections.push_back(std::move(s));
 }
 

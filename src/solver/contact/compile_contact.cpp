@@ -44,7 +44,7 @@ void report_initial_penetrations(State& s, Interface& in, const std::vector<std:
 // give, as a slave side has them), no passes.
 void compile_transducer(const model::ModelDatabase& m, const std::vector<PartSurface>& parts,
                         const FaceOwners& face_owner, core::Diagnostics& d, const model::Contact& c,
-                        model::Id number, State& s, std::vector<Interface>& out) {
+                        model::Id number, std::vector<Interface>& out) {
   bool ok = true;
   auto nodes_of = [&](const model::ContactSide& side, const char* name) {
     return all_nodes(resolve_side(m, parts, face_owner, d, c, number, side, name, ok));
@@ -325,7 +325,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlo
     // Contacts without an ID are numbered in deck order, as LS-DYNA numbers them in rcforc.
     const model::Id number = c.id > 0 ? c.id : static_cast<model::Id>(order + 1);
     if (c.kind == model::ContactKind::force_transducer)
-      compile_transducer(m, cs.parts, cs.face_owner, d, c, number, s, interfaces);
+      compile_transducer(m, cs.parts, cs.face_owner, d, c, number, interfaces);
     else if (c.kind != model::ContactKind::tied)  // the ties' own pass (compile_ties.cpp)
       compile_penalty_contact(m, cs, control, c, number, s, interfaces, d);
   }

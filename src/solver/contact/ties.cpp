@@ -116,7 +116,7 @@ class TieBlock final : public Block {
     after_constraints(s);
   }
 
-  void forces(State& s, NodalForces& forces, ForceReport& /*report*/) override {
+  void forces(State& /*s*/, NodalForces& forces, ForceReport& /*report*/) override {
     for (const Tie& t : ties_) {
       const Vec3 f = forces.force.col(t.slave);
       for (std::size_t k = 0; k < 4; ++k)
