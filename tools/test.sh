@@ -7,8 +7,9 @@
 # the same solver objects) and checks that it writes the same bytes as the MPI build on one
 # process (tests/nompi_same_bytes.sh), then builds the unit tests with AddressSanitizer +
 # UndefinedBehaviorSanitizer (the solver -O2 with line tables for the reports, the set-up code
-# -O0) and runs them (without the physics-length cases and the long decks; the MPI decks on 1
-# and 2 processes). Goal: under 30 minutes on a 2-core machine.
+# and the tests -O0 as unity builds) and runs them (without the physics-length cases and the
+# long decks; the MPI decks on 1 and 2 processes). Goal: under 30 minutes on a 2-core machine
+# (1,510 s at a081681, manual/verification.md "CI time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
