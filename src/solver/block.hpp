@@ -167,13 +167,8 @@ class DumpedBlock : public Block {
 };
 
 /// The blocks of a compiled state, in the loop's order (formulations.cpp): for each registry line,
-/// the blocks its compile pass made (`compiled`, by line), then those add_blocks makes.
-Blocks make_blocks(State& s, std::vector<Blocks> compiled);
-
-/// Each formulation adds its blocks for what the state holds (nothing when it holds none of it).
-void add_rigid_body_blocks(State& s, Blocks& blocks);  // rigid/rigid_block.cpp
-void add_contact_blocks(State& s, Blocks& blocks);     // contact/contact_block.cpp
-void add_tie_blocks(State& s, Blocks& blocks);         // contact/ties.cpp
+/// the blocks its compile pass made (`compiled`, by line).
+Blocks make_blocks(std::vector<Blocks> compiled);
 
 /// The state's first block of type B, or nullptr: how the accessors for tests reach a block's
 /// own data (beams_of, planar_walls_of, joint_stiffnesses_of).

@@ -230,7 +230,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
   detail::warn_free_corner_elements(m, *s, solids_of(before), shells_of(before), diags);
   if (diags.error_count() > errors) return nullptr;
-  s->blocks = make_blocks(*s, std::move(compiled));
+  s->blocks = make_blocks(std::move(compiled));
   for (const auto& b : s->blocks)
     b->link(*s, s->blocks, diags);
   if (diags.error_count() > errors) return nullptr;

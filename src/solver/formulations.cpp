@@ -15,33 +15,33 @@ namespace mcdyna::solver {
 const std::vector<Formulation>& formulations() {
   using namespace detail;
   static const std::vector<Formulation> kLines = {
-      {"solids", nullptr, nullptr, {}, false, compile_solids},
+      {"solids", {}, compile_solids},
       // Materials are numbered in part order within each element kind: solids, shells, beams,
       // SPG parts.
-      {"shells", nullptr, nullptr, {"solids"}, false, compile_shells},
-      {"beams", nullptr, nullptr, {"shells"}, false, compile_beams},
-      {"discrete", nullptr, nullptr, {"spg"}, false, compile_discrete},
-      {"spg", nullptr, nullptr, {"beams", "constraints", "motions"}, false, compile_spg_parts},
-      {"joints", nullptr, nullptr, {"rigid bodies"}, false, compile_joints},
-      {"rigid bodies", nullptr, nullptr, {"solids", "shells", "beams"}, true, compile_rigid_bodies},
-      {"constraints", nullptr, nullptr, {"rigid bodies"}, false, compile_constraints},
-      {"motions", nullptr, nullptr, {"rigid bodies"}, false, compile_motions},
+      {"shells", {"solids"}, compile_shells},
+      {"beams", {"shells"}, compile_beams},
+      {"discrete", {"spg"}, compile_discrete},
+      {"spg", {"beams", "constraints", "motions"}, compile_spg_parts},
+      {"joints", {"rigid bodies"}, compile_joints},
+      {"rigid bodies", {"solids", "shells", "beams"}, compile_rigid_bodies, true},
+      {"constraints", {"rigid bodies"}, compile_constraints},
+      {"motions", {"rigid bodies"}, compile_motions},
       // Nodes given a velocity move with it, rigid bodies with the fit of theirs; particles
       // take it once they exist.
-      {"initial velocities", compile_initial_velocities, nullptr, {"spg", "rigid bodies"}},
+      {"initial velocities", {"spg", "rigid bodies"}, nullptr, false, compile_initial_velocities},
       // Walls track the nodes that have mass, particles included.
-      {"rigid walls", nullptr, nullptr, {"spg"}, false, compile_planar_walls},
-      {"geometric walls", nullptr, nullptr, {"spg"}, false, compile_geometric_walls},
-      {"body loads", nullptr, nullptr, {}, false, compile_body_loads},
-      {"applied loads", nullptr, nullptr, {"rigid bodies", "shells"}, false, compile_applied_loads},
-      {"global damping", nullptr, nullptr, {}, false, compile_global_damping},
+      {"rigid walls", {"spg"}, compile_planar_walls},
+      {"geometric walls", {"spg"}, compile_geometric_walls},
+      {"body loads", {}, compile_body_loads},
+      {"applied loads", {"rigid bodies", "shells"}, compile_applied_loads},
+      {"global damping", {}, compile_global_damping},
       // Particles are slave nodes.
-      {"contact", nullptr, nullptr, {"spg", "rigid bodies", "ties"}, false, compile_contacts},
+      {"contact", {"spg", "rigid bodies", "ties"}, compile_contacts},
       // After every force (the slaves' go to their masters); compiled before the contacts, which
       // see the tied nodes where the ties moved them.
-      {"ties", nullptr, nullptr, {"spg", "rigid bodies"}, false, compile_ties},
+      {"ties", {"spg", "rigid bodies"}, compile_ties},
       // Last: reads the cycle's results and switches the blocks before it (Block::link).
-      {"sensors", nullptr, nullptr, {}, false, compile_sensors},
+      {"sensors", {}, compile_sensors},
   };
   return kLines;
 }
@@ -82,15 +82,11 @@ State::~State() = default;
 State::State(State&&) noexcept = default;
 State& State::operator=(State&&) noexcept = default;
 
-Blocks make_blocks(State& s, std::vector<Blocks> compiled) {
-  const std::vector<Formulation>& lines = formulations();
-  compiled.resize(lines.size());
+Blocks make_blocks(std::vector<Blocks> compiled) {
   Blocks blocks;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    for (auto& b : compiled[k])
+  for (Blocks& line : compiled)
+    for (auto& b : line)
       blocks.push_back(std::move(b));
-    if (lines[k].add_blocks != nullptr) lines[k].add_blocks(s, blocks);
-  }
   return blocks;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// The formulations, one line each in the time loop's order (design.md §7): the compile pass that
-/// turns its keywords into its part of the State, and the blocks it runs as. make_blocks() makes
-/// the blocks in exactly this order; compile() runs the passes in it too, but moves a pass after
+/// turns its keywords into the blocks it runs as, each owning its data. make_blocks() puts the
+/// blocks in exactly this order; compile() runs the passes in it too, but moves a pass after
 /// the lines whose compiled data it reads (`after`: an SPG part's particles pinned by the
 /// constraints and motions, a joint's reduced mass from the rigid bodies).
 #include <cstddef>
@@ -17,23 +17,20 @@ namespace mcdyna::solver {
 /// `after` lines among them).
 using CompilePass = void (*)(const model::ModelDatabase&, State&, const CompiledBlocks&,
                              core::Diagnostics&);
-using AddBlocks = void (*)(State&, Blocks&);
 /// A pass that makes blocks owning their data (design.md §7), into the line's own list.
 using CompileBlocks = void (*)(const model::ModelDatabase&, State&, const CompiledBlocks&, Blocks&,
                                core::Diagnostics&);
 
 struct Formulation {
   const char* name = "";
-  /// nullptr: compiled by the pass of the line it names in `after` (the same keywords), or by
-  /// compile_blocks
-  CompilePass compile = nullptr;
-  AddBlocks add_blocks = nullptr;  ///< nullptr: no block of its own (initial conditions)
   std::vector<const char*> after;  ///< lines whose compiled data its pass reads
+  /// Its pass, which makes its blocks (none when the deck holds none of it).
+  CompileBlocks compile_blocks = nullptr;
   /// The passes after it read the elements' and rigid bodies' arrays whole: compile() stops at
   /// the errors reported so far.
   bool stop_on_errors = false;
-  /// A formulation whose blocks own their data: its pass makes them (add_blocks nullptr).
-  CompileBlocks compile_blocks = nullptr;
+  /// A line without blocks (initial conditions): its pass sets the state's initial values.
+  CompilePass compile = nullptr;
 };
 
 /// The registry (formulations.cpp).

@@ -57,14 +57,12 @@ TEST_CASE("the compile passes follow what they read, otherwise the loop's order"
 }
 
 TEST_CASE("a registry line naming an unknown line or a cycle is a programming error") {
-  const std::vector<Formulation> unknown = {{"a", nullptr, nullptr, {"b"}}};
+  const std::vector<Formulation> unknown = {{"a", {"b"}}};
   CHECK_THROWS_AS(compile_order(unknown), std::logic_error);
-  const std::vector<Formulation> cycle = {{"a", nullptr, nullptr, {"b"}},
-                                          {"b", nullptr, nullptr, {"a"}}};
+  const std::vector<Formulation> cycle = {{"a", {"b"}}, {"b", {"a"}}};
   CHECK_THROWS_AS(compile_order(cycle), std::logic_error);
   // Without dependencies the registry's order stands; a line waits only as long as it must.
-  const std::vector<Formulation> waits = {
-      {"a", nullptr, nullptr, {"c"}}, {"b", nullptr, nullptr, {}}, {"c", nullptr, nullptr, {}}};
+  const std::vector<Formulation> waits = {{"a", {"c"}}, {"b", {}}, {"c", {}}};
   const std::vector<std::string> waited = names(waits, compile_order(waits));
   REQUIRE(waited.size() == 3);
   CHECK(waited[0] == "b");
