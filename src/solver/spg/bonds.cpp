@@ -63,7 +63,7 @@ long break_bonds(const State& s, Domain& d) {
   Bonds& b = d.kernel.bonds;
   const auto& ep = d.fields.points.plastic_strain;
   const Eigen::Matrix3Xd& x = s.nodes.position;
-  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const ParticleSubset* owned = share ? &share->owned : nullptr;
   const std::size_t count = members(owned, d.count());
   // Each bond is stored at both ends; it is decided once, at its lower end (i < j), and its

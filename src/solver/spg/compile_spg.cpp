@@ -189,7 +189,8 @@ void compile_spg_parts(const model::ModelDatabase& m, State& s, const CompiledBl
   }
   for (std::size_t k = 0; k < domains.size(); ++k) {
     const model::Id part = s.parts[static_cast<std::size_t>(domains[k].part)].id;
-    own.push_back(spg::make_part_block(std::move(domains[k]), k, part));
+    domains[k].index = k;
+    own.push_back(spg::make_part_block(std::move(domains[k]), part));
   }
 }
 

@@ -87,11 +87,6 @@ bool splittable(const Domain& d) {
   return mode == Stabilization::momentum_consistent || mode == Stabilization::none;
 }
 
-std::size_t domain_index(const State& s, const Domain& d) {
-  const std::vector<const Domain*> domains = domains_of(s);
-  return static_cast<std::size_t>(std::find(domains.begin(), domains.end(), &d) - domains.begin());
-}
-
 void share_particles(State& s, std::size_t domain) {
   const Domain& d = domain_of(s, domain);
   parallel::ParticleShare& share = share_of(s, domain);

@@ -35,9 +35,6 @@ namespace mcdyna::solver::spg {
 /// SpgBlock::mark_replicated).
 bool splittable(const Domain& d);
 
-/// The index of `d` among the SPG parts (spg_parts.hpp).
-std::size_t domain_index(const State& s, const Domain& d);
-
 /// The share of part `domain` from the node owners (s.ownership.owner), with its exchange plans.
 /// Collective.
 void share_particles(State& s, std::size_t domain);

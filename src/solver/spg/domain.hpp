@@ -302,6 +302,9 @@ struct SpgDiagnostics {
 struct Domain {
   Index part = 0;      ///< solver part index
   Index material = 0;  ///< compiled material index
+  /// Its number among the SPG parts, in the blocks' order (spg_parts.hpp): the index of its
+  /// share over several processes and of State::controlling_domain.
+  std::size_t index = 0;
   SpgSettings settings;
   ParticleSet particles;
   Kernel kernel;

@@ -51,9 +51,9 @@ void fields(Ar& ar, StepBound& b) {
 
 template <class Ar>
 void fields(Ar& ar, Domain& d) {
-  ar(d.part, d.material, d.settings, d.particles.nodes, d.particles.mass, d.particles.base_mass,
-     d.particles.shared, d.particles.surface, d.particles.initial_volume, d.fields.volume,
-     d.particles.initial_position, d.particles.initial_support);
+  ar(d.part, d.material, d.index, d.settings, d.particles.nodes, d.particles.mass,
+     d.particles.base_mass, d.particles.shared, d.particles.surface, d.particles.initial_volume,
+     d.fields.volume, d.particles.initial_position, d.particles.initial_support);
   ar(d.kernel.support, d.kernel.reference_deformation, d.kernel.list, d.kernel.shape,
      d.kernel.transpose, d.kernel.smoothed_mass, d.particles.added_mass, d.particles.mass_request,
      d.kernel.pinned, d.kernel.length, d.kernel.mobility, d.kernel.mobility_scale,
@@ -77,7 +77,7 @@ void fields(Ar& ar, Domain& d) {
 
 inline constexpr auto kDomainDumpedSizes = sizes_of<Domain, SpgSettings, StepBound>();
 static_assert(
-    !kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1984, 96, 112},
+    !kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1992, 96, 112},
     "spg::Domain, SpgSettings or StepBound changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver::spg

@@ -305,7 +305,7 @@ FrequencyEstimate largest_frequency(State& s, Domain& d, int iterations, Eigen::
   FrequencyEstimate r;
   if (n == 0) return r;
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
-  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const OrderFree sums{share != nullptr ? &share->owned : nullptr, s.ownership.comm};
   Eigen::Matrix3Xd& x = d.scratch.vector;
   Eigen::Matrix3Xd& ax = d.scratch.product;

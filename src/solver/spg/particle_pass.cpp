@@ -280,7 +280,7 @@ ParticleKinematics particle_kinematics(const State& s, const Domain& d, Index j,
 }
 
 ParticlePassResult particle_pass(State& s, Domain& d, double step, Eigen::Matrix3Xd& force) {
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   std::vector<std::uint8_t> renewed;  // the rows renewed at this cycle's check, if any
   if (d.kernel.steps_since_renewal >= d.settings.renewal_interval) {
     // Over several processes each first receives what the check reads of every particle, so

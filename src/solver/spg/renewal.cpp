@@ -41,7 +41,7 @@ Supports current_supports(const State& s, const Domain& d) {
   if (d.settings.kernel_update == KernelUpdate::eulerian)
     return deformed(d.settings.shape, d.particles.initial_support);
   Eigen::Matrix<double, 9, Eigen::Dynamic> shapes(9, d.count());
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   const ParticleSubset* owned = share ? &share->owned : nullptr;
   const std::size_t count = members(owned, d.count());
@@ -174,7 +174,7 @@ void update_mobility(State& s, Domain& d) {
   const Index n = d.count();
   d.kernel.mobility.assign(static_cast<std::size_t>(n), 1.0);
   if (d.settings.stabilization != Stabilization::momentum_consistent) return;
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   parallel::ParticleShare* share = s.ownership.split_part(domain);
   const ParticleSubset* owned = share ? &share->owned : nullptr;
   const std::size_t count = members(owned, n);
@@ -251,7 +251,7 @@ void update_mobility(State& s, Domain& d) {
 void smooth_masses(State& s, Domain& d) {
   const Index n = d.count();
   const Stabilization mode = d.settings.stabilization;
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   const ParticleSubset* owned = share ? &share->owned : nullptr;
   const std::size_t count = members(owned, n);
@@ -337,7 +337,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
     for (Index i = 0; i < n; ++i)
       damaged[static_cast<std::size_t>(i)] = d.kernel.bonds.damage(i) > 0.0 ? 1 : 0;
   }
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   const parallel::ParticleShare* split = s.ownership.split_part(domain);
   const double exchanged_before = split ? split->exchange_seconds : 0.0;
   if (split) {
@@ -464,7 +464,7 @@ void renew_kernel(State& s, Domain& d, const std::vector<std::uint8_t>& rows) {
 }
 
 void keep_read_rows(State& s, Domain& d) {
-  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const Index n = d.count();
   std::vector<std::uint8_t> dropped(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < dropped.size(); ++i)
@@ -504,7 +504,7 @@ Index rows_to_renew(const State& s, Domain& d, bool bonds_broke, std::vector<std
   const Eigen::Matrix3Xd& x = s.nodes.position;
   const KernelShape shape = d.settings.shape;
   // Over several processes each decides for its own rows, and all share the decisions.
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   const parallel::ParticleShare* share = s.ownership.split_part(domain);
   const ParticleSubset* owned = share ? &share->owned : nullptr;
   const std::size_t decided = members(owned, n);

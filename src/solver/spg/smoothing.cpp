@@ -83,7 +83,7 @@ Index advance_velocities(State& s, Domain& d, const Eigen::Matrix3Xd& force, dou
   const auto start = std::chrono::steady_clock::now();
   Nodes& nd = s.nodes;
   const Index n = d.count();
-  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const ParticleSubset* mine = advanced_particles(share);
   const std::size_t advanced = members(mine, n);
   const double exchanged = share ? share->exchange_seconds : 0.0;  // before this update
@@ -209,7 +209,7 @@ Index advance_velocities(State& s, Domain& d, const Eigen::Matrix3Xd& force, dou
 void absorb_constraints(State& s, Domain& d) {
   const Nodes& nd = s.nodes;
   const Index n = d.count();
-  parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const ParticleSubset* mine = advanced_particles(share);
   const std::size_t advanced = members(mine, n);
   // The change each constraint or wall made to a smoothed particle's velocity, as an impulse

@@ -41,8 +41,7 @@ ElementResult particle_result(const spg::Domain& d, Index i) {
 
 class SpgBlock final : public DumpedBlock<SpgBlock> {
  public:
-  SpgBlock(spg::Domain domain, std::size_t index, model::Id part)
-      : domain_(std::move(domain)), index_(index), part_(part) {}
+  SpgBlock(spg::Domain domain, model::Id part) : domain_(std::move(domain)), part_(part) {}
   [[nodiscard]] const spg::Domain& domain() const { return domain_; }
   [[nodiscard]] spg::Domain& domain() { return domain_; }
   [[nodiscard]] std::string dump_name() const override { return fmt::format("SPG part {}", part_); }
@@ -107,13 +106,15 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
     if (p.critical_step < r.critical_step) {
       r.critical_step = p.critical_step;
       r.controlling_element = -1;
-      r.controlling_domain = index_;
+      r.controlling_domain = domain_.index;
       r.controlling_particle = p.controlling;
     }
     if (p.inverted >= 0)
-      r.fail("non-positive Jacobian or volume at " + particle_name(s, index_, p.inverted), true);
+      r.fail("non-positive Jacobian or volume at " + particle_name(s, domain_.index, p.inverted),
+             true);
     else if (p.non_finite >= 0)
-      r.fail("non-finite stress or wave speed at " + particle_name(s, index_, p.non_finite), false);
+      r.fail("non-finite stress or wave speed at " + particle_name(s, domain_.index, p.non_finite),
+             false);
   }
 
   Index advance_velocities(State& s, const NodalForces& f, const StepTimes& t) override {
@@ -132,12 +133,12 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
 
   void distribute(State& s) override {
     if (!spg::splittable(domain_)) return;
-    spg::share_particles(s, index_);
+    spg::share_particles(s, domain_.index);
     spg::keep_read_rows(s, domain_);
   }
 
   void synchronise(State& s, Gather what) override {
-    spg::synchronise(s, index_,
+    spg::synchronise(s, domain_.index,
                      what == Gather::dump    ? spg::Scope::everything
                      : what == Gather::state ? spg::Scope::to_root
                                              : spg::Scope::histories);
@@ -152,7 +153,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
       phases.seconds[PhaseTimes::spg_neighbours + k] += split[k];
       phases.seconds[PhaseTimes::elements] -= split[k];
     }
-    if (const parallel::ParticleShare* share = s.ownership.split_part(index_)) {
+    if (const parallel::ParticleShare* share = s.ownership.split_part(domain_.index)) {
       phases.seconds[PhaseTimes::exchange] += share->exchange_seconds;
       phases.seconds[PhaseTimes::elements] -= share->exchange_seconds;
     }
@@ -177,7 +178,6 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
 
  private:
   spg::Domain domain_;
-  std::size_t index_;  // its number among the SPG parts (spg_parts.hpp)
   model::Id part_;
 };
 
@@ -185,8 +185,8 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
 
 namespace spg {
 
-std::unique_ptr<Block> make_part_block(Domain domain, std::size_t index, model::Id part) {
-  return std::make_unique<SpgBlock>(std::move(domain), index, part);
+std::unique_ptr<Block> make_part_block(Domain domain, model::Id part) {
+  return std::make_unique<SpgBlock>(std::move(domain), part);
 }
 
 std::vector<const Domain*> domains_of(const State& s) {

@@ -17,8 +17,8 @@ struct State;          // state.hpp
 
 namespace spg {
 
-/// The block of SPG part `part` (user ID), domain number `index` (compile_spg.cpp).
-std::unique_ptr<Block> make_part_block(Domain domain, std::size_t index, model::Id part);
+/// The block of SPG part `part` (user ID) (compile_spg.cpp).
+std::unique_ptr<Block> make_part_block(Domain domain, model::Id part);
 
 /// The domains in order: at run time from the state's blocks, during compile from the blocks
 /// compiled before (the contact sides).

@@ -159,7 +159,7 @@ void update_stiffness_length(State& s, Domain& d) {
   }
   // Over several processes a particle's transpose is whole on its owner only, and the cycle's
   // step reads the lengths of every stressed row (particle_pass.cpp).
-  const std::size_t domain = domain_index(s, d);
+  const std::size_t domain = d.index;
   if (s.ownership.split_part(domain) != nullptr)
     timed_exchange(s, domain,
                    [&] { share_columns(s, domain, d.kernel.step_bound.lengths.data(), 1); });
@@ -217,7 +217,7 @@ double calibrate_stiffness_length(State& s, Domain& d) {
   if (d.settings.step_estimate != StepEstimate::eigenvalue) return critical;  // reported only
   const Material& mat = s.materials[static_cast<std::size_t>(d.material)];
   // Over several processes each takes its own particles (their volumes are current there).
-  const parallel::ParticleShare* share = s.ownership.split_part(domain_index(s, d));
+  const parallel::ParticleShare* share = s.ownership.split_part(d.index);
   const ParticleSubset* own = share != nullptr ? &share->owned : nullptr;
   double shortest = std::numeric_limits<double>::infinity();  // min l / (c sqrt(mobility))
   for (std::size_t k = 0; k < members(own, d.count()); ++k) {
