@@ -11,7 +11,7 @@
 #include "cli/load.hpp"
 #include "cli/report.hpp"
 #include "deck/deck.hpp"
-#include "solver/compile.hpp"
+#include "solver/run/compile.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::cli {

@@ -10,8 +10,8 @@
 
 #include "cli/load.hpp"
 #include "deck/deck.hpp"
-#include "solver/compile.hpp"
-#include "solver/parallel/decomposition.hpp"
+#include "solver/run/compile.hpp"
+#include "solver/run/decomposition.hpp"
 #include "solver/solids/solids.hpp"
 #include "solver/spg/spg_solver.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 /// `mcdyna partition DECK --ranks N[,N...]`: the decomposition a run over N processes would use
-/// (solver/parallel/decomposition.hpp), computed without running the physics: per rank the
+/// (solver/run/decomposition.hpp), computed without running the physics: per rank the
 /// nodes it owns and reads, the elements and SPG rows it computes and how many of them other
 /// ranks compute too, and the balance of the estimated cost.
 #include <filesystem>

@@ -9,7 +9,7 @@
 #include "core/binary_archive.hpp"
 #include "core/diagnostics.hpp"
 #include "io/checked_file.hpp"
-#include "solver/restart.hpp"
+#include "solver/run/restart.hpp"
 
 namespace mcdyna::cli {
 

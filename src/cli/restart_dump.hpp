@@ -1,8 +1,8 @@
 #pragma once
 /// Restart dumps (*DATABASE_BINARY_D3DUMP, *DATABASE_BINARY_RUNRSF, and the running restart file
 /// an interrupted run leaves) and reading one back for `mcdyna run DECK --restart FILE`. A dump
-/// holds the solver state's changing part (solver/restart.hpp), the time loop's resume point and
-/// where the outputs stood; the deck's constant data comes from compiling the same deck again,
+/// holds the solver state's changing part (solver/run/restart.hpp), the time loop's resume point
+/// and where the outputs stood; the deck's constant data comes from compiling the same deck again,
 /// which the dump's fingerprint checks. mcdyna's own format, not LS-DYNA's d3dump.
 #include <filesystem>
 #include <string>
@@ -11,7 +11,7 @@
 #include "core/source.hpp"
 #include "io/outputs.hpp"
 #include "model/controls.hpp"
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::cli {

@@ -15,8 +15,8 @@
 #include "cli/run_session.hpp"
 #include "core/communicator.hpp"
 #include "deck/deck.hpp"
-#include "solver/compile.hpp"
-#include "solver/run_overrides.hpp"
+#include "solver/run/compile.hpp"
+#include "solver/run/run_overrides.hpp"
 
 namespace mcdyna::cli {
 

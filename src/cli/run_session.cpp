@@ -19,7 +19,7 @@
 #include "io/checked_file.hpp"
 #include "solver/block.hpp"
 #include "solver/energy.hpp"
-#include "solver/run_overrides.hpp"
+#include "solver/run/run_overrides.hpp"
 #include "solver/solids/solids.hpp"
 #include "solver/spg/spg_parts.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 /// One process's run of a compiled deck, as `mcdyna run` drives it: the output directory and
 /// its lock, the restart dump it continues from, d3hsp, the outputs and the restart dumps, the
-/// progress and the sense switches, given to the solver as its hooks (solver/driver.hpp); then
+/// progress and the sense switches, given to the solver as its hooks (solver/run/driver.hpp); then
 /// the end-of-run summary and the exit code. run_command.cpp reads and compiles the deck and
 /// hands the state here.
 #include <chrono>
@@ -25,7 +25,7 @@
 #include "io/inertia.hpp"
 #include "io/output_lock.hpp"
 #include "io/outputs.hpp"
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/spg/angular_budget.hpp"
 
 namespace mcdyna::cli {

@@ -3,7 +3,7 @@
 #include <iosfwd>
 
 #include "core/communicator.hpp"
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::cli {

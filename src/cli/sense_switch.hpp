@@ -12,7 +12,7 @@
 #include <ostream>
 #include <string>
 
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 
 namespace mcdyna::cli {
 

@@ -71,6 +71,7 @@ struct ModelDatabase {
   [[nodiscard]] const Material* material(Id id) const {
     return lookup(materials, index.materials, id);
   }
+  [[nodiscard]] const Curve* curve(Id id) const { return lookup(curves, index.curves, id); }
   [[nodiscard]] const NodeSet* node_set(Id id) const {
     return lookup(node_sets, index.node_sets, id);
   }

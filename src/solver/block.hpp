@@ -16,14 +16,13 @@
 #include "core/binary_archive.hpp"
 #include "core/diagnostics.hpp"
 #include "model/sensors.hpp"  // SensedEntity
-#include "solver/driver.hpp"  // PhaseTimes
 #include "solver/element_ref.hpp"
 #include "solver/energy.hpp"
 #include "solver/history_records.hpp"
 #include "solver/nodal_forces.hpp"
-#include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
 #include "solver/state_sink.hpp"
+#include "solver/step_times.hpp"
 
 namespace mcdyna::solver {
 
@@ -69,7 +68,7 @@ class Block {
   /// Entity updates per cycle (element and particle counts of the timing summary).
   [[nodiscard]] virtual long elements() const { return 0; }
   [[nodiscard]] virtual long particles() const { return 0; }
-  /// Over several processes (parallel/halo.hpp): a block that every process computes whole
+  /// Over several processes (run/halo.hpp): a block that every process computes whole
   /// marks the nodes it reads or moves, which every process then moves itself. Blocks split
   /// over the processes (hexahedra) and node-wise conditions mark nothing.
   virtual void mark_replicated(const State& /*s*/, std::vector<std::uint8_t>& /*nodes*/) const {}
@@ -79,7 +78,7 @@ class Block {
   /// element's massless node must be held in x, y and z (compile_discrete).
   virtual void mark_held(std::vector<std::uint8_t>& /*held*/) const {}
   /// The slave nodes its contact passes visit every cycle, one entry per pass and node (the
-  /// decomposition's contact cost, parallel/decomposition.cpp).
+  /// decomposition's contact cost, run/decomposition.cpp).
   virtual void add_contact_nodes(std::vector<Index>& /*nodes*/) const {}
   /// What it is for the user when it cannot run over several processes ("tied contacts
   /// (*CONTACT_TIED_...)"), or empty.

@@ -1,25 +1,20 @@
 #pragma once
-/// Model database -> solver State. Runs once after the deck checks. Everything the solver cannot
-/// run is reported as an error at the deck location that asks for it; nothing is dropped silently.
+/// The formulations' compile passes (each in its folder, run in the registry's order by
+/// run/compile.cpp's compile()) and the helpers they share. Everything the solver cannot run is
+/// reported as an error at the deck location that asks for it; nothing is dropped silently.
 #include <memory>
 
 #include "core/diagnostics.hpp"
 #include "model/model_database.hpp"
-#include "solver/fe/hourglass.hpp"
+#include "solver/material/compile_material.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {
-
-/// Returns the state, or nullptr when errors were reported (the model must have passed
-/// model::check, which builds the ID indices this uses).
-std::unique_ptr<State> compile(const model::ModelDatabase& model, core::Diagnostics& diags);
 
 /// Solver indices of the nodes of a node set (sorted, unique); empty if the set is unknown.
 std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set);
 
 class CompiledBlocks;  // block.hpp: the blocks of the passes before
-struct Solids;         // solids/solids.hpp
-struct Shells;         // shells/shells.hpp
 
 namespace detail {
 /// Node -> (element * N + corner) lists of a connectivity in element order (CSR: `offsets` per
@@ -60,8 +55,6 @@ std::vector<std::vector<std::size_t>> elements_by_part(const model::ModelDatabas
 
 // The formulations' compile passes (compile_*.cpp in their folders; formulations.cpp orders
 // them).
-/// The nodes (positions, zero velocities and masses) and one PartInfo per part, in deck order.
-void compile_nodes_and_parts(const model::ModelDatabase& m, State& s);
 void compile_solids(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                     Blocks& own, core::Diagnostics& d);
 void compile_shells(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
@@ -118,18 +111,7 @@ void compile_contacts(const model::ModelDatabase& m, State& s, const CompiledBlo
 void compile_sensors(const model::ModelDatabase& m, State& s, const CompiledBlocks& before,
                      Blocks& own,
                      core::Diagnostics& d);  // sensors/sensor_block.cpp
-/// Warns of parts whose elements have no corner held (a lone shell, a column of hexahedra one
-/// element across) when TSSFAC is above their breathing mode's bound (compile.cpp).
-void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, const Solids& solids,
-                               const Shells& shells, core::Diagnostics& d);
-Material compile_material(const model::ModelDatabase& m, const model::Part& part,
-                          core::Diagnostics& d);
 Index curve_index(const model::ModelDatabase& m, model::Id id);
-/// The part's *HOURGLASS (HGID), or null; and the hourglass type and coefficient it runs with
-/// (*CONTROL_HOURGLASS without one), with its Q1, Q2 into `q`.
-const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const model::Part& part);
-HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
-                             BulkViscosityParams& q);
 /// Thickness of a shell element: the mean of its corners' (*ELEMENT_SHELL_THICKNESS, else the
 /// section's T1..T4, a zero T2..T4 taking T1).
 double shell_thickness(const model::ShellElement& el, const model::Section* sec);

@@ -1,7 +1,7 @@
 #pragma once
-/// The solver state: compiled once from the model database (solver/compile.hpp), holding only what
-/// the deck uses, as structs of arrays indexed by dense solver indices. User IDs are kept beside
-/// the arrays for output and diagnostics only.
+/// The solver state: compiled once from the model database (solver/run/compile.hpp), holding only
+/// what the deck uses, as structs of arrays indexed by dense solver indices. User IDs are kept
+/// beside the arrays for output and diagnostics only.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 

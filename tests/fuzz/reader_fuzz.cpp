@@ -27,7 +27,7 @@
 #include "deck/registry.hpp"
 #include "deck/text_util.hpp"
 #include "model/checks.hpp"
-#include "solver/compile.hpp"
+#include "solver/run/compile.hpp"
 
 namespace fs = std::filesystem;
 using namespace mcdyna;

@@ -12,7 +12,7 @@
 
 #include "compiled_deck.hpp"
 #include "core/communicator.hpp"
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/solids/solids.hpp"
 
 int main(int argc, char** argv) {

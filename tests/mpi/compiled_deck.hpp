@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "cli/load.hpp"
-#include "solver/compile.hpp"
+#include "solver/run/compile.hpp"
 
 inline std::unique_ptr<mcdyna::solver::State> compiled_deck(const char* path) {
   std::ostringstream report;

@@ -15,8 +15,8 @@
 
 #include "compiled_deck.hpp"
 #include "core/communicator.hpp"
-#include "solver/driver.hpp"
-#include "solver/parallel/decomposition.hpp"
+#include "solver/run/decomposition.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/spg/spg_parts.hpp"
 
 int main(int argc, char** argv) {

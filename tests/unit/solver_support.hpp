@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "solver/compile.hpp"
 #include "solver/contact/contact.hpp"
-#include "solver/driver.hpp"
 #include "solver/energy.hpp"
+#include "solver/run/compile.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/solids/solids.hpp"
 #include "solver/spg/spg_parts.hpp"
 #include "solver/spg/spg_solver.hpp"

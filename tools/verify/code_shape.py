@@ -6,9 +6,12 @@ restructuring:
   - the functions that take the whole solver State (a parameter of type State& / const State&);
   - the longest functions in cli/ and solver/ (lines, from Universal Ctags' start and end);
   - the files a commit touches, by folder (--commit REV), to measure "a new formulation touches
-    its folder, its .kw files, its tests and at most two lines elsewhere".
+    its folder, its .kw files, its tests and at most two lines elsewhere";
+  - cycles among solver/'s folders (one folder includes another's header, directly or through
+    others, and back; the root counts as a folder): --layers prints the folders' includes and
+    exits 1 on a cycle (a CTest entry, "solver folders: no include cycles").
 
-    tools/verify/code_shape.py [--rev REV] [--top N] [--commit REV]
+    tools/verify/code_shape.py [--rev REV] [--top N] [--commit REV] [--layers]
 
 --rev measures another revision (checked out into a temporary work tree).
 """
@@ -37,6 +40,81 @@ def functions(root, folder):
         if tag.get("kind") != "function" or "end" not in tag:
             continue
         yield tag
+
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"(solver/[^"]+)"', re.M)
+
+
+def solver_folder(rel):
+    """The folder of a path under src/solver/ ("." for the root)."""
+    parts = rel.split("/")
+    return parts[0] if len(parts) > 1 else "."
+
+
+def folder_includes(root):
+    """{folder: {included folder: [file -> header, ...]}} among src/solver/'s folders."""
+    solver = os.path.join(root, "src", "solver")
+    edges = {}
+    for dirpath, _, files in os.walk(solver):
+        for f in files:
+            path = os.path.join(dirpath, f)
+            here = solver_folder(os.path.relpath(path, solver))
+            with open(path, encoding="utf-8") as fh:
+                for header in INCLUDE.findall(fh.read()):
+                    there = solver_folder(header[len("solver/"):])
+                    edges.setdefault(here, {})
+                    if there != here:
+                        edges[here].setdefault(there, []).append(
+                            f"{os.path.relpath(path, solver)} -> {header}")
+    return edges
+
+
+def folder_cycles(edges):
+    """The strongly connected sets of more than one folder (Tarjan), each sorted."""
+    index, low, stack, on, found = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in edges.get(v, {}):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            scc = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                scc.append(w)
+                if w == v:
+                    break
+            if len(scc) > 1:
+                found.append(sorted(scc))
+
+    for v in sorted(edges):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def layers(root):
+    """Prints each folder's includes of other folders and any cycle; 1 on a cycle."""
+    edges = folder_includes(root)
+    for here in sorted(edges):
+        there = ", ".join(f"{t} ({len(v)})" for t, v in sorted(edges[here].items()))
+        print(f"  {here:10s} -> {there or '(nothing of the solver)'}")
+    cycles = folder_cycles(edges)
+    for c in cycles:
+        print("folder cycle: " + " <-> ".join(c))
+        for a in c:
+            for b in c:
+                for e in edges.get(a, {}).get(b, []):
+                    print(f"    {e}")
+    print(f"folder cycles in src/solver/: {len(cycles)}")
+    return 1 if cycles else 0
 
 
 def shape(root, top):
@@ -73,6 +151,7 @@ def shape(root, top):
         print(f"longest functions in {folder}/ ({over} over 80 lines):")
         for n, where in rows[:top]:
             print(f"  {n:5d}  {where}")
+    print(f"folder cycles in src/solver/: {len(folder_cycles(folder_includes(root)))}")
 
 
 def touched(root, rev):
@@ -91,25 +170,25 @@ def main():
     ap.add_argument("--rev", help="measure this revision instead of the work tree")
     ap.add_argument("--top", type=int, default=5)
     ap.add_argument("--commit", help="list the files this commit touches")
+    ap.add_argument("--layers", action="store_true",
+                    help="print solver/'s folder includes; exit 1 on a cycle")
     a = ap.parse_args()
-    root = subprocess.run(["git", "rev-parse", "--show-toplevel"], check=True,
-                          capture_output=True, text=True).stdout.strip()
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     if a.commit:
         touched(root, a.commit)
         return 0
+    measure = (lambda r: layers(r)) if a.layers else (lambda r: shape(r, a.top) or 0)
     if a.rev:
         with tempfile.TemporaryDirectory() as tmp:
             subprocess.run(["git", "worktree", "add", "--detach", tmp, a.rev], cwd=root,
                            check=True, capture_output=True)
             try:
                 print(f"at {a.rev}")
-                shape(tmp, a.top)
+                return measure(tmp)
             finally:
                 subprocess.run(["git", "worktree", "remove", "--force", tmp], cwd=root,
                                check=True, capture_output=True)
-    else:
-        shape(root, a.top)
-    return 0
+    return measure(root)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,9 @@ namespace {
 class BeamsBlock final : public DumpedBlock<BeamsBlock> {
  public:
   [[nodiscard]] std::string dump_name() const override { return "beams"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kBeamsDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kBeamsDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(bm_);

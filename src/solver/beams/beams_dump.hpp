@@ -19,8 +19,8 @@ void fields(Ar& ar, Beams& b) {
      b.blocks, b.points, b.end_offsets, b.ends);
 }
 
-inline constexpr auto kBeamsDumpedSizes = sizes_of<Beams, BeamBlock>();
-static_assert(!kSizesPinned || kBeamsDumpedSizes == decltype(kBeamsDumpedSizes){672, 432},
+inline constexpr auto kBeamsDumpedSizes = core::sizes_of<Beams, BeamBlock>();
+static_assert(!core::kSizesPinned || kBeamsDumpedSizes == decltype(kBeamsDumpedSizes){672, 432},
               "Beams or BeamBlock changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

@@ -42,7 +42,7 @@ class InterfaceBlock : public DumpedBlock<Derived> {
     return fmt::format("contact interface {}", order_ + 1);
   }
   [[nodiscard]] std::string dump_layout() const override {
-    return sizes_text(contact::kInterfaceDumpedSizes);
+    return core::sizes_text(contact::kInterfaceDumpedSizes);
   }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {

@@ -1,7 +1,7 @@
 #pragma once
 /// A contact interface's restart dump: the member lists of what changes during a run (dump.hpp).
+#include "core/pinned_sizes.hpp"
 #include "solver/contact/interface.hpp"
-#include "solver/dump.hpp"
 
 namespace mcdyna::solver::contact {
 
@@ -36,8 +36,8 @@ void fields(Ar& ar, Interface& c) {
      c.moment_b, c.mass_in_contact, c.energy, c.applied, c.computed);
 }
 
-inline constexpr auto kInterfaceDumpedSizes = sizes_of<Interface, Pass, Surface>();
-static_assert(!kSizesPinned ||
+inline constexpr auto kInterfaceDumpedSizes = core::sizes_of<Interface, Pass, Surface>();
+static_assert(!core::kSizesPinned ||
                   kInterfaceDumpedSizes == decltype(kInterfaceDumpedSizes){456, 352, 144},
               "contact::Interface, Pass or Surface changed: list the new member in fields() above");
 

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
 #include "solver/discrete/springs.hpp"
-#include "solver/dump.hpp"
 
 namespace mcdyna::solver {
 
@@ -18,8 +18,8 @@ namespace {
 using discrete::SpringLaw;
 using discrete::Springs;
 
-inline constexpr auto kSpringsDumpedSizes = sizes_of<Springs>();
-static_assert(!kSizesPinned || kSpringsDumpedSizes == decltype(kSpringsDumpedSizes){312},
+inline constexpr auto kSpringsDumpedSizes = core::sizes_of<Springs>();
+static_assert(!core::kSizesPinned || kSpringsDumpedSizes == decltype(kSpringsDumpedSizes){312},
               "discrete::Springs changed: list what changes in a run in dumped() below, or "
               "leave it out as deck data");
 
@@ -122,7 +122,9 @@ class SpringsBlock final : public DumpedBlock<SpringsBlock> {
   }
 
   [[nodiscard]] std::string dump_name() const override { return "discrete elements"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kSpringsDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kSpringsDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(sp_.force, sp_.deflection, sp_.rate, sp_.work);

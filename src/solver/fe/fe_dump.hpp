@@ -18,8 +18,8 @@ void fields(Ar& ar, ShellPoints& p) {
   ar(p.stress, p.back_stress, p.plastic_strain, p.damage);
 }
 
-inline constexpr auto kShellPointSizes = sizes_of<ShellPoints>();
-static_assert(!kSizesPinned || kShellPointSizes == decltype(kShellPointSizes){80},
+inline constexpr auto kShellPointSizes = core::sizes_of<ShellPoints>();
+static_assert(!core::kSizesPinned || kShellPointSizes == decltype(kShellPointSizes){80},
               "ShellPoints changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

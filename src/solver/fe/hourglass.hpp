@@ -1,6 +1,8 @@
 #pragma once
 /// Hourglass control of the under-integrated elements (solids ELFORM 1, shells): the form and
 /// coefficient a part takes from *HOURGLASS or *CONTROL_HOURGLASS.
+#include "model/model_database.hpp"
+#include "solver/material/point_kinematics.hpp"  // BulkViscosityParams
 
 namespace mcdyna::solver {
 
@@ -12,5 +14,13 @@ struct HourglassParams {
   double coefficient = 0.1;                     ///< QM
   [[nodiscard]] bool stiffness() const { return form == HourglassForm::stiffness; }
 };
+
+namespace detail {
+/// The part's *HOURGLASS (HGID), or null; and the hourglass type and coefficient it runs with
+/// (*CONTROL_HOURGLASS without one), with its Q1, Q2 into `q`.
+const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const model::Part& part);
+HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
+                             BulkViscosityParams& q);
+}  // namespace detail
 
 }  // namespace mcdyna::solver

@@ -72,7 +72,9 @@ class AppliedLoadsBlock final : public DumpedBlock<AppliedLoadsBlock> {
   AppliedLoadsBlock(std::vector<PointLoadState> points, std::vector<PressureLoadState> pressures)
       : points_(std::move(points)), pressures_(std::move(pressures)) {}
   [[nodiscard]] std::string dump_name() const override { return "applied loads"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kLoadDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kLoadDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(points_, pressures_, work_);

@@ -148,7 +148,7 @@ class ConditionBlock final : public DumpedBlock<ConditionBlock<Held, Apply>> {
   }
   [[nodiscard]] std::string dump_name() const override { return name_; }
   [[nodiscard]] std::string dump_layout() const override {
-    return sizes_text(kConditionDumpedSizes);
+    return core::sizes_text(kConditionDumpedSizes);
   }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {

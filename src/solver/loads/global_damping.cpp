@@ -4,8 +4,8 @@
 // velocities v^{n-1/2} the cycle starts from (explicit; stable while D dt < 2). Its work, taken
 // out of the structure, is glstat's damping energy.
 #include "core/exact_sum.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
-#include "solver/dump.hpp"
 #include "solver/loads/load_state.hpp"
 
 namespace mcdyna::solver {
@@ -58,7 +58,7 @@ class GlobalDampingBlock final : public DumpedBlock<GlobalDampingBlock> {
   explicit GlobalDampingBlock(GlobalDampingState damping) : damping_(damping) {}
   [[nodiscard]] std::string dump_name() const override { return "global damping"; }
   [[nodiscard]] std::string dump_layout() const override {
-    return sizes_text(std::array<std::size_t, 0>{});
+    return core::sizes_text(std::array<std::size_t, 0>{});
   }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {

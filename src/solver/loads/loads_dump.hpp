@@ -1,7 +1,7 @@
 #pragma once
 /// The conditions' and loads' restart dumps: the member lists of what changes during a run
 /// (dump.hpp).
-#include "solver/dump.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/loads/load_state.hpp"
 #include "solver/state.hpp"
 
@@ -28,11 +28,12 @@ void fields(Ar& ar, PressureLoadState& p) {
   ar(p.segments, p.curve, p.scale, p.arrival, p.last);
 }
 
-inline constexpr auto kConditionDumpedSizes = sizes_of<NodalConstraints, NodalMotion>();
-static_assert(!kSizesPinned || kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 136},
+inline constexpr auto kConditionDumpedSizes = core::sizes_of<NodalConstraints, NodalMotion>();
+static_assert(!core::kSizesPinned ||
+                  kConditionDumpedSizes == decltype(kConditionDumpedSizes){112, 136},
               "NodalConstraints or NodalMotion changed: list the new member in fields() above");
-inline constexpr auto kLoadDumpedSizes = sizes_of<PointLoadState, PressureLoadState>();
-static_assert(!kSizesPinned || kLoadDumpedSizes == decltype(kLoadDumpedSizes){56, 64},
+inline constexpr auto kLoadDumpedSizes = core::sizes_of<PointLoadState, PressureLoadState>();
+static_assert(!core::kSizesPinned || kLoadDumpedSizes == decltype(kLoadDumpedSizes){56, 64},
               "PointLoadState or PressureLoadState changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

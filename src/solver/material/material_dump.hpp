@@ -1,7 +1,7 @@
 #pragma once
 /// Member lists of the material state at integration points and particles, for the restart
 /// dumps of the blocks that hold them (dump.hpp).
-#include "solver/dump.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/material/material.hpp"
 #include "solver/material/point_kinematics.hpp"
 
@@ -17,8 +17,8 @@ void fields(Ar& ar, MaterialPoints& p) {
   ar(p.deviator, p.back_stress, p.plastic_strain, p.damage);
 }
 
-inline constexpr auto kMaterialPointSizes = sizes_of<MaterialPoints>();
-static_assert(!kSizesPinned || kMaterialPointSizes == decltype(kMaterialPointSizes){80},
+inline constexpr auto kMaterialPointSizes = core::sizes_of<MaterialPoints>();
+static_assert(!core::kSizesPinned || kMaterialPointSizes == decltype(kMaterialPointSizes){80},
               "MaterialPoints changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

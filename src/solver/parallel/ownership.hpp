@@ -6,7 +6,7 @@
 
 #include "core/communicator.hpp"
 #include "solver/parallel/exchange_plan.hpp"
-#include "solver/spg/particle_subset.hpp"
+#include "solver/parallel/particle_subset.hpp"
 
 namespace mcdyna::solver::parallel {
 
@@ -19,9 +19,9 @@ struct ParticleShare {
   std::vector<int> owner;  ///< process of each particle
   /// The particles it owns, and those it computes the stress of: owned or holding an owned
   /// particle in their row.
-  spg::ParticleSubset owned, stressed;
+  ParticleSubset owned, stressed;
   /// The particles whose u-hat this process keeps current: its own and the column ghosts.
-  spg::ParticleSubset current;
+  ParticleSubset current;
   /// The particles in the rows of the owned ones that another process owns: their accelerations
   /// (Eq. 30's scatter) and constraint changes arrive through `row_ghosts`.
   ExchangePlan row_ghosts;

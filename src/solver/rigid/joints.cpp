@@ -146,7 +146,9 @@ class JointsBlock final : public DumpedBlock<JointsBlock> {
   JointsBlock(std::vector<JointState> joints, std::vector<JointStiffnessState> stiffnesses)
       : joints_(std::move(joints)), stiffnesses_(std::move(stiffnesses)) {}
   [[nodiscard]] std::string dump_name() const override { return "joints"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kJointsDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kJointsDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(joints_, stiffnesses_);

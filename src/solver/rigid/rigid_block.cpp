@@ -24,7 +24,9 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
   explicit RigidBodiesBlock(std::vector<WeldState> welds) : welds_(std::move(welds)) {}
   [[nodiscard]] const std::vector<WeldState>& welds() const { return welds_; }
   [[nodiscard]] std::string dump_name() const override { return "rigid bodies"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kRigidDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kRigidDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& s) {
     ar(s.rigid_bodies, welds_);

@@ -5,14 +5,9 @@
 /// chosen directions; the free components follow from the momentum equations of the rest.
 #include "solver/nodal_forces.hpp"
 #include "solver/state.hpp"
+#include "solver/step_times.hpp"
 
 namespace mcdyna::solver {
-
-struct StepTimes {
-  double time = 0.0;  ///< t^n
-  double step = 0.0;  ///< dt^{n+1/2}: positions advance over it
-  double mean = 0.0;  ///< dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2: velocities advance over it
-};
 
 /// Sums nodal forces into each body, integrates its velocities under constraints and prescribed
 /// motion, then sets its nodes' velocities (half step) and accelerations. Returns the first node

@@ -1,7 +1,7 @@
 #pragma once
 /// The rigid bodies', welds' and joints' restart dumps: the member lists of what changes during
 /// a run (dump.hpp).
-#include "solver/dump.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/rigid/joint_state.hpp"
 #include "solver/rigid/welds.hpp"
 #include "solver/state.hpp"
@@ -39,11 +39,11 @@ void fields(Ar& ar, JointStiffnessState& j) {
      j.friction_moment, j.angles, j.moment, j.work);
 }
 
-inline constexpr auto kRigidDumpedSizes = sizes_of<RigidBody, RigidMotion, WeldState>();
-static_assert(!kSizesPinned || kRigidDumpedSizes == decltype(kRigidDumpedSizes){584, 72, 120},
+inline constexpr auto kRigidDumpedSizes = core::sizes_of<RigidBody, RigidMotion, WeldState>();
+static_assert(!core::kSizesPinned || kRigidDumpedSizes == decltype(kRigidDumpedSizes){584, 72, 120},
               "RigidBody, RigidMotion or WeldState changed: list the new member in fields() above");
-inline constexpr auto kJointsDumpedSizes = sizes_of<JointState, JointStiffnessState>();
-static_assert(!kSizesPinned || kJointsDumpedSizes == decltype(kJointsDumpedSizes){144, 304},
+inline constexpr auto kJointsDumpedSizes = core::sizes_of<JointState, JointStiffnessState>();
+static_assert(!core::kSizesPinned || kJointsDumpedSizes == decltype(kJointsDumpedSizes){144, 304},
               "JointState or JointStiffnessState changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

@@ -8,9 +8,9 @@
 
 #include <algorithm>
 
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
-#include "solver/dump.hpp"
 #include "solver/sensors/sensors.hpp"
 
 namespace mcdyna::solver::sensors {
@@ -44,8 +44,8 @@ void fields(Ar& ar, Change& c) {
   ar(c.control, c.on, c.time);
 }
 
-inline constexpr auto kSensorDumpedSizes = sizes_of<ControlStatus, Change>();
-static_assert(!kSizesPinned || kSensorDumpedSizes == decltype(kSensorDumpedSizes){32, 24},
+inline constexpr auto kSensorDumpedSizes = core::sizes_of<ControlStatus, Change>();
+static_assert(!core::kSizesPinned || kSensorDumpedSizes == decltype(kSensorDumpedSizes){32, 24},
               "ControlStatus or Change changed: list the new member in fields() above");
 
 namespace {
@@ -125,7 +125,9 @@ class SensorBlock final : public DumpedBlock<SensorBlock> {
   }
 
   [[nodiscard]] std::string dump_name() const override { return "sensor controls"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kSensorDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kSensorDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     for (Control& c : controls_)

@@ -18,7 +18,9 @@ namespace {
 class ShellsBlock final : public DumpedBlock<ShellsBlock> {
  public:
   [[nodiscard]] std::string dump_name() const override { return "shells"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kShellsDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kShellsDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(shells_);

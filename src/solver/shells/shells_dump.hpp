@@ -21,8 +21,8 @@ void fields(Ar& ar, Shells& s) {
      s.node_corners);
 }
 
-inline constexpr auto kShellsDumpedSizes = sizes_of<Shells, ShellBlock>();
-static_assert(!kSizesPinned || kShellsDumpedSizes == decltype(kShellsDumpedSizes){536, 256},
+inline constexpr auto kShellsDumpedSizes = core::sizes_of<Shells, ShellBlock>();
+static_assert(!core::kSizesPinned || kShellsDumpedSizes == decltype(kShellsDumpedSizes){536, 256},
               "Shells or ShellBlock changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

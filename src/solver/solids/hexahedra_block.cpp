@@ -42,7 +42,9 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
   [[nodiscard]] const Solids& solids() const { return solids_; }
   [[nodiscard]] Solids& solids() { return solids_; }
   [[nodiscard]] std::string dump_name() const override { return "hexahedra"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kSolidsDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kSolidsDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     ar(solids_);

@@ -19,8 +19,8 @@ void fields(Ar& ar, Solids& s) {
      s.node_corners);
 }
 
-inline constexpr auto kSolidsDumpedSizes = sizes_of<Solids, SolidBlock>();
-static_assert(!kSizesPinned || kSolidsDumpedSizes == decltype(kSolidsDumpedSizes){560, 72},
+inline constexpr auto kSolidsDumpedSizes = core::sizes_of<Solids, SolidBlock>();
+static_assert(!core::kSizesPinned || kSolidsDumpedSizes == decltype(kSolidsDumpedSizes){560, 72},
               "Solids or SolidBlock changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "solver/parallel/decomposition.hpp"
+#include "solver/parallel/bisection.hpp"
 #include "solver/parallel/owned_gather.hpp"
 
 namespace mcdyna::solver::spg {
@@ -312,7 +312,7 @@ void redistribute_rows(State& s, std::size_t domain, const std::vector<int>& bui
   // The share is still the one before the renewal: its owners and the rows read under them.
   const parallel::ParticleShare& before_renewal = *s.ownership.split_part(domain);
   const std::vector<int>& previous_owner = before_renewal.owner;
-  const ParticleSubset& was_read = before_renewal.stressed;
+  const parallel::ParticleSubset& was_read = before_renewal.stressed;
   std::vector<std::vector<double>> to(static_cast<std::size_t>(comm.size()));
   std::vector<int> readers, before;
   std::vector<std::uint8_t> keep(n, 0);  // read here before and now, unchanged

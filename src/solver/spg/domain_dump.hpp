@@ -75,9 +75,9 @@ void fields(Ar& ar, Domain& d) {
   // d.scratch is left out: a workspace every call refills before reading it.
 }
 
-inline constexpr auto kDomainDumpedSizes = sizes_of<Domain, SpgSettings, StepBound>();
+inline constexpr auto kDomainDumpedSizes = core::sizes_of<Domain, SpgSettings, StepBound>();
 static_assert(
-    !kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1992, 96, 112},
+    !core::kSizesPinned || kDomainDumpedSizes == decltype(kDomainDumpedSizes){1992, 96, 112},
     "spg::Domain, SpgSettings or StepBound changed: list the new member in fields() above");
 
 }  // namespace mcdyna::solver::spg

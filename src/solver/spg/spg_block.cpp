@@ -46,7 +46,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
   [[nodiscard]] spg::Domain& domain() { return domain_; }
   [[nodiscard]] std::string dump_name() const override { return fmt::format("SPG part {}", part_); }
   [[nodiscard]] std::string dump_layout() const override {
-    return sizes_text(spg::kDomainDumpedSizes);
+    return core::sizes_text(spg::kDomainDumpedSizes);
   }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {

@@ -1,6 +1,6 @@
 #pragma once
-/// The MC-SPG particle solver, called by the time loop (solver/driver.cpp) beside the FE element
-/// pass. Per cycle, from t^n to t^{n+1}:
+/// The MC-SPG particle solver, called by the time loop (solver/run/driver.cpp) beside the FE
+/// element pass. Per cycle, from t^n to t^{n+1}:
 ///   advance_velocities   Eqs. 29-30 (scatter of accelerations into unsmoothed velocities) and
 ///                        Eqs. 13/25 (gather smoothing into the node velocity that moves the
 ///                        particle, Eq. 28)
@@ -13,11 +13,15 @@
 /// velocity is integrated like an FE node's (one velocity for the node), they take part in the
 /// smoothing of their neighbours as an unsmoothed value, and receive their share of the
 /// neighbours' accelerations so that total momentum is kept exactly (see smoothing.cpp).
-#include "solver/spg/particle_subset.hpp"
+#include "solver/parallel/particle_subset.hpp"
 #include "solver/spg/spg_parts.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::spg {
+
+using parallel::member;  // particle subsets: parallel/particle_subset.hpp
+using parallel::members;
+using parallel::ParticleSubset;
 
 /// First kernel, bonds of the initial configuration, unsmoothed velocities = initial velocities.
 void initialise(State& s, Domain& d);

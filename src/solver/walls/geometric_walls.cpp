@@ -7,9 +7,9 @@
 #include <algorithm>
 
 #include "core/exact_sum.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
-#include "solver/dump.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/walls/geometric_wall.hpp"
 #include "solver/walls/walls_block.hpp"
@@ -20,8 +20,8 @@ namespace {
 
 using walls::GeometricWall;
 
-inline constexpr auto kWallDumpedSizes = sizes_of<GeometricWall>();
-static_assert(!kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){328},
+inline constexpr auto kWallDumpedSizes = core::sizes_of<GeometricWall>();
+static_assert(!core::kSizesPinned || kWallDumpedSizes == decltype(kWallDumpedSizes){328},
               "walls::GeometricWall changed: list what changes in a run in dumped() below, or "
               "leave it out as deck data");
 
@@ -83,7 +83,9 @@ class GeometricWallsBlock final : public walls::WallsBlock<GeometricWall, Geomet
       out.walls.push_back({w.id, w.normal_force, w.force, w.energy});
   }
   [[nodiscard]] std::string dump_name() const override { return "geometric rigid walls"; }
-  [[nodiscard]] std::string dump_layout() const override { return sizes_text(kWallDumpedSizes); }
+  [[nodiscard]] std::string dump_layout() const override {
+    return core::sizes_text(kWallDumpedSizes);
+  }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {
     for (GeometricWall& w : walls_)

@@ -5,9 +5,9 @@
 #include <algorithm>
 
 #include "core/exact_sum.hpp"
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
 #include "solver/compile.hpp"
-#include "solver/dump.hpp"
 #include "solver/loads/loads.hpp"
 #include "solver/walls/planar_wall.hpp"
 #include "solver/walls/walls_block.hpp"
@@ -28,8 +28,9 @@ namespace {
 
 using walls::PlanarWall;
 
-inline constexpr auto kPlanarWallDumpedSizes = sizes_of<PlanarWall>();
-static_assert(!kSizesPinned || kPlanarWallDumpedSizes == decltype(kPlanarWallDumpedSizes){240},
+inline constexpr auto kPlanarWallDumpedSizes = core::sizes_of<PlanarWall>();
+static_assert(!core::kSizesPinned ||
+                  kPlanarWallDumpedSizes == decltype(kPlanarWallDumpedSizes){240},
               "walls::PlanarWall changed: list the new member in fields() above");
 
 // Stonewall (constraint method): nodes that would cross the wall during the coming step get the
@@ -92,7 +93,7 @@ class PlanarWallsBlock final : public walls::WallsBlock<PlanarWall, PlanarWallsB
   }
   [[nodiscard]] std::string dump_name() const override { return "rigid walls"; }
   [[nodiscard]] std::string dump_layout() const override {
-    return sizes_text(kPlanarWallDumpedSizes);
+    return core::sizes_text(kPlanarWallDumpedSizes);
   }
   template <class Ar>
   void dumped(Ar& ar, State& /*s*/) {

@@ -2,12 +2,12 @@
 // Block::save / load (its member lists and their size pins live beside its code, dump.hpp).
 // tests/unit/solver/restart_test.cpp checks that a run continued from a dump writes the same bits
 // as one that never stopped.
-#include "solver/restart.hpp"
+#include "solver/run/restart.hpp"
 
 #include <stdexcept>
 
+#include "core/pinned_sizes.hpp"
 #include "solver/block.hpp"
-#include "solver/dump.hpp"
 
 namespace mcdyna::solver {
 
@@ -40,8 +40,9 @@ namespace {
 // State's own members: the nodes, the clock and the energies. The rest is the blocks' (each dumps
 // its part) or deck data compiled again on restart: title, parts, materials, rigid_cells,
 // curves, time_control, mass_scaling_dt (from DT2MS and TSSFAC; both changed by --fixed-step).
-constexpr auto kStateDumpedSizes = sizes_of<Nodes, State, ResumePoint>();
-static_assert(!kSizesPinned || kStateDumpedSizes == decltype(kStateDumpedSizes){240, 856, 224},
+constexpr auto kStateDumpedSizes = core::sizes_of<Nodes, State, ResumePoint>();
+static_assert(!core::kSizesPinned ||
+                  kStateDumpedSizes == decltype(kStateDumpedSizes){240, 856, 224},
               "Nodes, State or ResumePoint changed: list the new member here, or note it among "
               "the deck data left out");
 
@@ -82,7 +83,7 @@ std::vector<std::string> state_sections(const State& state) {
 }
 
 std::string dump_layout(const State& state) {
-  std::string out = sizes_text(kStateDumpedSizes);
+  std::string out = core::sizes_text(kStateDumpedSizes);
   for (const Block* b : dumped_blocks(state))
     out += b->dump_name() + ": " + b->dump_layout();
   return out;

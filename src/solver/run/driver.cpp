@@ -5,7 +5,7 @@
 //   output at t^n -> positions -> forces of every block at t^{n+1} -> checks.
 // run() wraps the two halves with the stop decisions, restart dumps, outputs and the phase
 // clock.
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -18,28 +18,9 @@
 
 #include "core/communicator.hpp"
 #include "solver/block.hpp"
-#include "solver/parallel/halo.hpp"
+#include "solver/run/halo.hpp"
 
 namespace mcdyna::solver {
-
-const char* PhaseTimes::name(int p) {
-  static const char* kNames[kCount] = {"elements",
-                                       "boundary conditions",
-                                       "rigid bodies",
-                                       "output",
-                                       "other",
-                                       "SPG neighbour search",
-                                       "SPG shape functions",
-                                       "SPG smoothing",
-                                       "SPG stress",
-                                       "SPG stabilisation",
-                                       "SPG forces",
-                                       "SPG bond failure",
-                                       "SPG step estimate",
-                                       "contact",
-                                       "exchange"};
-  return kNames[p];
-}
 
 namespace {
 
@@ -335,7 +316,7 @@ class Loop {
   }
 
  private:
-  // Over several processes: the decomposition and this process's halo (parallel/halo.hpp).
+  // Over several processes: the decomposition and this process's halo (halo.hpp).
   // A restart takes the owners its dumps were written with: the particles were owned again at
   // kernel renewals, and each dump holds the kernel rows its process read (spg/distribution.hpp).
   void decompose(bool resume) {

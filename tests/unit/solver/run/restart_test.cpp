@@ -10,7 +10,7 @@
 #include "cli/restart_dump.hpp"
 #include "cli/run_command.hpp"
 #include "core/binary_archive.hpp"
-#include "solver/restart.hpp"
+#include "solver/run/restart.hpp"
 
 #include "solver_support.hpp"
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "core/communicator.hpp"
-#include "solver/parallel/decomposition.hpp"
+#include "solver/run/decomposition.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::parallel {

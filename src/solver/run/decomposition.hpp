@@ -19,16 +19,10 @@
 /// changes at every renewal) and no dependency.
 #include <vector>
 
+#include "solver/parallel/bisection.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver::parallel {
-
-/// Recursive coordinate bisection: `parts` cells of nearly equal weight, each cut across the
-/// longest extent of its points at the weighted split that gives the two sides their share of
-/// the parts. Returns the cell of each point, 0 .. parts - 1. Ties in a coordinate go by index,
-/// so the result depends on nothing but the points and weights.
-std::vector<int> bisect(const Eigen::Matrix3Xd& points, const std::vector<double>& weights,
-                        int parts);
 
 /// Seconds a cycle costs per entity, from the study's rates on one core (manual/verification.md
 /// study table: FE hexahedra 3.5 M element-steps per core-s, MC-SPG particles 1.0 M, ITB 1

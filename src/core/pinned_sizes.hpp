@@ -1,6 +1,6 @@
 #pragma once
-/// What each block's part of a restart dump is made of (restart.hpp): the member lists
-/// (core/binary_archive.hpp's fields()) live beside each formulation's code, and so do the pins
+/// What each block's part of a restart dump is made of (solver/run/restart.hpp): the member lists
+/// (binary_archive.hpp's fields()) live beside each formulation's code, and so do the pins
 /// of the dumped structs' sizes. A member added to a dumped struct changes its size and stops
 /// the build on the pinned platform until it is listed in fields() (or said to be deck data);
 /// the sizes are also written into every dump, so a dump from a build whose structs differ is
@@ -11,7 +11,7 @@
 
 #include "core/binary_archive.hpp"
 
-namespace mcdyna::solver {
+namespace mcdyna::core {
 
 /// The platform CI builds on (x86-64, libstdc++ without debug containers): where the sizes are
 /// pinned. Elsewhere the pins are not checked (the dump still carries the sizes).
@@ -36,4 +36,4 @@ std::string sizes_text(const std::array<std::size_t, N>& sizes) {
   return out;
 }
 
-}  // namespace mcdyna::solver
+}  // namespace mcdyna::core

@@ -1,4 +1,4 @@
-// The formulations' registry (solver/formulations.hpp): one line per formulation gives its
+// The formulations' registry (solver/run/formulations.hpp): one line per formulation gives its
 // compile pass and its blocks; the passes run in the registry's order, moved after what they read.
 #include <doctest/doctest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/formulations.hpp"
+#include "solver/run/formulations.hpp"
 
 using namespace mcdyna::solver;
 

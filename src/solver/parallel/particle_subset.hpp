@@ -1,12 +1,13 @@
 #pragma once
-/// A subset of an SPG part's particles, and loops over it or over the whole part: the power
-/// iteration's patches (frequency.cpp) and a process's own and stressed particles over several
-/// processes (parallel::ParticleShare).
+/// A subset of an SPG part's particles, and loops over it or over the whole part: a process's
+/// own and stressed particles over several processes (ParticleShare, ownership.hpp), and the
+/// power iteration's patches (spg/frequency.cpp). Here, below the State, because the ownership
+/// the State holds is made of them; the SPG code takes them into its namespace (spg_solver.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace mcdyna::solver::spg {
+namespace mcdyna::solver::parallel {
 
 using Index = std::int32_t;
 
@@ -24,4 +25,4 @@ inline std::size_t members(const ParticleSubset* subset, Index count) {
   return subset != nullptr ? subset->index.size() : static_cast<std::size_t>(count);
 }
 
-}  // namespace mcdyna::solver::spg
+}  // namespace mcdyna::solver::parallel

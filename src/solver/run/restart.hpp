@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/binary_archive.hpp"
-#include "solver/driver.hpp"
+#include "solver/run/driver.hpp"
 #include "solver/state.hpp"
 
 namespace mcdyna::solver {

@@ -1,8 +1,8 @@
 // Deck materials (+ the part's EOS and *MAT_ADD_EROSION) -> solver Material.
+#include "solver/material/compile_material.hpp"
+
 #include <algorithm>
 #include <utility>
-
-#include "solver/compile.hpp"
 
 namespace mcdyna::solver::detail {
 
@@ -37,18 +37,17 @@ void piecewise_hardening(const model::ModelDatabase& m, const model::Material& m
                          PiecewiseLinearModel& out, core::Diagnostics& d) {
   const auto& p = mat.piecewise_linear;
   if (p.stress_strain_curve != 0) {
-    const Index c = curve_index(m, p.stress_strain_curve);
-    if (c < 0) {
+    const model::Curve* curve = m.curve(p.stress_strain_curve);
+    if (curve == nullptr) {
       d.error(mat.loc,
               "*MAT_PIECEWISE_LINEAR_PLASTICITY {}: LCSS {} is not a *DEFINE_CURVE "
               "(tables are not supported)",
               mat.id, p.stress_strain_curve);
       return;
     }
-    const model::Curve& curve = m.curves[static_cast<std::size_t>(c)];
-    for (const auto& [a, o] : curve.points) {
-      out.curve_strain.push_back(curve.abscissa_scale * a + curve.abscissa_offset);
-      out.curve_stress.push_back(curve.ordinate_scale * o + curve.ordinate_offset);
+    for (const auto& [a, o] : curve->points) {
+      out.curve_strain.push_back(curve->abscissa_scale * a + curve->abscissa_offset);
+      out.curve_stress.push_back(curve->ordinate_scale * o + curve->ordinate_offset);
     }
   } else if (!p.points.empty()) {
     for (const auto& [eps, sig] : p.points) {

@@ -1,4 +1,4 @@
-#include "solver/run_overrides.hpp"
+#include "solver/run/run_overrides.hpp"
 #include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::solver {

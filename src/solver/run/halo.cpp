@@ -1,4 +1,4 @@
-#include "solver/parallel/halo.hpp"
+#include "solver/run/halo.hpp"
 
 #include <fmt/format.h>
 

@@ -8,34 +8,10 @@
 #include <string>
 
 #include "solver/nodal_forces.hpp"
-#include "solver/rigid/rigid_bodies.hpp"  // StepTimes
 #include "solver/state.hpp"
+#include "solver/step_times.hpp"
 
 namespace mcdyna::solver {
-
-/// Wall-clock seconds per phase of the cycle.
-struct PhaseTimes {
-  static constexpr int kCount = 15;
-  enum Phase {
-    elements,
-    boundary,
-    rigid,
-    output,
-    other,
-    spg_neighbours,
-    spg_shape_functions,
-    spg_smoothing,
-    spg_stress,
-    spg_stabilization,
-    spg_forces,
-    spg_bonds,
-    spg_step_estimate,
-    contact,
-    exchange  ///< over several processes: halo messages and the per-cycle agreements
-  };
-  std::array<double, kCount> seconds{};
-  static const char* name(int p);
-};
 
 /// Why the run ended.
 enum class StopReason {

@@ -1,111 +1,20 @@
 // compile(): nodes and parts, then each formulation's compile pass (compile_*.cpp in its folder)
 // in the registry's order (formulations.cpp); then the time controls.
-#include "solver/compile.hpp"
+#include "solver/run/compile.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/formulations.hpp"
+#include "solver/compile.hpp"
+#include "solver/run/formulations.hpp"
 #include "solver/shells/shell_elements.hpp"  // poisson_ratio, shells_of
 #include "solver/solids/solids.hpp"
 
 namespace mcdyna::solver {
 
-std::vector<Index> node_set_nodes(const model::ModelDatabase& m, model::Id set) {
-  std::vector<Index> out;
-  const model::NodeSet* ns = m.node_set(set);
-  if (ns == nullptr) return out;
-  for (const model::Id id : ns->nodes) {
-    const auto i = m.index.nodes.find(id);
-    if (i != model::IdIndex::kNone) out.push_back(static_cast<Index>(i));
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-namespace detail {
-
-BulkViscosityParams control_bulk_viscosity(const model::ModelDatabase& m) {
-  BulkViscosityParams q;
-  if (m.controls.bulk_viscosity) {
-    q.quadratic = m.controls.bulk_viscosity->quadratic;
-    q.linear = m.controls.bulk_viscosity->linear;
-  }
-  return q;
-}
-
-bool objective_update(const model::ModelDatabase& m, const model::Part& part) {
-  if (!m.controls.accuracy) return false;
-  const model::AccuracyControl& a = *m.controls.accuracy;
-  if (a.objective_parts == 0) return a.objective == 1;
-  const model::PartSet* ps = m.part_set(a.objective_parts);
-  return ps != nullptr && std::find(ps->parts.begin(), ps->parts.end(), part.id) != ps->parts.end();
-}
-
-void check_accuracy_control(const model::ModelDatabase& m, core::Diagnostics& d) {
-  if (!m.controls.accuracy) return;
-  const model::AccuracyControl& a = *m.controls.accuracy;
-  if (a.objective_parts != 0 && m.part_set(a.objective_parts) == nullptr)
-    d.error(a.loc, "*CONTROL_ACCURACY: PIDOSU part set {} is not defined", a.objective_parts);
-  if (a.objective_parts != 0 && a.objective != 0)
-    d.note(a.loc,
-           "*CONTROL_ACCURACY: OSU {} is ignored, PIDOSU {} names the parts that take the "
-           "objective stress update",
-           a.objective, a.objective_parts);
-  if (a.invariant != 1 && a.invariant != 0)
-    d.note(a.loc,
-           "*CONTROL_ACCURACY: INN {} (invariant node numbering) has no effect: mcdyna's "
-           "solids and particles do not depend on the node order, and its shells take their "
-           "frame from the first side (LS-DYNA's INN 1)",
-           a.invariant);
-  if (a.implicit != 0)
-    d.note(a.loc, "*CONTROL_ACCURACY: IACC {} (implicit accuracy) has no effect: explicit solver",
-           a.implicit);
-  if (a.explicit_accuracy != 0.0)
-    d.note(a.loc,
-           "*CONTROL_ACCURACY: EXACC {:g} (explicit accuracy of the shells) has no effect: "
-           "mcdyna's shells run their standard update",
-           a.explicit_accuracy);
-}
-
-const model::Hourglass* part_hourglass(const model::ModelDatabase& m, const model::Part& part) {
-  if (part.hourglass == 0) return nullptr;
-  for (const model::Hourglass& h : m.hourglasses)
-    if (h.id == part.hourglass) return &h;
-  return nullptr;
-}
-
 namespace {
-// IHQ 4 and 5 resist the modes with stiffness; 0 (the default, 1) to 3 with viscous forces.
-// Other types are refused by the model checks (6-10) or noted by the shells' pass (8).
-HourglassForm hourglass_form(int ihq) {
-  return ihq == 4 || ihq == 5 ? HourglassForm::stiffness : HourglassForm::viscous;
-}
-}  // namespace
 
-HourglassParams hourglass_of(const model::ModelDatabase& m, const model::Part& part,
-                             BulkViscosityParams& q) {
-  HourglassParams hg;
-  if (m.controls.hourglass) {
-    hg.form = hourglass_form(m.controls.hourglass->type);
-    hg.coefficient = m.controls.hourglass->coefficient;
-  }
-  q = control_bulk_viscosity(m);
-  if (const model::Hourglass* h = part_hourglass(m, part)) {
-    hg.form = hourglass_form(h->type);
-    hg.coefficient = h->coefficient;
-    q.quadratic = h->quadratic_bulk_viscosity;
-    q.linear = h->linear_bulk_viscosity;
-  }
-  return hg;
-}
-
-Index curve_index(const model::ModelDatabase& m, model::Id id) {
-  const auto i = m.index.curves.find(id);
-  return i == model::IdIndex::kNone ? -1 : static_cast<Index>(i);
-}
-
+// The nodes (positions, zero velocities and masses) and one PartInfo per part, in deck order.
 void compile_nodes_and_parts(const model::ModelDatabase& m, State& s) {
   Nodes& nd = s.nodes;
   const auto nn = static_cast<Index>(m.nodes.size());
@@ -185,7 +94,7 @@ void warn_free_corner_elements(const model::ModelDatabase& m, const State& s, co
       "shell element(s) stand alone (no corner shared)");
 }
 
-}  // namespace detail
+}  // namespace
 
 std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics& diags) {
   const std::size_t errors = diags.error_count();
@@ -194,7 +103,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   for (const model::Curve& c : m.curves)
     s->curves.emplace_back(c);
   detail::check_accuracy_control(m, diags);
-  detail::compile_nodes_and_parts(m, *s);
+  compile_nodes_and_parts(m, *s);
   const std::vector<Formulation>& lines = formulations();
   std::vector<Blocks> compiled(lines.size());
   const CompiledBlocks before(compiled);
@@ -228,7 +137,7 @@ std::unique_ptr<State> compile(const model::ModelDatabase& m, core::Diagnostics&
   }
   s->mass_scaling_dt =
       tc.mass_scaling_step != 0.0 ? tc.scale_factor * std::abs(tc.mass_scaling_step) : 0.0;
-  detail::warn_free_corner_elements(m, *s, solids_of(before), shells_of(before), diags);
+  warn_free_corner_elements(m, *s, solids_of(before), shells_of(before), diags);
   if (diags.error_count() > errors) return nullptr;
   s->blocks = make_blocks(std::move(compiled));
   for (const auto& b : s->blocks)

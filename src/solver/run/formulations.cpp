@@ -2,7 +2,7 @@
 // internal forces (hexahedra, shells, beams, SPG parts) before body loads and contact; the SPG
 // parts' velocities before the rigid bodies sum their nodes' forces; constraints, then motions,
 // then walls; the ties last, as they pass every force on a slave node to its segment.
-#include "solver/formulations.hpp"
+#include "solver/run/formulations.hpp"
 
 #include <cstring>
 #include <stdexcept>
