@@ -21,10 +21,11 @@ namespace {
 // section, never a run from a damaged state.
 constexpr std::array<char, 20> kMagic = {'m', 'c', 'd', 'y', 'n', 'a', ' ', 'r', 'e', 's',
                                          't', 'a', 'r', 't', ' ', 'd', 'u', 'm', 'p', '\n'};
-constexpr std::uint32_t kVersion = 8;  // 2: the layout string; 3: checksummed sections;
+constexpr std::uint32_t kVersion = 9;  // 2: the layout string; 3: checksummed sections;
                                        // 4: the node owners of a run over several processes;
                                        // 5: shells and nodal rotations; 6: joints; 7: beams, welds;
-                                       // 8: force transducers, SOFT 2, C0 triangles
+                                       // 8: force transducers, SOFT 2, C0 triangles;
+                                       // 9: the d3plot family's position
 constexpr std::string_view kHeader = "header", kResume = "resume point", kOutputs = "outputs",
                            kEnd = "end of dump";
 

@@ -107,6 +107,14 @@ RecordFile::~RecordFile() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+void RecordFile::cut_back(std::uint64_t bytes) {
+  if (bytes > size_) throw std::logic_error("RecordFile::cut_back beyond the file's end");
+  if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0 ||
+      ::lseek(fd_, static_cast<off_t>(bytes), SEEK_SET) < 0)
+    fail(path_, "truncate", errno);
+  size_ = bytes;
+}
+
 void RecordFile::commit() {
   if (pending_.empty()) return;
   if (!write_all(fd_, pending_)) {

@@ -43,6 +43,9 @@ class RecordFile {
   [[nodiscard]] std::string& pending() { return pending_; }
   /// Writes the pending record whole or throws WriteError with the file cut back to size().
   void commit();
+  /// Cuts the file back to `bytes` (no more than size()): the tail of a record that the next one
+  /// replaces (d3plot's end-of-file marker and padding before the next state).
+  void cut_back(std::uint64_t bytes);
   /// Bytes on disk: whole records only.
   [[nodiscard]] std::uint64_t size() const { return size_; }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }

@@ -9,6 +9,7 @@
 
 #include "solver/compile.hpp"
 #include "solver/history_records.hpp"
+#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::io {
 
@@ -64,6 +65,11 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     if (dt <= 0.0 && r.plots > 0) dt = s.time_control.end_time / r.plots;
     if (dt > 0.0 || r.interval_curve != 0) {
       d3plot_ = std::make_unique<VtkSeries>(dir);
+      binary_ = std::make_unique<d3plot::Database>(dir, resume ? &resume->family : nullptr);
+      if (!solver::spg::domains_of(s).empty())
+        notes.push_back(
+            "d3plot (LS-DYNA binary): the SPG particles are not written to it yet; "
+            "d3plot.pvd (VTK) has them");
       d3plot_schedule_ = schedule(m, s, dt, r.interval_curve);
       if (resume) {
         d3plot_->restore(resume->states);
@@ -109,6 +115,7 @@ OutputsResume Outputs::resume_point() const {
   if (d3plot_) {
     r.d3plot = d3plot_schedule_.times();
     r.states = d3plot_->entries();
+    r.family = binary_->position();
   }
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     r.history_times.push_back(history_schedules_[k].times());
@@ -138,9 +145,11 @@ void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bo
   };
   if (d3plot_ && wanted(d3plot_schedule_)) {
     d3plot_->write(s, velocity);
+    binary_->write(s, previous, velocity);
     d3plot_schedule_.advance(s.time);
   } else if (d3plot_ && state_requested_) {
     d3plot_->write(s, velocity);  // sw4: a state between the scheduled ones
+    binary_->write(s, previous, velocity);
     d3plot_schedule_.last_written = s.time;
   }
   state_requested_ = false;
@@ -154,6 +163,10 @@ void Outputs::write(const solver::State& s, const Eigen::Matrix3Xd& previous, bo
 std::vector<std::string> Outputs::files() const {
   std::vector<std::string> out;
   if (d3plot_) out.push_back(fmt::format("d3plot.pvd ({} states)", d3plot_->states()));
+  if (binary_)
+    out.push_back(fmt::format("d3plot, d3plot01.. (LS-DYNA binary, {} states, {} file{})",
+                              binary_->states(), binary_->position().member + 1,
+                              binary_->position().member == 0 ? "" : "s"));
   for (const auto& h : histories_)
     out.push_back(h->name() + " (+ .csv)");
   return out;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/d3plot/d3plot_database.hpp"
 #include "io/history_file.hpp"
 #include "io/vtk_series.hpp"
 #include "model/model_database.hpp"
@@ -27,6 +28,7 @@ struct OutputsResume {
   };
   Times d3plot;
   std::vector<std::pair<double, std::string>> states;  ///< (time, file) of the VTK states
+  d3plot::FamilyPosition family;                       ///< where the binary d3plot stands
   std::vector<Times> history_times;                    ///< in the order of `histories`
   std::vector<HistoryResume> histories;
 };
@@ -41,7 +43,7 @@ void fields(Ar& ar, HistoryResume& h) {
 }
 template <class Ar>
 void fields(Ar& ar, OutputsResume& o) {
-  ar(o.d3plot, o.states, o.history_times, o.histories);
+  ar(o.d3plot, o.states, o.family, o.history_times, o.histories);
 }
 
 class Outputs {
@@ -88,6 +90,7 @@ class Outputs {
   static Schedule schedule(const model::ModelDatabase& model, const solver::State& state,
                            double interval, model::Id curve);
   std::unique_ptr<VtkSeries> d3plot_;
+  std::unique_ptr<d3plot::Database> binary_;  ///< LS-DYNA's d3plot, at the VTK series' times
   Schedule d3plot_schedule_;
   bool state_requested_ = false;
   std::vector<std::unique_ptr<HistoryFile>> histories_;

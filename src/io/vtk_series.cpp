@@ -49,6 +49,7 @@ struct CellFields {
   /// TSSFAC); 0 where not recorded (FE and rigid cells, particles that carry no stress)
   vtkNew<vtkFloatArray> time_step;
   vtkNew<vtkIntArray> part, eroded;
+  vtkNew<vtkIntArray> element_id;  ///< the deck's element ID (a particle: its node's)
   /// SPG: how the particle is integrated now, 0 smoothed (MC-SPG), 1 pinned (plain velocity:
   /// shared with FE, constrained), 2 isolated (degenerate neighbourhood: no stress), 3 debris
   /// (failed material whose row inverted: no stress); -1 for other cells.
@@ -67,11 +68,12 @@ struct CellFields {
     bond_damage->SetName("bond_damage");
     time_step->SetName("time_step");
     part->SetName("part_id");
+    element_id->SetName("element_id");
     eroded->SetName("erosion_state");
     spg_state->SetName("spg_state");
   }
-  void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id,
-           double bonds = 0.0, int particle_state = -1, double step = 0.0) {
+  void add(const solver::ElementResult& r, double pressure_value, double temp, int part_id, int id,
+           double bonds, int particle_state, double step) {
     const auto& s = r.stress;
     const float tuple[6] = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                             static_cast<float>(s[2]), static_cast<float>(s[3]),
@@ -85,13 +87,14 @@ struct CellFields {
     bond_damage->InsertNextValue(static_cast<float>(bonds));
     time_step->InsertNextValue(static_cast<float>(step));
     part->InsertNextValue(part_id);
+    element_id->InsertNextValue(id);
     eroded->InsertNextValue(0);  // eroded cells are not written; every written cell is intact
     spg_state->InsertNextValue(particle_state);
   }
   void attach(vtkUnstructuredGrid* g) {
     for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{
              stress, von_mises, plastic_strain, temperature, damage, pressure, bond_damage,
-             time_step, part, eroded, spg_state})
+             time_step, part, eroded, spg_state, element_id})
       g->GetCellData()->AddArray(a);
   }
 };
@@ -118,17 +121,21 @@ class VtkCells final : public solver::StateSink {
     own_.emplace_back(a.Get());
   }
 
+  // An eroded cell is left out, with the values of its own fields that follow it.
   void cell(solver::CellShape shape, const Index* nodes, const solver::CellValues& v) override {
+    skipping_ = v.deleted;
+    if (skipping_) return;
     const int n = solver::cell_nodes(shape);
     vtkIdType ids[8];
     for (int c = 0; c < n; ++c)
       ids[c] = nodes[c];
     grid_->InsertNextCell(vtk_type(shape), n, ids);
-    fields_.add(v.result, v.pressure, v.temperature, static_cast<int>(v.part), v.bond_damage,
-                v.particle_state, v.step);
+    fields_.add(v.result, v.pressure, v.temperature, static_cast<int>(v.part),
+                static_cast<int>(v.id), v.bond_damage, v.particle_state, v.step);
   }
 
   void value(std::string_view name, const double* values) override {
+    if (skipping_) return;
     vtkFloatArray* a = find(name);
     if (a == nullptr)
       throw std::logic_error("a block's field was not declared: " + std::string(name));
@@ -176,6 +183,7 @@ class VtkCells final : public solver::StateSink {
     return nullptr;
   }
   vtkUnstructuredGrid* grid_;
+  bool skipping_ = false;  ///< the last cell was eroded
   CellFields fields_;
   std::vector<vtkSmartPointer<vtkFloatArray>> own_;
 };

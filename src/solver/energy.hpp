@@ -35,6 +35,7 @@ struct PartSummary {
   Vec3 momentum = Vec3::Zero();
   Vec3 rigid_velocity = Vec3::Zero();  ///< centre velocity of a rigid part
   double added_mass = 0.0;
+  double mass = 0.0;  ///< its elements' lumped mass (a rigid part: its body's)
 };
 
 /// One entry per part, in deck order. Kinetic energy and momentum of deformable parts come from

@@ -99,8 +99,10 @@ struct RigidBody {
 struct DisplayCells {
   std::vector<std::array<Index, 8>> solids;
   std::vector<Index> solid_parts;
+  std::vector<model::Id> solid_ids;
   std::vector<std::array<Index, 4>> shells;  ///< triangle: nodes[3] == nodes[2]
   std::vector<Index> shell_parts;
+  std::vector<model::Id> shell_ids;
 };
 
 struct TimeControl {

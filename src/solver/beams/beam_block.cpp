@@ -75,7 +75,7 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
       r.fail("non-finite stress or step in " + element_name(s, offset + e.non_finite), false);
   }
 
-  // The beams not eroded (lines): the mean of the fibres, and of their own the resultants in the
+  // The beams (lines): the mean of the fibres, and of their own the resultants in the
   // local axes r s t (LS-DYNA's elout order: axial force, shear s, shear t, torsion, moment s,
   // moment t).
   void write_state(const State& s, StateSink& sink) const override {
@@ -85,10 +85,11 @@ class BeamsBlock final : public DumpedBlock<BeamsBlock> {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
-        if (bm.eroded[i]) continue;
         const ElementResult r = beam_result(s, bm, block, e);
-        sink.cell(CellShape::line, bm.nodes[i].data(),
-                  {r, pressure_of(r), bm.temperature[i], part});
+        CellValues v{r, pressure_of(r), bm.temperature[i], part};
+        v.id = bm.ids[i];
+        v.deleted = bm.eroded[i] != 0;
+        sink.cell(CellShape::line, bm.nodes[i].data(), v);
         sink.value("beam_resultants", beam_resultants(s, bm, block, e).data());
       }
     }

@@ -20,6 +20,7 @@ inline void add_corner_motion(PartSummary& ps, const Nodes& nd, const Eigen::Mat
                               Index n, double m) {
   ps.kinetic += 0.5 * m * previous.col(n).dot(nd.velocity.col(n));
   ps.momentum += 0.5 * m * (previous.col(n) + nd.velocity.col(n));
+  ps.mass += m;
 }
 
 /// The same with the corner's rotary inertia (shells, beams): 1/2 I w^{n-1/2} . w^{n+1/2} too.
@@ -28,6 +29,7 @@ inline void add_corner_motion(PartSummary& ps, const Nodes& nd, const Eigen::Mat
   ps.kinetic += 0.5 * m * previous.col(n).dot(nd.velocity.col(n)) +
                 0.5 * inertia * nd.previous_angular_velocity.col(n).dot(nd.angular_velocity.col(n));
   ps.momentum += 0.5 * m * (previous.col(n) + nd.velocity.col(n));
+  ps.mass += m;
 }
 
 }  // namespace mcdyna::solver::fe

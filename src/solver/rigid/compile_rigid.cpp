@@ -310,6 +310,7 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, const Compile
     }
     s.rigid_cells.solids.push_back(conn);
     s.rigid_cells.solid_parts.push_back(static_cast<Index>(p));
+    s.rigid_cells.solid_ids.push_back(el.id);
     add_solid(s, conn, m.material(m.parts[p].material)->density,
               moments[static_cast<std::size_t>(b)]);
   }
@@ -324,6 +325,7 @@ void compile_rigid_bodies(const model::ModelDatabase& m, State& s, const Compile
     }
     s.rigid_cells.shells.push_back(conn);
     s.rigid_cells.shell_parts.push_back(static_cast<Index>(p));
+    s.rigid_cells.shell_ids.push_back(el.id);
     const double t = shell_thickness(el, m.section(m.parts[p].section));
     add_shell(s, conn, m.material(m.parts[p].material)->density * t,
               moments[static_cast<std::size_t>(b)]);

@@ -71,6 +71,7 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
       const Vec3 v = 0.5 * (body.velocity + body.previous_velocity);
       parts[p].kinetic = rigid_kinetic(body);
       parts[p].momentum = body.mass * v;
+      parts[p].mass = body.mass;
       parts[p].rigid_velocity = v;
     }
   }
@@ -82,12 +83,14 @@ class RigidBodiesBlock final : public DumpedBlock<RigidBodiesBlock> {
     for (std::size_t k = 0; k < rc.solids.size(); ++k) {
       CellValues v;
       v.part = part(rc.solid_parts[k]);
+      v.id = rc.solid_ids[k];
       sink.cell(CellShape::hexahedron, rc.solids[k].data(), v);
     }
     for (std::size_t k = 0; k < rc.shells.size(); ++k) {
       const auto& q = rc.shells[k];
       CellValues v;
       v.part = part(rc.shell_parts[k]);
+      v.id = rc.shell_ids[k];
       sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(), v);
     }
   }

@@ -105,27 +105,45 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
  private:
   Shells shells_;
 
-  // The shells not eroded (quadrilaterals, triangles): the mean of the layers, and of their own
-  // the stress of the top and bottom layers (global axes) and the thickness.
+  // The shells (quadrilaterals, triangles): the mean of the layers, and of their own the stress
+  // of the top, middle and bottom layers (global axes), their plastic strain, the thickness and
+  // the internal energy per volume (the layers and words of LS-DYNA's d3plot at MAXINT 3).
   void write_state(const State& s, StateSink& sink) const override {
     sink.declare("stress_top", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
     sink.declare("stress_bottom", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
     sink.declare("thickness", {});
+    sink.declare("stress_middle", {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+    sink.declare("layer_plastic_strain", {"bottom", "middle", "top"});
+    sink.declare("internal_energy_density", {});
     const Shells& sh = shells_;
     for (const ShellBlock& block : sh.blocks) {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
-        if (sh.eroded[i]) continue;
         const auto& q = sh.nodes[i];
         const ElementResult mid = shell_result(s.nodes, sh, block, e, ShellSurface::all);
-        sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(),
-                  {mid, pressure_of(mid), sh.temperature[i], part});
+        CellValues v{mid, pressure_of(mid), sh.temperature[i], part};
+        v.id = sh.ids[i];
+        v.deleted = sh.eroded[i] != 0;
+        sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(), v);
         sink.value("stress_top",
                    shell_result(s.nodes, sh, block, e, ShellSurface::top).stress.data());
         sink.value("stress_bottom",
                    shell_result(s.nodes, sh, block, e, ShellSurface::bottom).stress.data());
         sink.value("thickness", &sh.thickness[i]);
+        const ElementResult middle = shell_result(s.nodes, sh, block, e, ShellSurface::middle);
+        sink.value("stress_middle", middle.stress.data());
+        const double layer_strain[3] = {
+            shell_result(s.nodes, sh, block, e, ShellSurface::bottom).plastic_strain,
+            middle.plastic_strain,
+            shell_result(s.nodes, sh, block, e, ShellSurface::top).plastic_strain};
+        sink.value("layer_plastic_strain", layer_strain);
+        // The area from the diagonals (a triangle's repeated fourth corner gives its half).
+        const Vec3 d1 = s.nodes.position.col(q[2]) - s.nodes.position.col(q[0]);
+        const Vec3 d2 = s.nodes.position.col(q[3]) - s.nodes.position.col(q[1]);
+        const double volume = 0.5 * d1.cross(d2).norm() * sh.thickness[i];
+        const double density = volume > 0.0 ? sh.internal_energy[i] / volume : 0.0;
+        sink.value("internal_energy_density", &density);
       }
     }
   }

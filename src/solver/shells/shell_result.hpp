@@ -5,9 +5,10 @@
 
 namespace mcdyna::solver {
 
-/// Which layers of a shell a result averages: all of them (the mid-surface value LS-DYNA's
-/// d3plot shows by default), the top (outermost, +z) or the bottom one.
-enum class ShellSurface { all, top, bottom };
+/// Which layers of a shell a result averages: all of them, the top (outermost, +z) or the bottom
+/// one, or the middle one (the two nearest the mid-surface for an even count: LS-DYNA's
+/// mid-surface value of MAXINT 3).
+enum class ShellSurface { all, top, bottom, middle };
 
 /// Result of shell `e` of `block`: the stress turned from the element's frame to the global axes,
 /// the plastic strain (mean of the layers taken, over the in-plane points) and the damage
@@ -20,6 +21,10 @@ inline ElementResult shell_result(const Nodes& nodes, const Shells& sh, const Sh
   int from = 0, to = layers;
   if (surface == ShellSurface::top) from = layers - 1;
   if (surface == ShellSurface::bottom) to = 1;
+  if (surface == ShellSurface::middle) {
+    from = (layers - 1) / 2;
+    to = layers / 2 + 1;
+  }
   const auto& pts = sh.points;
   Mat3 local = Mat3::Zero();
   for (int k = 0; k < in_plane * layers; ++k) {  // the in-plane points' layers, averaged

@@ -109,16 +109,17 @@ class HexahedraBlock final : public DumpedBlock<HexahedraBlock> {
       r.fail(runaway_message(s, e.runaway, "volume"), false);
   }
 
-  // The solids not eroded, with their mean stress, pressure and temperature.
+  // The solids with their mean stress, pressure and temperature.
   void write_state(const State& s, StateSink& sink) const override {
     const Solids& so = solids_;
     for (const SolidBlock& block : so.blocks) {
       const model::Id part = s.parts[static_cast<std::size_t>(block.part)].id;
       for (Index e = block.begin; e < block.end; ++e) {
         const auto i = static_cast<std::size_t>(e);
-        if (so.eroded[i]) continue;
-        sink.cell(CellShape::hexahedron, so.nodes[i].data(),
-                  {element_result(so, block, e), so.pressure[i], so.temperature[i], part});
+        CellValues v{element_result(so, block, e), so.pressure[i], so.temperature[i], part};
+        v.id = so.ids[i];
+        v.deleted = so.eroded[i] != 0;
+        sink.cell(CellShape::hexahedron, so.nodes[i].data(), v);
       }
     }
   }

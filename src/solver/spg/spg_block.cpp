@@ -90,6 +90,7 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
       const Vec3 after = mc ? Vec3(d.fields.unsmoothed.col(i)) : Vec3(velocity.col(n));
       ps.kinetic += 0.5 * d.particles.mass[ii] * before.dot(after);
       ps.momentum += 0.5 * d.particles.mass[ii] * (before + after);
+      ps.mass += d.particles.mass[ii];
     }
     ps.internal += d.fields.damping_energy;
     for (const double w : d.fields.mode_energy)
@@ -170,9 +171,12 @@ class SpgBlock final : public DumpedBlock<SpgBlock> {
                         : d.kernel.isolated[ii] ? 2
                         : d.kernel.pinned[ii]   ? 1
                                                 : 0;
-      sink.cell(CellShape::vertex, &d.particles.nodes[ii],
-                {particle_result(d, i), d.fields.pressure[ii], d.fields.temperature[ii], part,
-                 d.kernel.bonds.damage(i), state, d.fields.step[ii]});
+      CellValues v{particle_result(d, i),    d.fields.pressure[ii],
+                   d.fields.temperature[ii], part,
+                   d.kernel.bonds.damage(i), state,
+                   d.fields.step[ii]};
+      v.id = s.nodes.ids[static_cast<std::size_t>(d.particles.nodes[ii])];
+      sink.cell(CellShape::vertex, &d.particles.nodes[ii], v);
     }
   }
 

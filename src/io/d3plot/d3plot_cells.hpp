@@ -1,0 +1,54 @@
+#pragma once
+/// One state's cells as the blocks show them (solver/state_sink.hpp), sorted into d3plot's
+/// element classes with each element's state words in LS-DYNA's order:
+///  - solids (hexahedra, the rigid parts' too): sigma xx yy zz xy yz zx, effective plastic
+///    strain (NV3D = 7);
+///  - beams: axial force, shear s, shear t, moment s, moment t, torsion (NV1D = 6);
+///  - shells (quadrilaterals, triangles as LS-DYNA's degenerate quadrilateral): three layers,
+///    mid-surface, inner (bottom) and outer (top) surface, each sigma xx yy zz xy yz zx and
+///    effective plastic strain, then thickness, two element-dependent words (written 0) and
+///    internal energy per volume (NV2D = 3 x 7 + 4; no force resultants, IOSHL3 999).
+/// SPG particles (vertex cells) are kept apart: d3plot's particle section is not written yet.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "model/entities.hpp"
+#include "solver/state_sink.hpp"
+
+namespace mcdyna::io::d3plot {
+
+using solver::Index;
+
+inline constexpr int kSolidWords = 7;
+inline constexpr int kBeamWords = 6;
+inline constexpr int kShellLayers = 3;  ///< MAXINT
+inline constexpr int kShellWords = kShellLayers * 7 + 4;
+
+/// The elements of one d3plot class: their nodes (`corners` solver indices each), user IDs,
+/// parts (user IDs), deletion, and `words` state words each.
+struct ElementClass {
+  int corners = 0;
+  int words = 0;
+  std::vector<Index> nodes;
+  std::vector<model::Id> ids, parts;
+  std::vector<std::uint8_t> deleted;
+  std::vector<double> values;
+  [[nodiscard]] Index count() const { return static_cast<Index>(ids.size()); }
+};
+
+class StateCells final : public solver::StateSink {
+ public:
+  StateCells();
+  void declare(std::string_view name, std::initializer_list<const char*> components) override;
+  void cell(solver::CellShape shape, const Index* nodes, const solver::CellValues& v) override;
+  void value(std::string_view name, const double* values) override;
+
+  ElementClass solids, beams, shells;
+  Index particles = 0;  ///< SPG particles shown (not written to d3plot)
+
+ private:
+  ElementClass* last_ = nullptr;  ///< the class of the last cell (its own fields follow)
+};
+
+}  // namespace mcdyna::io::d3plot
