@@ -9,7 +9,6 @@
 
 #include "solver/compile.hpp"
 #include "solver/history_records.hpp"
-#include "solver/spg/spg_parts.hpp"
 
 namespace mcdyna::io {
 
@@ -66,10 +65,6 @@ Outputs::Outputs(const model::ModelDatabase& m, const solver::State& s,
     if (dt > 0.0 || r.interval_curve != 0) {
       d3plot_ = std::make_unique<VtkSeries>(dir);
       binary_ = std::make_unique<d3plot::Database>(dir, resume ? &resume->family : nullptr);
-      if (!solver::spg::domains_of(s).empty())
-        notes.push_back(
-            "d3plot (LS-DYNA binary): the SPG particles are not written to it yet; "
-            "d3plot.pvd (VTK) has them");
       d3plot_schedule_ = schedule(m, s, dt, r.interval_curve);
       if (resume) {
         d3plot_->restore(resume->states);

@@ -82,12 +82,19 @@ def cell_key(g, c, point_keys):
     return tuple(sorted({point_keys[ids.GetId(k)] for k in range(ids.GetNumberOfIds())}))
 
 
+# Components of the series' own fields: a run without deformable shells (a rigid tool's) has no
+# shell fields in its series, and the d3plot holds zeros there.
+SERIES_COMPONENTS = {"stress_middle": 6, "stress_bottom": 6, "stress_top": 6,
+                     "layer_plastic_strain": 3, "thickness": 1, "internal_energy_density": 1,
+                     "beam_resultants": 6}
+
+
 def values(cd, c, names):
     """The cell's values of `names` (arrays of the reader or of the series), one flat vector."""
     out = []
     for n in names:
         a = cd.GetArray(n)
-        out.extend(a.GetTuple(c))
+        out.extend(a.GetTuple(c) if a is not None else [0.0] * SERIES_COMPONENTS[n])
     return np.array(out, dtype=np.float32)
 
 

@@ -27,6 +27,8 @@ StateCells::StateCells() {
   beams.words = kBeamWords;
   shells.corners = 4;
   shells.words = kShellWords;
+  particles.corners = 1;
+  particles.words = kParticleWords;
 }
 
 void StateCells::declare(std::string_view /*name*/,
@@ -45,9 +47,8 @@ void StateCells::cell(solver::CellShape shape, const Index* nodes, const solver:
       last_ = &beams;
       break;
     case solver::CellShape::vertex:
-      last_ = nullptr;
-      ++particles;
-      return;
+      last_ = &particles;
+      break;
   }
   ElementClass& c = *last_;
   const int n = solver::cell_nodes(shape);
@@ -59,12 +60,20 @@ void StateCells::cell(solver::CellShape shape, const Index* nodes, const solver:
   const std::size_t first = c.values.size();
   c.values.resize(first + static_cast<std::size_t>(c.words), 0.0);
   // A beam's words are its resultants (its own field); a solid's and a shell's start with the
-  // stress and plastic strain.
-  if (last_ != &beams) put_result(&c.values[first], v.result);
+  // stress and plastic strain; a particle's with its pressure.
+  double* w = &c.values[first];
+  if (last_ == &particles) {
+    w[0] = v.pressure;
+    put_result(w + 1, v.result);
+    w[8] = v.bond_damage;
+    w[9] = v.particle_state;
+  } else if (last_ != &beams) {
+    put_result(w, v.result);
+  }
 }
 
 void StateCells::value(std::string_view name, const double* values) {
-  if (last_ == nullptr) return;
+  if (last_ == nullptr || last_ == &particles) return;
   ElementClass& c = *last_;
   double* w = &c.values[c.values.size() - static_cast<std::size_t>(c.words)];
   if (last_ == &beams) {

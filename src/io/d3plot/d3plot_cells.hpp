@@ -8,7 +8,10 @@
 ///    mid-surface, inner (bottom) and outer (top) surface, each sigma xx yy zz xy yz zx and
 ///    effective plastic strain, then thickness, two element-dependent words (written 0) and
 ///    internal energy per volume (NV2D = 3 x 7 + 4; no force resultants, IOSHL3 999).
-/// SPG particles (vertex cells) are kept apart: d3plot's particle section is not written yet.
+///  - SPG particles (vertex cells), in d3plot's SPH particle section: the part number, then
+///    pressure, sigma xx yy zz xy yz zx, effective plastic strain, and two history words: the
+///    share of the particle's bonds broken and how it is integrated (0 smoothed, 1 pinned,
+///    2 isolated, 3 debris) (NUMSPH = 11).
 #include <array>
 #include <string_view>
 #include <vector>
@@ -24,6 +27,7 @@ inline constexpr int kSolidWords = 7;
 inline constexpr int kBeamWords = 6;
 inline constexpr int kShellLayers = 3;  ///< MAXINT
 inline constexpr int kShellWords = kShellLayers * 7 + 4;
+inline constexpr int kParticleWords = 10;  ///< after the part number: NUMSPH - 1
 
 /// The elements of one d3plot class: their nodes (`corners` solver indices each), user IDs,
 /// parts (user IDs), deletion, and `words` state words each.
@@ -45,7 +49,7 @@ class StateCells final : public solver::StateSink {
   void value(std::string_view name, const double* values) override;
 
   ElementClass solids, beams, shells;
-  Index particles = 0;  ///< SPG particles shown (not written to d3plot)
+  ElementClass particles;  ///< one node each; `values` without the part number
 
  private:
   ElementClass* last_ = nullptr;  ///< the class of the last cell (its own fields follow)

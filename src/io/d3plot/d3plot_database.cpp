@@ -54,6 +54,8 @@ Layout layout_of(const solver::State& s, const StateCells& c) {
   l.solid_parts = distinct_parts(c.solids);
   l.beam_parts = distinct_parts(c.beams);
   l.shell_parts = distinct_parts(c.shells);
+  l.particles = c.particles.count();
+  l.particle_parts = distinct_parts(c.particles);
   for (const solver::PartInfo& p : s.parts)
     l.parts.push_back(p.id);
   std::sort(l.parts.begin(), l.parts.end());
@@ -94,7 +96,8 @@ std::int64_t Layout::id_words() const {
 std::int64_t Layout::state_words() const {
   return 1 + global_words() + 9 * std::int64_t{nodes} + std::int64_t{solids} * kSolidWords +
          std::int64_t{beams} * kBeamWords + std::int64_t{shells} * kShellWords +
-         (std::int64_t{solids} + beams + shells);  // the deletion flags
+         (std::int64_t{solids} + beams + shells) +  // the deletion flags
+         std::int64_t{particles} * (1 + kParticleWords);
 }
 
 Database::Database(std::filesystem::path dir, const FamilyPosition* resume) : dir_(std::move(dir)) {
@@ -118,7 +121,7 @@ void Database::write(const solver::State& s, const Eigen::Matrix3Xd& previous,
   }
   const Layout& l = *layout_;
   if (cells.solids.count() != l.solids || cells.beams.count() != l.beams ||
-      cells.shells.count() != l.shells)
+      cells.shells.count() != l.shells || cells.particles.count() != l.particles)
     throw std::logic_error(
         "d3plot: the blocks showed another set of elements than at the first "
         "state");
@@ -162,8 +165,8 @@ Words Database::control_and_geometry(const solver::State& s, const StateCells& c
   w.integer(0);  // NEIPH
   w.integer(0);  // NEIPS
   w.integer(kMaxIntWithDeletion);
-  w.integer(0);  // NMSPH
-  w.integer(0);  // NGPSPH
+  w.integer(l.particles);       // NMSPH
+  w.integer(l.particle_parts);  // NGPSPH
   w.integer(l.id_words());
   w.integer(0);            // NELT
   w.integer(0);            // NUMMATT
@@ -177,6 +180,12 @@ Words Database::control_and_geometry(const solver::State& s, const StateCells& c
   w.integer(static_cast<std::int64_t>(l.parts.size()));  // NMMAT
   for (int k = 52; k < 64; ++k)
     w.integer(0);  // NUMFLUID INN NPEFG NEL48 IDTDT EXTRA and the unused words
+  // The SPH flags (the SPG particles' state words): ISPHFG1 the number of flags, then radius
+  // (not written), pressure, stress, plastic strain, density, energy, neighbours, strain,
+  // mass (not written) and the history words (bond damage, integration state).
+  if (l.particles > 0)
+    for (const std::int64_t v : {11, 0, 1, 6, 1, 0, 0, 0, 0, 0, 2})
+      w.integer(v);
   // Geometry: the initial coordinates, then each class's connectivity with its part number.
   for (Index n = 0; n < l.nodes; ++n)
     for (int k = 0; k < 3; ++k)
@@ -206,6 +215,11 @@ Words Database::control_and_geometry(const solver::State& s, const StateCells& c
       w.integer(id);
   for (std::int64_t k = 1; k <= np; ++k)
     w.integer(k);
+  // The SPH node and material list: each particle's node number and part number.
+  for (Index p = 0; p < l.particles; ++p) {
+    w.integer(c.particles.nodes[static_cast<std::size_t>(p)] + 1);
+    w.integer(part_number(l, c.particles.parts[static_cast<std::size_t>(p)]));
+  }
   w.real(kEndOfFile);
   // Part titles (*PART's heading), then the end of the geometry.
   w.integer(kPartTitles);
@@ -267,6 +281,14 @@ Words Database::state_words(const solver::State& s, const StateCells& c,
   deletion_flags(w, c.solids);
   deletion_flags(w, c.shells);
   deletion_flags(w, c.beams);
+  // The particles: the part number (never negative: a particle is not deleted; a torn one is
+  // debris, state 3), then its words.
+  const ElementClass& pc = c.particles;
+  for (Index p = 0; p < pc.count(); ++p) {
+    w.real(part_number(l, pc.parts[static_cast<std::size_t>(p)]));  // a real word, as all state
+    for (int k = 0; k < pc.words; ++k)
+      w.real(pc.values[static_cast<std::size_t>(p * pc.words + k)]);
+  }
   return w;
 }
 

@@ -5,7 +5,9 @@
 ///    their part numbers), the user IDs (nodes, elements, parts) and the part titles;
 ///  - `d3plot01`, ...: the states, each the time, the global and per-part energies, velocities
 ///    and masses, the nodes' coordinates, velocities and accelerations, every element's words
-///    (d3plot_cells.hpp) and the element deletion flags (1 intact, 0 eroded).
+///    (d3plot_cells.hpp), the element deletion flags (1 intact, 0 eroded) and the SPG
+///    particles in the SPH particle section (their part number, pressure, stress, plastic
+///    strain, bond damage and integration state).
 /// Parts are numbered by ascending user ID, so the sorted, the defined and the cross-reference
 /// part lists of the ID section agree. Single precision (4-byte words). The control words that
 /// carry a date or a code version hold fixed values, so that two runs of a deck, on any number
@@ -31,6 +33,7 @@ class StateCells;
 struct Layout {
   Index nodes = 0, solids = 0, beams = 0, shells = 0;
   Index solid_parts = 0, beam_parts = 0, shell_parts = 0;  ///< NUMMAT8, NUMMAT2, NUMMAT4
+  Index particles = 0, particle_parts = 0;                 ///< NMSPH, NGPSPH
   std::vector<model::Id> parts;                            ///< by number - 1: ascending IDs
   [[nodiscard]] std::int64_t global_words() const;         ///< NGLBV
   [[nodiscard]] std::int64_t id_words() const;             ///< NARBS

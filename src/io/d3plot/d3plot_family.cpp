@@ -24,9 +24,12 @@ Family::Family(std::filesystem::path dir, std::string base, int word_bytes,
       word_bytes_(word_bytes),
       family_words_(family_words),
       at_(at) {
+  // The member as it stood at the dump, its tail included: the next state is written over the
+  // tail, or goes to a new member and leaves this one closed.
   if (at_.member > 0)
-    file_ = RecordFile::continue_at(member(at_.member),
-                                    static_cast<std::uint64_t>(at_.words * word_bytes_));
+    file_ = RecordFile::continue_at(
+        member(at_.member),
+        static_cast<std::uint64_t>((at_.words + tail(at_.words).size()) * word_bytes_));
 }
 
 std::filesystem::path Family::member(int k) const {

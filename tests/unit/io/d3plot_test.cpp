@@ -51,6 +51,8 @@ enum Word : std::size_t {
   NEL4 = 31,
   NV2D = 33,
   MAXINT = 36,
+  NMSPH = 37,
+  NGPSPH = 38,
   NARBS = 39,
   NMMAT = 51
 };
@@ -196,6 +198,51 @@ TEST_CASE("d3plot: eroded elements are flagged deleted, as many as the VTK serie
   CHECK(last_alive < nel8);  // the bar did erode
 }
 
+TEST_CASE("d3plot: SPG particles in the SPH section, each state's words equal to the series") {
+  TempDir dir;
+  const fs::path deck = dir.write("bar.k", source_text("decks/taylor_bar/taylor_spg_coarse.k"));
+  const fs::path out = dir.path() / "out";
+  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q --cycles 300");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const WordFile g(out / "d3plot");
+  const std::vector<std::string> vtu = collection(out / "d3plot.pvd");
+  const auto last = read_vtu(out / vtu.back());
+  const auto particles = static_cast<std::size_t>(last->GetNumberOfCells());
+  REQUIRE(g.i[NMSPH] == static_cast<std::int32_t>(particles));
+  CHECK(g.i[NGPSPH] == 1);
+  // ISPHFG: 11 flags; pressure, stress, plastic strain, two history words: 11 words a particle.
+  const std::vector<std::int32_t> flags(g.i.begin() + 64, g.i.begin() + 75);
+  CHECK(flags == std::vector<std::int32_t>{11, 0, 1, 6, 1, 0, 0, 0, 0, 0, 2});
+  const std::size_t numnp = static_cast<std::size_t>(g.i[NUMNP]);
+  const std::size_t list = 75 + 3 * numnp + static_cast<std::size_t>(g.i[NARBS]);  // no elements
+  const std::int64_t size = state_words(g) + static_cast<std::int64_t>(11 * particles);
+  const WordFile s(out / "d3plot01");
+  REQUIRE(s.size() >= vtu.size() * static_cast<std::size_t>(size) + 1);
+  CHECK(s.f[vtu.size() * static_cast<std::size_t>(size)] == kMarker);
+  vtkDataArray* pressure = last->GetCellData()->GetArray("pressure");
+  vtkDataArray* stress = last->GetCellData()->GetArray("stress");
+  vtkDataArray* eps = last->GetCellData()->GetArray("effective_plastic_strain");
+  vtkDataArray* bonds = last->GetCellData()->GetArray("bond_damage");
+  vtkDataArray* state = last->GetCellData()->GetArray("spg_state");
+  const std::size_t first =
+      (vtu.size() - 1) * static_cast<std::size_t>(size) + static_cast<std::size_t>(state_words(g));
+  for (std::size_t p = 0; p < particles; ++p) {
+    const auto c = static_cast<vtkIdType>(p);
+    CHECK(g.i[list + 2 * p] == last->GetCell(c)->GetPointId(0) + 1);  // node number
+    CHECK(g.i[list + 2 * p + 1] == 1);                                // part number
+    const std::size_t w = first + 11 * p;
+    CHECK(s.f[w] == 1.0F);
+    CHECK(s.f[w + 1] == static_cast<float>(pressure->GetComponent(c, 0)));
+    for (int k = 0; k < 6; ++k)
+      CHECK(s.f[w + 2 + static_cast<std::size_t>(k)] ==
+            static_cast<float>(stress->GetComponent(c, k)));
+    CHECK(s.f[w + 8] == static_cast<float>(eps->GetComponent(c, 0)));
+    CHECK(s.f[w + 9] == static_cast<float>(bonds->GetComponent(c, 0)));
+    CHECK(s.f[w + 10] == static_cast<float>(state->GetComponent(c, 0)));
+  }
+  CHECK(g.f[list + 2 * particles] == kMarker);
+}
+
 TEST_CASE("d3plot family: a new file at the family size, never a state cut in two") {
   TempDir dir;
   io::d3plot::Words geometry(4);
@@ -231,6 +278,45 @@ TEST_CASE("d3plot family: a new file at the family size, never a state cut in tw
   family.append(big);
   CHECK(family.position().member == 4);
   CHECK(fs::file_size(dir.path() / "d3plot04") == 2 * 512 * 4);
+}
+
+TEST_CASE("d3plot family: continued from a dump's position, the same files as straight through") {
+  // Two states to a member (family of 250 words, states of 100). A dump after the second state
+  // holds a full member: the next state opens a new one and must leave the first closed with its
+  // end-of-file marker, as a run that never stopped does; a dump after the first state continues
+  // the member it holds.
+  TempDir dir;
+  io::d3plot::Words geometry(4), state(4);
+  geometry.integer(7);
+  for (int k = 0; k < 100; ++k)
+    state.real(k);
+  const fs::path straight = dir.path() / "straight", resumed = dir.path() / "resumed";
+  fs::create_directories(straight);
+  fs::create_directories(resumed);
+  {
+    io::d3plot::Family family(straight, "d3plot", geometry, 250);
+    for (int k = 0; k < 3; ++k)
+      family.append(state);
+  }
+  for (const int dumped_after : {1, 2}) {
+    CAPTURE(dumped_after);
+    fs::remove_all(resumed);
+    fs::create_directories(resumed);
+    io::d3plot::FamilyPosition at;
+    {
+      io::d3plot::Family family(resumed, "d3plot", geometry, 250);
+      for (int k = 0; k < dumped_after; ++k)
+        family.append(state);
+      at = family.position();
+    }
+    io::d3plot::Family family(resumed, "d3plot", 4, at, 250);
+    for (int k = dumped_after; k < 3; ++k)
+      family.append(state);
+    for (const char* name : {"d3plot", "d3plot01", "d3plot02"}) {
+      CAPTURE(name);
+      CHECK(read_text(straight / name) == read_text(resumed / name));
+    }
+  }
 }
 
 }  // namespace mcdyna::test
