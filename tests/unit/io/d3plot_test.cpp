@@ -202,7 +202,7 @@ TEST_CASE("d3plot: SPG particles in the SPH section, each state's words equal to
   TempDir dir;
   const fs::path deck = dir.write("bar.k", source_text("decks/taylor_bar/taylor_spg_coarse.k"));
   const fs::path out = dir.path() / "out";
-  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q --cycles 300");
+  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q --cycles 60");
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   const WordFile g(out / "d3plot");
   const std::vector<std::string> vtu = collection(out / "d3plot.pvd");
