@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "io/d3plot/d3plot_reader.hpp"
 #include "io/history_table.hpp"
+#include "post/state_compare.hpp"
 
 extern char** environ;
 
@@ -119,9 +121,74 @@ bool draw_plot(const post::Comparison& r, const CompareCommandOptions& o, std::o
   return true;
 }
 
+// A d3plot family: a folder holding `d3plot`, or a file named d3plot (its members d3plot01..).
+bool is_d3plot(const std::filesystem::path& p) {
+  if (std::filesystem::is_directory(p)) return std::filesystem::exists(p / "d3plot");
+  const std::string name = p.filename().string();
+  return name.rfind("d3plot", 0) == 0 && !p.has_extension();
+}
+
+std::string family_line(const std::filesystem::path& p, const io::d3plot::Reader& r) {
+  return fmt::format(
+      "{} (d3plot, {}-byte words, {} states, {} nodes, {} solids, {} shells, {} "
+      "beams, {} particles)",
+      p.string(), r.control().word_bytes, r.states(), r.node_ids().size(), r.solids().count(),
+      r.shells().count(), r.beams().count(), r.particles().count());
+}
+
+// `mcdyna compare A/d3plot B/d3plot`: the states at matching times, per part and field.
+int compare_d3plot(const CompareCommandOptions& o, std::ostream& out, std::ostream& err) {
+  const io::d3plot::Reader a(o.a), b(o.b);
+  const post::StateComparison r = post::compare_states(a, b);
+  out << "A  " << family_line(o.a, a) << "\n";
+  out << "B  " << family_line(o.b, b) << " - the reference\n";
+  if (r.matched.empty()) {
+    err << "mcdyna compare: no state of A has a state of B at its time\n";
+    return kCannotCompare;
+  }
+  out << fmt::format(
+      "matched {} of {} states by time ({:.6g} … {:.6g}); by user ID {} nodes and {} elements, "
+      "{} only in A, {} only in B\n\n",
+      r.matched.size(), r.states_a, r.matched.front().second, r.matched.back().second, r.nodes,
+      r.elements, r.only_a, r.only_b);
+  out << fmt::format("{:>10}  {:<15}  {:>11}  {:>11}  {:>11}  {:>11}  {:>10}\n", "part", "field",
+                     "max|A-B|", "at time", "RMS(A-B)", "peak|B|", "max/peakB");
+  std::vector<std::string> outside;
+  for (const post::StateFieldDifference& d : r.rows) {
+    out << fmt::format("{:>10}  {:<15}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>10.4g}\n",
+                       d.part, d.field, d.max, d.time_at_max, d.rms, d.peak_b, d.relative());
+    if (o.tolerance && !(d.relative() <= *o.tolerance))
+      outside.push_back(fmt::format("part {} {} ({:.4g})", d.part, d.field, d.relative()));
+  }
+  if (!o.tolerance) return 0;
+  if (outside.empty()) {
+    out << fmt::format("\nwithin tolerance: every part's max|A-B| / peak|B| <= {:g}\n",
+                       *o.tolerance);
+    return 0;
+  }
+  out << fmt::format("\nOUTSIDE tolerance {:g} in {} of {} rows:", *o.tolerance, outside.size(),
+                     r.rows.size());
+  for (const std::string& s : outside)
+    out << "\n  " << s;
+  out << "\n";
+  return kOutsideTolerance;
+}
+
 }  // namespace
 
 int run_compare(const CompareCommandOptions& o, std::ostream& out, std::ostream& err) {
+  if (is_d3plot(o.a) || is_d3plot(o.b)) {
+    if (!is_d3plot(o.a) || !is_d3plot(o.b)) {
+      err << "mcdyna compare: a d3plot family compares with a d3plot family only\n";
+      return kCannotCompare;
+    }
+    try {
+      return compare_d3plot(o, out, err);
+    } catch (const io::d3plot::ReadError& e) {
+      err << "mcdyna compare: " << e.what() << "\n";
+      return kCannotCompare;
+    }
+  }
   try {
     const io::HistoryTable a = io::read_history(o.a);
     const io::HistoryTable b = io::read_history(o.b);

@@ -1,6 +1,7 @@
 #pragma once
 /// `mcdyna compare A B`: compare two histories (our CSV, other CSV, LS-DYNA ASCII files) column
-/// by column; B is the reference.
+/// by column, or two d3plot families (ours or LS-DYNA's: a folder holding d3plot, or the d3plot
+/// file) state by state (post/state_compare.hpp); B is the reference.
 #include <filesystem>
 #include <iosfwd>
 #include <optional>

@@ -179,9 +179,10 @@ CLI::App* add_compare_command(CLI::App& app, mcdyna::cli::CompareCommandOptions&
   auto* cmd = app.add_subcommand(
       "compare",
       "compare two histories (our CSV, other CSV, LS-DYNA ASCII rcforc/glstat/nodout/spcforc/"
-      "bndout/matsum) column by column; B is the reference");
-  cmd->add_option("a", cmp.a, "history A")->required();
-  cmd->add_option("b", cmp.b, "history B, the reference")->required();
+      "bndout/matsum) column by column, or two d3plot families state by state; B is the "
+      "reference");
+  cmd->add_option("a", cmp.a, "history or d3plot family A")->required();
+  cmd->add_option("b", cmp.b, "history or d3plot family B, the reference")->required();
   cmd->add_option("-c,--column", cmp.compare.columns,
                   "column to compare: NAME (in both; a quantity like z_force takes all its "
                   "z_force@... columns), A_NAME:B_NAME, or a 1-based index; repeatable "

@@ -156,8 +156,10 @@ void Reader::read_static() {
   if (c_.nmsph > 0) {
     const std::int64_t flags = w.integer(p);
     c_.sph_words = 1;
-    for (std::int64_t k = 1; k < flags; ++k)
-      c_.sph_words += std::abs(w.integer(p + k));
+    for (std::int64_t k = 1; k < flags; ++k) {
+      c_.sph_flags.push_back(std::abs(w.integer(p + k)));
+      c_.sph_words += c_.sph_flags.back();
+    }
     p += flags;
   }
   // Geometry.

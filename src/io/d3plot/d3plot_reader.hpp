@@ -28,7 +28,8 @@ struct Control {
   std::int64_t ndim = 0, numnp = 0, nglbv = 0, it = 0, iu = 0, iv = 0, ia = 0;
   std::int64_t nel8 = 0, nv3d = 0, nel2 = 0, nv1d = 0, nel4 = 0, nv2d = 0, nelt = 0, nv3dt = 0;
   std::int64_t maxint = 0, nmsph = 0, narbs = 0, nmmat = 0, extra = 0, numrbe = 0;
-  std::int64_t sph_words = 0;  ///< NUM_SPH_DATA: words per particle in a state
+  std::int64_t sph_words = 0;           ///< NUM_SPH_DATA: words per particle in a state
+  std::vector<std::int64_t> sph_flags;  ///< ISPHFG(2..): words of radius, pressure, stress, ...
   [[nodiscard]] bool element_deletion() const { return maxint <= -10000; }
   /// Words per node between the coordinates and the velocities: IT's temperatures (1, 4 with
   /// the heat flux, 6 in three layers) and the mass-scaling word (IT 1x).
