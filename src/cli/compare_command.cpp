@@ -7,12 +7,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "io/checked_file.hpp"
 #include "io/d3plot/d3plot_reader.hpp"
 #include "io/history_table.hpp"
+#include "post/difference_series.hpp"
 #include "post/state_compare.hpp"
 
 extern char** environ;
@@ -139,7 +142,9 @@ std::string family_line(const std::filesystem::path& p, const io::d3plot::Reader
 // `mcdyna compare A/d3plot B/d3plot`: the states at matching times, per part and field.
 int compare_d3plot(const CompareCommandOptions& o, std::ostream& out, std::ostream& err) {
   const io::d3plot::Reader a(o.a), b(o.b);
-  const post::StateComparison r = post::compare_states(a, b);
+  std::optional<post::DifferenceSeries> series;
+  if (!o.difference_series.empty()) series.emplace(o.difference_series, b);
+  const post::StateComparison r = post::compare_states(a, b, -1.0, series ? &*series : nullptr);
   out << "A  " << family_line(o.a, a) << "\n";
   out << "B  " << family_line(o.b, b) << " - the reference\n";
   if (r.matched.empty()) {
@@ -147,10 +152,10 @@ int compare_d3plot(const CompareCommandOptions& o, std::ostream& out, std::ostre
     return kCannotCompare;
   }
   out << fmt::format(
-      "matched {} of {} states by time ({:.6g} … {:.6g}); by user ID {} nodes and {} elements, "
-      "{} only in A, {} only in B\n\n",
-      r.matched.size(), r.states_a, r.matched.front().second, r.matched.back().second, r.nodes,
-      r.elements, r.only_a, r.only_b);
+      "matched {} of {} states by time ({:.6g} … {:.6g}, A's times at most {:.3g} from B's); by "
+      "user ID {} nodes and {} elements, {} only in A, {} only in B\n\n",
+      r.matched.size(), r.states_a, r.matched.front().second, r.matched.back().second,
+      r.largest_offset, r.nodes, r.elements, r.only_a, r.only_b);
   out << fmt::format("{:>10}  {:<15}  {:>11}  {:>11}  {:>11}  {:>11}  {:>10}\n", "part", "field",
                      "max|A-B|", "at time", "RMS(A-B)", "peak|B|", "max/peakB");
   std::vector<std::string> outside;
@@ -160,6 +165,9 @@ int compare_d3plot(const CompareCommandOptions& o, std::ostream& out, std::ostre
     if (o.tolerance && !(d.relative() <= *o.tolerance))
       outside.push_back(fmt::format("part {} {} ({:.4g})", d.part, d.field, d.relative()));
   }
+  if (series)
+    out << fmt::format("\ndifference series: {} ({} states)\n", series->collection().string(),
+                       series->states());
   if (!o.tolerance) return 0;
   if (outside.empty()) {
     out << fmt::format("\nwithin tolerance: every part's max|A-B| / peak|B| <= {:g}\n",
@@ -186,8 +194,16 @@ int run_compare(const CompareCommandOptions& o, std::ostream& out, std::ostream&
       return compare_d3plot(o, out, err);
     } catch (const io::d3plot::ReadError& e) {
       err << "mcdyna compare: " << e.what() << "\n";
-      return kCannotCompare;
+    } catch (const io::WriteError& e) {
+      err << "mcdyna compare: " << e.what() << "\n";
+    } catch (const std::filesystem::filesystem_error& e) {
+      err << "mcdyna compare: " << e.what() << "\n";
     }
+    return kCannotCompare;
+  }
+  if (!o.difference_series.empty()) {
+    err << "mcdyna compare: --diff-series is for two d3plot families\n";
+    return kCannotCompare;
   }
   try {
     const io::HistoryTable a = io::read_history(o.a);

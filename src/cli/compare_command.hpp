@@ -13,9 +13,10 @@ namespace mcdyna::cli {
 struct CompareCommandOptions {
   std::filesystem::path a, b;
   post::CompareOptions compare;
-  std::optional<double> tolerance;  ///< max |A-B| / peak |B| allowed per column
-  std::filesystem::path plot;       ///< PNG of both curves and their difference
-  std::filesystem::path csv;        ///< the resampled curves
+  std::optional<double> tolerance;          ///< max |A-B| / peak |B| allowed per column
+  std::filesystem::path plot;               ///< PNG of both curves and their difference
+  std::filesystem::path csv;                ///< the resampled curves
+  std::filesystem::path difference_series;  ///< two d3plot families: A - B as a VTK series here
 };
 
 /// Exit code: 0 compared (and within --tol), 1 a column exceeds --tol, 2 the files cannot be

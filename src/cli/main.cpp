@@ -199,6 +199,8 @@ CLI::App* add_compare_command(CLI::App& app, mcdyna::cli::CompareCommandOptions&
       ->check(kFinite & CLI::NonNegativeNumber);
   cmd->add_option("--plot", cmp.plot, "PNG with both curves and their difference");
   cmd->add_option("--csv", cmp.csv, "write the resampled curves as CSV");
+  cmd->add_option("--diff-series", cmp.difference_series,
+                  "two d3plot families: write A - B on B's mesh as a VTK series into DIR");
   return cmd;
 }
 

@@ -261,7 +261,7 @@ void VtkSeries::restore(std::vector<std::pair<double, std::string>> entries) {
   entries_ = std::move(entries);
 }
 
-void VtkSeries::write_collection(const std::vector<std::pair<double, std::string>>& entries) const {
+std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries) {
   std::string text = "<?xml version=\"1.0\"?>\n";
   text += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
   text += "  <Collection>\n";
@@ -269,7 +269,11 @@ void VtkSeries::write_collection(const std::vector<std::pair<double, std::string
     text += fmt::format("    <DataSet timestep=\"{:.9e}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t,
                         file);
   text += "  </Collection>\n</VTKFile>\n";
-  write_file_atomically(collection(), text);
+  return text;
+}
+
+void VtkSeries::write_collection(const std::vector<std::pair<double, std::string>>& entries) const {
+  write_file_atomically(collection(), pvd_collection(entries));
 }
 
 }  // namespace mcdyna::io

@@ -17,6 +17,9 @@
 
 namespace mcdyna::io {
 
+/// A ParaView collection (.pvd) listing `entries` (time, file) in order.
+std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries);
+
 class VtkSeries {
  public:
   /// Files go to dir/<base>.pvd and dir/<base>_NNNN.vtu.

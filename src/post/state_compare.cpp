@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <unordered_map>
 
@@ -100,12 +101,12 @@ struct ClassLayout {
   std::int64_t words = 0, stress = -1, strain = -1;
 };
 
-void compare_class(const Elements& ea, const Elements& eb, const ClassLayout& la,
-                   const ClassLayout& lb, const std::vector<double>& wa,
+void compare_class(const char* element_class, const Elements& ea, const Elements& eb,
+                   const ClassLayout& la, const ClassLayout& lb, const std::vector<double>& wa,
                    const std::vector<double>& wb, const std::vector<std::uint8_t>& deleted_a,
                    const std::vector<std::uint8_t>& deleted_b,
                    const std::vector<std::pair<std::size_t, std::size_t>>& matched, double time,
-                   Sums& sums) {
+                   Sums& sums, DifferenceSink* sink) {
   const std::vector<std::int64_t> at_a = word_starts(ea, la.words),
                                   at_b = word_starts(eb, lb.words);
   for (const auto& [i, j] : matched) {
@@ -113,19 +114,23 @@ void compare_class(const Elements& ea, const Elements& eb, const ClassLayout& la
     if (at_a[i] < 0 || at_b[j] < 0) continue;
     const auto pa = static_cast<std::size_t>(at_a[i]), pb = static_cast<std::size_t>(at_b[j]);
     if (la.stress >= 0 && lb.stress >= 0) {
-      double d = 0.0, b = 0.0;
+      double d = 0.0, b = 0.0, diff[6];
       for (std::size_t c = 0; c < 6; ++c) {
         const double va = wa[pa + static_cast<std::size_t>(la.stress) + c];
         const double vb = wb[pb + static_cast<std::size_t>(lb.stress) + c];
+        diff[c] = va - vb;
         d = std::max(d, std::abs(va - vb));
         b = std::max(b, std::abs(vb));
       }
       sums.add(eb.parts[j], la.stress_name, d, b, time);
+      if (sink) sink->element(element_class, j, la.stress_name, diff, 6);
     }
     if (la.strain >= 0 && lb.strain >= 0) {
       const double va = wa[pa + static_cast<std::size_t>(la.strain)];
       const double vb = wb[pb + static_cast<std::size_t>(lb.strain)];
       sums.add(eb.parts[j], "plastic_strain", std::abs(va - vb), vb, time);
+      const double diff = va - vb;
+      if (sink) sink->element(element_class, j, "plastic_strain", &diff, 1);
     }
   }
 }
@@ -153,24 +158,31 @@ ClassLayout particle_layout(const io::d3plot::Control& c) {
 
 }  // namespace
 
-StateComparison compare_states(const Reader& a, const Reader& b, double time_tolerance) {
+StateComparison compare_states(const Reader& a, const Reader& b, double time_tolerance,
+                               DifferenceSink* sink) {
   StateComparison out;
   out.states_a = a.states();
   out.states_b = b.states();
   std::vector<double> times_b;
   for (std::size_t k = 0; k < b.states(); ++k)
     times_b.push_back(b.time(k));
-  const double scale = times_b.empty() ? 0.0 : std::abs(times_b.back());
+  double tolerance = time_tolerance;
+  if (tolerance < 0.0) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 1; j < times_b.size(); ++j)
+      if (times_b[j] > times_b[j - 1]) shortest = std::min(shortest, times_b[j] - times_b[j - 1]);
+    tolerance = std::isfinite(shortest) ? 0.5 * shortest : 0.0;
+  }
   std::vector<std::pair<std::size_t, std::size_t>> states;
   for (std::size_t k = 0; k < a.states(); ++k) {
     const double t = a.time(k);
     std::size_t best = 0;
     for (std::size_t j = 1; j < times_b.size(); ++j)
       if (std::abs(times_b[j] - t) < std::abs(times_b[best] - t)) best = j;
-    if (!times_b.empty() &&
-        std::abs(times_b[best] - t) <= time_tolerance * std::max(scale, 1e-300)) {
+    if (!times_b.empty() && std::abs(times_b[best] - t) <= tolerance) {
       states.emplace_back(k, best);
       out.matched.emplace_back(t, times_b[best]);
+      out.largest_offset = std::max(out.largest_offset, std::abs(times_b[best] - t));
     }
   }
   const auto nodes = pairs(a.node_ids(), b.node_ids(), out.only_a, out.only_b);
@@ -184,32 +196,37 @@ StateComparison compare_states(const Reader& a, const Reader& b, double time_tol
   Sums sums;
   for (const auto& [ka, kb] : states) {
     const StateData sa = a.state(ka), sb = b.state(kb);
+    if (sink) sink->begin_state(sb.time, sb.x.empty() ? b.initial() : sb.x);
     auto vectors = [&](const std::vector<double>& va, const std::vector<double>& vb,
                        const std::vector<double>* origin_a, const std::vector<double>* origin_b,
                        const char* field) {
       if (va.empty() || vb.empty()) return;
       for (const auto& [i, j] : nodes) {
-        double d2 = 0.0, b2 = 0.0;
+        double d2 = 0.0, b2 = 0.0, diff[3];
         for (std::size_t c = 0; c < 3; ++c) {
           const double xa = va[3 * i + c] - (origin_a ? (*origin_a)[3 * i + c] : 0.0);
           const double xb = vb[3 * j + c] - (origin_b ? (*origin_b)[3 * j + c] : 0.0);
+          diff[c] = xa - xb;
           d2 += (xa - xb) * (xa - xb);
           b2 += xb * xb;
         }
         sums.add(part_of[j], field, std::sqrt(d2), std::sqrt(b2), sb.time);
+        if (sink) sink->node(j, field, diff);
       }
     };
     vectors(sa.x, sb.x, &a.initial(), &b.initial(), "displacement");
     vectors(sa.v, sb.v, nullptr, nullptr, "velocity");
     const io::d3plot::Control &ca = a.control(), &cb = b.control();
-    compare_class(a.solids(), b.solids(), solid_layout(ca), solid_layout(cb), sa.solids, sb.solids,
-                  sa.solid_deleted, sb.solid_deleted, solids, sb.time, sums);
-    compare_class(a.shells(), b.shells(), shell_layout(ca), shell_layout(cb), sa.shells, sb.shells,
-                  sa.shell_deleted, sb.shell_deleted, shells, sb.time, sums);
-    compare_class(a.beams(), b.beams(), beam_layout(ca), beam_layout(cb), sa.beams, sb.beams,
-                  sa.beam_deleted, sb.beam_deleted, beams, sb.time, sums);
-    compare_class(a.particles(), b.particles(), particle_layout(ca), particle_layout(cb),
-                  sa.particles, sb.particles, {}, {}, particles, sb.time, sums);
+    compare_class("solid", a.solids(), b.solids(), solid_layout(ca), solid_layout(cb), sa.solids,
+                  sb.solids, sa.solid_deleted, sb.solid_deleted, solids, sb.time, sums, sink);
+    compare_class("shell", a.shells(), b.shells(), shell_layout(ca), shell_layout(cb), sa.shells,
+                  sb.shells, sa.shell_deleted, sb.shell_deleted, shells, sb.time, sums, sink);
+    compare_class("beam", a.beams(), b.beams(), beam_layout(ca), beam_layout(cb), sa.beams,
+                  sb.beams, sa.beam_deleted, sb.beam_deleted, beams, sb.time, sums, sink);
+    compare_class("particle", a.particles(), b.particles(), particle_layout(ca),
+                  particle_layout(cb), sa.particles, sb.particles, {}, {}, particles, sb.time, sums,
+                  sink);
+    if (sink) sink->end_state();
   }
   out.rows = sums.rows();
   return out;

@@ -32,13 +32,29 @@ struct StateFieldDifference {
 struct StateComparison {
   std::size_t states_a = 0, states_b = 0;
   std::vector<std::pair<double, double>> matched;  ///< (time A, time B) of each matched pair
+  double largest_offset = 0.0;                     ///< max |time A - time B| over them
   std::size_t nodes = 0, elements = 0;             ///< matched by user ID
   std::size_t only_a = 0, only_b = 0;              ///< nodes and elements in one family only
   std::vector<StateFieldDifference> rows;          ///< by part, then field
 };
 
-/// `time_tolerance`: relative to B's last time, how far a state's time may be from its match.
+/// Receives each matched state's differences A - B in B's numbering (the difference series,
+/// post/difference_series.hpp): nodes by their index in B, elements by class ("solid", "shell",
+/// "beam", "particle") and index in B's class.
+class DifferenceSink {
+ public:
+  virtual ~DifferenceSink() = default;
+  virtual void begin_state(double time_b, const std::vector<double>& x_b) = 0;
+  virtual void node(std::size_t b, const char* field, const double* a_minus_b) = 0;  ///< 3
+  virtual void element(const char* element_class, std::size_t b, const char* field,
+                       const double* a_minus_b, int components) = 0;
+  virtual void end_state() = 0;
+};
+
+/// Each state of A is matched to B's state nearest in time when it is within `time_tolerance`
+/// (default, negative: half of B's shortest interval between states: both codes write a state
+/// at the first cycle at or after its time, so the same output time differs by up to a step).
 StateComparison compare_states(const io::d3plot::Reader& a, const io::d3plot::Reader& b,
-                               double time_tolerance = 1e-5);
+                               double time_tolerance = -1.0, DifferenceSink* sink = nullptr);
 
 }  // namespace mcdyna::post

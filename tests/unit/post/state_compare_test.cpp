@@ -1,6 +1,10 @@
 // `mcdyna compare A B` on two d3plot families (issue 49): states matched by time, nodes and
 // elements by user ID, per part and field the largest and RMS difference and B's peak; exit 1
 // outside --tol, 2 when the two cannot be compared.
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+
 #include <cmath>
 
 #include "io/d3plot/d3plot_reader.hpp"
@@ -76,6 +80,43 @@ TEST_CASE("compare d3plot: LS-DYNA's family against itself, every state matched,
   CHECK_MESSAGE(r.exit_code == 0, r.output);
   CHECK(r.output.find("matched 22 of 22 states") != std::string::npos);
   CHECK(r.output.find("106 nodes and 32 elements") != std::string::npos);
+}
+
+TEST_CASE("compare d3plot --diff-series: A - B on B's mesh, a VTK file per matched state") {
+  TempDir dir;
+  const fs::path a = cube_run(dir, "a", "-10000.0"), fast = cube_run(dir, "fast", "-11000.0");
+  const fs::path series = dir.path() / "difference";
+  const Run r = run_mcdyna("compare " + fast.string() + " " + a.string() + " --diff-series " +
+                           series.string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(r.output.find("difference series: " + (series / "difference.pvd").string()) !=
+        std::string::npos);
+  const std::vector<std::string> states = collection(series / "difference.pvd");
+  REQUIRE(states.size() == io::d3plot::Reader(a).states());
+  // At t = 0 the nodes differ by their initial speed only: A - B = -11000 - (-10000) in z.
+  const auto first = read_vtu(series / states.front());
+  CHECK(first->GetNumberOfPoints() == 27);
+  CHECK(first->GetNumberOfCells() == 8);
+  vtkDataArray* dv = first->GetPointData()->GetArray("velocity_difference");
+  REQUIRE(dv != nullptr);
+  for (vtkIdType n = 0; n < 27; ++n) {
+    CHECK(dv->GetComponent(n, 0) == 0.0);
+    CHECK(dv->GetComponent(n, 2) == -1000.0);
+  }
+  CHECK(first->GetCellData()->GetArray("stress_difference") != nullptr);
+  CHECK(first->GetCellData()->GetArray("element_id")->GetComponent(0, 0) == 1.0);
+  // Later the stresses differ.
+  const auto last = read_vtu(series / states.back());
+  vtkDataArray* ds = last->GetCellData()->GetArray("stress_difference");
+  double largest = 0.0;
+  for (vtkIdType e = 0; e < 8; ++e)
+    for (int c = 0; c < 6; ++c)
+      largest = std::max(largest, std::abs(ds->GetComponent(e, c)));
+  CHECK(largest > 0.0);
+  const Run history = run_mcdyna("compare " + (a / "glstat").string() + " " +
+                                 (fast / "glstat").string() + " --diff-series " + series.string());
+  CHECK(history.exit_code == 2);
+  CHECK(history.output.find("--diff-series is for two d3plot families") != std::string::npos);
 }
 
 }  // namespace mcdyna::test
