@@ -23,8 +23,8 @@ class Sums {
  public:
   void add(std::int64_t part, const char* field, double difference, double b, double time) {
     Sum& s = sums_[{part, field}];
-    if (difference > s.max || s.n == 0) {
-      s.max = std::max(s.max, difference);
+    if (s.n == 0 || difference > s.max) {
+      s.max = difference;
       s.time = time;
     }
     s.squares += difference * difference;

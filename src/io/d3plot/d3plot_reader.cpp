@@ -283,6 +283,11 @@ void Reader::find_states() {
   }
 }
 
+double Reader::time(std::size_t k) const {
+  const Place at = where_.at(k);
+  return WordView(bytes_[at.file], c_.word_bytes).real(at.word);
+}
+
 StateData Reader::state(std::size_t k) const {
   const Place at = where_.at(k);
   const WordView w(bytes_[at.file], c_.word_bytes);

@@ -72,7 +72,7 @@ class Reader {
   [[nodiscard]] const Elements& shells() const { return shells_; }
   [[nodiscard]] const Elements& particles() const { return particles_; }
   [[nodiscard]] std::size_t states() const { return where_.size(); }
-  [[nodiscard]] double time(std::size_t k) const { return state(k).time; }
+  [[nodiscard]] double time(std::size_t k) const;  ///< the state's first word only
   [[nodiscard]] StateData state(std::size_t k) const;
   [[nodiscard]] std::int64_t state_words() const { return state_words_; }
 

@@ -126,17 +126,15 @@ class ShellsBlock final : public DumpedBlock<ShellsBlock> {
         v.id = sh.ids[i];
         v.deleted = sh.eroded[i] != 0;
         sink.cell(q[3] == q[2] ? CellShape::triangle : CellShape::quadrilateral, q.data(), v);
-        sink.value("stress_top",
-                   shell_result(s.nodes, sh, block, e, ShellSurface::top).stress.data());
-        sink.value("stress_bottom",
-                   shell_result(s.nodes, sh, block, e, ShellSurface::bottom).stress.data());
-        sink.value("thickness", &sh.thickness[i]);
+        const ElementResult top = shell_result(s.nodes, sh, block, e, ShellSurface::top);
+        const ElementResult bottom = shell_result(s.nodes, sh, block, e, ShellSurface::bottom);
         const ElementResult middle = shell_result(s.nodes, sh, block, e, ShellSurface::middle);
+        sink.value("stress_top", top.stress.data());
+        sink.value("stress_bottom", bottom.stress.data());
+        sink.value("thickness", &sh.thickness[i]);
         sink.value("stress_middle", middle.stress.data());
-        const double layer_strain[3] = {
-            shell_result(s.nodes, sh, block, e, ShellSurface::bottom).plastic_strain,
-            middle.plastic_strain,
-            shell_result(s.nodes, sh, block, e, ShellSurface::top).plastic_strain};
+        const double layer_strain[3] = {bottom.plastic_strain, middle.plastic_strain,
+                                        top.plastic_strain};
         sink.value("layer_plastic_strain", layer_strain);
         // The area from the diagonals (a triangle's repeated fourth corner gives its half).
         const Vec3 d1 = s.nodes.position.col(q[2]) - s.nodes.position.col(q[0]);

@@ -63,11 +63,13 @@ std::int64_t state_words(const WordFile& h) {
          nel8 * h.i[NV3D] + nel2 * h.i[NV1D] + nel4 * h.i[NV2D] + nel8 + nel2 + nel4;
 }
 
-// Runs `text` as DIR/NAME into DIR/out (REQUIREs a normal end); returns the output folder.
-fs::path run_deck(const TempDir& dir, const std::string& name, const std::string& text) {
+// Runs `text` as DIR/NAME into DIR/out with `options` (REQUIREs a normal end); returns the output
+// folder.
+fs::path run_deck(const TempDir& dir, const std::string& name, const std::string& text,
+                  const std::string& options = "") {
   const fs::path deck = dir.write(name, text);
   const fs::path out = dir.path() / "out";
-  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q");
+  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q " + options);
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   return out;
 }
@@ -200,10 +202,8 @@ TEST_CASE("d3plot: eroded elements are flagged deleted, as many as the VTK serie
 
 TEST_CASE("d3plot: SPG particles in the SPH section, each state's words equal to the series") {
   TempDir dir;
-  const fs::path deck = dir.write("bar.k", source_text("decks/taylor_bar/taylor_spg_coarse.k"));
-  const fs::path out = dir.path() / "out";
-  const Run r = run_mcdyna("run " + deck.string() + " --out " + out.string() + " -q --cycles 60");
-  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const fs::path out =
+      run_deck(dir, "bar.k", source_text("decks/taylor_bar/taylor_spg_coarse.k"), "--cycles 60");
   const WordFile g(out / "d3plot");
   const std::vector<std::string> vtu = collection(out / "d3plot.pvd");
   const auto last = read_vtu(out / vtu.back());
